@@ -1,0 +1,88 @@
+#pragma once
+// Smoothing kernels of Müller, Charypar & Gross, "Particle-Based Fluid Simulation for Interactive
+// Applications" (SCA 2003). All have compact support radius h and integrate to 1 over R^3.
+// Each kernel keeps its normalisation constants so the hot loops only multiply.
+#include <cmath>
+
+namespace parafluid::sph
+{
+constexpr float kPi = 3.14159265358979323846f;
+
+/// Poly6: W(r) = 315/(64 π h^9) (h² − r²)³. Used for density: it needs only r², no square root.
+struct Poly6Kernel
+{
+  explicit Poly6Kernel(float h)
+    : h2(h * h)
+    , coefficient(315.0f / (64.0f * kPi * std::pow(h, 9.0f)))
+  {
+  }
+  float valueFromSquared(float r2) const
+  {
+    if (r2 >= h2)
+    {
+      return 0.0f;
+    }
+    const float d = h2 - r2;
+    return coefficient * d * d * d;
+  }
+  float h2;
+  float coefficient;
+};
+
+/// Spiky: W(r) = 15/(π h^6) (h − r)³. Its gradient does not vanish at r → 0, so pressure keeps
+/// close particles apart (poly6's gradient would let them clump).
+struct SpikyKernel
+{
+  explicit SpikyKernel(float h)
+    : h(h)
+    , coefficient(15.0f / (kPi * std::pow(h, 6.0f)))
+  {
+  }
+  float value(float r) const
+  {
+    if (r >= h)
+    {
+      return 0.0f;
+    }
+    const float d = h - r;
+    return coefficient * d * d * d;
+  }
+  /// dW/dr; the gradient with respect to x_i is (dW/dr) · r_ij / r.
+  float radialDerivative(float r) const
+  {
+    if (r >= h)
+    {
+      return 0.0f;
+    }
+    const float d = h - r;
+    return -3.0f * coefficient * d * d;
+  }
+  float h;
+  float coefficient;
+};
+
+/// Viscosity kernel: W(r) = 15/(2π h³) (−r³/(2h³) + r²/h² + h/(2r) − 1), whose Laplacian
+/// ∇²W = 45/(π h^6) (h − r) is positive everywhere, so viscosity only ever damps relative motion.
+struct ViscosityKernel
+{
+  explicit ViscosityKernel(float h)
+    : h(h)
+    , valueCoefficient(15.0f / (2.0f * kPi * h * h * h))
+    , laplacianCoefficient(45.0f / (kPi * std::pow(h, 6.0f)))
+  {
+  }
+  float value(float r) const
+  {
+    if (r >= h || r <= 0.0f)
+    {
+      return 0.0f;
+    }
+    const float q = r / h;
+    return valueCoefficient * (-0.5f * q * q * q + q * q + 0.5f / q - 1.0f);
+  }
+  float laplacian(float r) const { return r >= h ? 0.0f : laplacianCoefficient * (h - r); }
+  float h;
+  float valueCoefficient;
+  float laplacianCoefficient;
+};
+} // namespace parafluid::sph
