@@ -147,81 +147,160 @@ void WCSPHSolver::sortByCell()
   // Accelerations, densities and pressures are recomputed from the sorted positions next.
 }
 
+namespace
+{
+/// The particles of the 27 cells around one cell, copied contiguously so that the pair loops of
+/// all particles of that cell run over one long array (good SIMD use) instead of 9 short ranges.
+struct CandidateBuffer
+{
+  std::vector<float> x, y, z, vx, vy, vz, pressure, inverseDensity;
+  std::vector<std::uint32_t> hits; // positions in the buffer of candidates inside the kernel radius
+  std::uint32_t size = 0;
+
+  void gather(const NeighbourGrid& grid, int ix, int iy, int iz, const ParticleState& s,
+    const float* inverseDensityOfParticle)
+  {
+    size = 0;
+    grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) { size += e - b; });
+    for (auto* a : { &x, &y, &z })
+    {
+      a->resize(size);
+    }
+    const bool forces = inverseDensityOfParticle != nullptr;
+    if (forces)
+    {
+      for (auto* a : { &vx, &vy, &vz, &pressure, &inverseDensity })
+      {
+        a->resize(size);
+      }
+      hits.resize(size);
+    }
+    std::uint32_t k = 0;
+    grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) {
+      const std::uint32_t count = e - b;
+      std::copy_n(s.x.data() + b, count, x.data() + k);
+      std::copy_n(s.y.data() + b, count, y.data() + k);
+      std::copy_n(s.z.data() + b, count, z.data() + k);
+      if (forces)
+      {
+        std::copy_n(s.vx.data() + b, count, vx.data() + k);
+        std::copy_n(s.vy.data() + b, count, vy.data() + k);
+        std::copy_n(s.vz.data() + b, count, vz.data() + k);
+        std::copy_n(s.pressure.data() + b, count, pressure.data() + k);
+        std::copy_n(inverseDensityOfParticle + b, count, inverseDensity.data() + k);
+      }
+      k += count;
+    });
+  }
+
+  /// Σ_j (h² − r²)³ over candidates inside h of q (the poly6 sum without its constant).
+  float poly6Sum(const float q[3], float h2) const
+  {
+    const float *px = x.data(), *py = y.data(), *pz = z.data();
+    const float qx = q[0], qy = q[1], qz = q[2];
+    float sum = 0.0f;
+#pragma omp simd reduction(+ : sum)
+    for (std::uint32_t j = 0; j < size; ++j)
+    {
+      const float dx = qx - px[j], dy = qy - py[j], dz = qz - pz[j];
+      const float d = std::max(h2 - (dx * dx + dy * dy + dz * dz), 0.0f);
+      sum += d * d * d;
+    }
+    return sum;
+  }
+};
+
+struct PairConstants
+{
+  float h, h2, minDistance, pressureScale, viscosityScale;
+};
+
+/// Pressure + viscosity pair sum for a query particle (position q, velocity v, pressure pi):
+/// returns Σ_j [P (pi + pj)/rho_j (h − r)² / r · (q − x_j) + V / rho_j (h − r) (v_j − v)].
+void pairForceSum(CandidateBuffer& c, const float q[3], const float v[3], float pi, const PairConstants& k, float f[3])
+{
+  // First find the ~15 % of candidates inside h, so the square roots and divisions below are
+  // spent on real neighbours only.
+  std::uint32_t count = 0;
+  std::uint32_t* hits = c.hits.data();
+  const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data();
+  for (std::uint32_t j = 0; j < c.size; ++j)
+  {
+    const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
+    hits[count] = j;
+    count += (dx * dx + dy * dy + dz * dz < k.h2) ? 1u : 0u;
+  }
+  float fx = 0.0f, fy = 0.0f, fz = 0.0f;
+  const float *pvx = c.vx.data(), *pvy = c.vy.data(), *pvz = c.vz.data();
+  const float *pp = c.pressure.data(), *pinv = c.inverseDensity.data();
+#pragma omp simd reduction(+ : fx, fy, fz)
+  for (std::uint32_t n = 0; n < count; ++n)
+  {
+    const std::uint32_t j = hits[n];
+    const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
+    const float dist = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const float w = k.h - dist;
+    // The particle itself (and any exact overlap) has dx = 0 and adds nothing.
+    const float pairPressure = k.pressureScale * (pi + pp[j]) * pinv[j] * w * w / std::max(dist, k.minDistance);
+    const float pairViscosity = k.viscosityScale * pinv[j] * w;
+    fx += pairPressure * dx + pairViscosity * (pvx[j] - v[0]);
+    fy += pairPressure * dy + pairViscosity * (pvy[j] - v[1]);
+    fz += pairPressure * dz + pairViscosity * (pvz[j] - v[2]);
+  }
+  f[0] = fx;
+  f[1] = fy;
+  f[2] = fz;
+}
+} // namespace
+
 void WCSPHSolver::computeDensityAndPressure()
 {
   ParticleState& s = this->State;
   const SPHParameters& p = this->Parameters;
   const Poly6Kernel w(p.smoothingLength);
-  const float h2 = w.h2;
   const float densityScale = p.particleMass * w.coefficient;
   const float k = p.gasStiffness;
   const float rho0 = p.restDensity;
   const bool clamp = p.clampNegativePressure;
-  const float h = p.smoothingLength;
-  const float* x = s.x.data();
-  const float* y = s.y.data();
-  const float* z = s.z.data();
-  float* density = s.density.data();
-  float* pressure = s.pressure.data();
   const NeighbourGrid& grid = this->Grid;
   const auto& start = grid.cellStart();
   const auto cells = static_cast<std::int64_t>(grid.cellCount());
 
-#pragma omp parallel for schedule(dynamic, 256) num_threads(threadCount(p))
-  for (std::int64_t c = 0; c < cells; ++c)
+#pragma omp parallel num_threads(threadCount(p))
   {
-    const std::uint32_t begin = start[c];
-    const std::uint32_t end = start[c + 1];
-    if (begin == end)
+    CandidateBuffer candidates;
+#pragma omp for schedule(dynamic, 64)
+    for (std::int64_t c = 0; c < cells; ++c)
     {
-      continue;
-    }
-    int ix, iy, iz;
-    grid.cellCoordinates(static_cast<std::size_t>(c), ix, iy, iz);
-    std::uint32_t rangeBegin[9], rangeEnd[9];
-    int ranges = 0;
-    grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) {
-      rangeBegin[ranges] = b;
-      rangeEnd[ranges] = e;
-      ++ranges;
-    });
-    for (std::uint32_t i = begin; i < end; ++i)
-    {
-      const float xi = x[i], yi = y[i], zi = z[i];
-      float sum = 0.0f;
-      for (int r = 0; r < ranges; ++r)
+      const std::uint32_t begin = start[c];
+      const std::uint32_t end = start[c + 1];
+      if (begin == end)
       {
-#pragma omp simd reduction(+ : sum)
-        for (std::uint32_t j = rangeBegin[r]; j < rangeEnd[r]; ++j)
-        {
-          const float dx = xi - x[j], dy = yi - y[j], dz = zi - z[j];
-          const float d = std::max(h2 - (dx * dx + dy * dy + dz * dz), 0.0f);
-          sum += d * d * d;
-        }
+        continue;
       }
-      const float position[3] = { xi, yi, zi };
-      const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, h);
-      for (int m = 0; m < mirrors.count; ++m)
+      int ix, iy, iz;
+      grid.cellCoordinates(static_cast<std::size_t>(c), ix, iy, iz);
+      candidates.gather(grid, ix, iy, iz, s, nullptr);
+      for (std::uint32_t i = begin; i < end; ++i)
       {
-        const float* sc = mirrors.scale[m];
-        const float* of = mirrors.offset[m];
-        for (int r = 0; r < ranges; ++r)
+        const float position[3] = { s.x[i], s.y[i], s.z[i] };
+        float sum = candidates.poly6Sum(position, w.h2); // includes the particle itself (r = 0)
+        // Near walls the mirrored fluid fills the cut-off neighbourhood: |x_i - R x_j| = |R x_i - x_j|.
+        const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, p.smoothingLength);
+        for (int m = 0; m < mirrors.count; ++m)
         {
-#pragma omp simd reduction(+ : sum)
-          for (std::uint32_t j = rangeBegin[r]; j < rangeEnd[r]; ++j)
+          float image[3];
+          for (int a = 0; a < 3; ++a)
           {
-            const float dx = xi - (sc[0] * x[j] + of[0]);
-            const float dy = yi - (sc[1] * y[j] + of[1]);
-            const float dz = zi - (sc[2] * z[j] + of[2]);
-            const float d = std::max(h2 - (dx * dx + dy * dy + dz * dz), 0.0f);
-            sum += d * d * d;
+            image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
           }
+          sum += candidates.poly6Sum(image, w.h2);
         }
+        const float rho = densityScale * sum;
+        s.density[i] = rho;
+        const float pressure = k * (rho - rho0);
+        s.pressure[i] = clamp ? std::max(pressure, 0.0f) : pressure;
       }
-      const float rho = densityScale * sum; // includes the particle itself (r = 0)
-      density[i] = rho;
-      const float pi = k * (rho - rho0);
-      pressure[i] = clamp ? std::max(pi, 0.0f) : pi;
     }
   }
 }
@@ -232,113 +311,74 @@ void WCSPHSolver::computeAccelerations()
   const SPHParameters& p = this->Parameters;
   const SpikyKernel spiky(p.smoothingLength);
   const ViscosityKernel viscous(p.smoothingLength);
-  const float h = p.smoothingLength;
-  const float h2 = h * h;
+  PairConstants constants;
+  constants.h = p.smoothingLength;
+  constants.h2 = constants.h * constants.h;
   // Smallest distance divided by; pairs closer than this push along a direction of zero length.
-  const float minDistance = 1e-6f * h;
-  const float m = p.particleMass;
+  constants.minDistance = 1e-6f * constants.h;
   // a_i(pressure) = -sum_j m (p_i + p_j) / (2 rho_i rho_j) grad W_spiky, grad W = dW/dr r_ij / r,
   // dW/dr = -3 c (h - r)^2, so the pair term is +1.5 c m (p_i + p_j)/(rho_i rho_j) (h - r)^2 r_ij / r.
-  const float pressureScale = 1.5f * spiky.coefficient * m;
+  constants.pressureScale = 1.5f * spiky.coefficient * p.particleMass;
   // a_i(viscosity) = mu / rho_i sum_j m (v_j - v_i) / rho_j lap W, lap W = lc (h - r).
-  const float viscosityScale = p.viscosity * m * viscous.laplacianCoefficient;
-  const float gx = p.gravity[0], gy = p.gravity[1], gz = p.gravity[2];
+  constants.viscosityScale = p.viscosity * p.particleMass * viscous.laplacianCoefficient;
 
-  const float* x = s.x.data();
-  const float* y = s.y.data();
-  const float* z = s.z.data();
-  const float* vx = s.vx.data();
-  const float* vy = s.vy.data();
-  const float* vz = s.vz.data();
-  const float* pressure = s.pressure.data();
   const std::size_t n = s.size();
   this->InverseDensity.resize(n);
   float* inverseDensity = this->InverseDensity.data();
-  const float* density = s.density.data();
   const int threads = threadCount(p);
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i)
   {
-    inverseDensity[i] = 1.0f / density[i]; // density > 0: every particle counts itself
+    inverseDensity[i] = 1.0f / s.density[i]; // density > 0: every particle counts itself
   }
-  float* ax = s.ax.data();
-  float* ay = s.ay.data();
-  float* az = s.az.data();
   const NeighbourGrid& grid = this->Grid;
   const auto& start = grid.cellStart();
   const auto cells = static_cast<std::int64_t>(grid.cellCount());
 
-#pragma omp parallel for schedule(dynamic, 256) num_threads(threads)
-  for (std::int64_t c = 0; c < cells; ++c)
+#pragma omp parallel num_threads(threads)
   {
-    const std::uint32_t begin = start[c];
-    const std::uint32_t end = start[c + 1];
-    if (begin == end)
+    CandidateBuffer candidates;
+#pragma omp for schedule(dynamic, 64)
+    for (std::int64_t c = 0; c < cells; ++c)
     {
-      continue;
-    }
-    int ix, iy, iz;
-    grid.cellCoordinates(static_cast<std::size_t>(c), ix, iy, iz);
-    std::uint32_t rangeBegin[9], rangeEnd[9];
-    int ranges = 0;
-    grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) {
-      rangeBegin[ranges] = b;
-      rangeEnd[ranges] = e;
-      ++ranges;
-    });
-    for (std::uint32_t i = begin; i < end; ++i)
-    {
-      const float xi = x[i], yi = y[i], zi = z[i];
-      const float vxi = vx[i], vyi = vy[i], vzi = vz[i];
-      const float pi = pressure[i];
-      float fx = 0.0f, fy = 0.0f, fz = 0.0f;
-      for (int r = 0; r < ranges; ++r)
+      const std::uint32_t begin = start[c];
+      const std::uint32_t end = start[c + 1];
+      if (begin == end)
       {
-#pragma omp simd reduction(+ : fx, fy, fz)
-        for (std::uint32_t j = rangeBegin[r]; j < rangeEnd[r]; ++j)
-        {
-          const float dx = xi - x[j], dy = yi - y[j], dz = zi - z[j];
-          const float r2 = dx * dx + dy * dy + dz * dz;
-          const float dist = std::sqrt(r2);
-          const float q = r2 < h2 ? h - dist : 0.0f; // zero outside the support
-          const float pairPressure =
-            pressureScale * (pi + pressure[j]) * inverseDensity[j] * q * q / std::max(dist, minDistance);
-          const float pairViscosity = viscosityScale * inverseDensity[j] * q;
-          fx += pairPressure * dx + pairViscosity * (vx[j] - vxi);
-          fy += pairPressure * dy + pairViscosity * (vy[j] - vyi);
-          fz += pairPressure * dz + pairViscosity * (vz[j] - vzi);
-        }
+        continue;
       }
-      const float position[3] = { xi, yi, zi };
-      const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, h);
-      for (int m = 0; m < mirrors.count; ++m)
+      int ix, iy, iz;
+      grid.cellCoordinates(static_cast<std::size_t>(c), ix, iy, iz);
+      candidates.gather(grid, ix, iy, iz, s, inverseDensity);
+      for (std::uint32_t i = begin; i < end; ++i)
       {
-        const float* sc = mirrors.scale[m];
-        const float* of = mirrors.offset[m];
-        for (int r = 0; r < ranges; ++r)
+        const float position[3] = { s.x[i], s.y[i], s.z[i] };
+        const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
+        const float pi = s.pressure[i];
+        float f[3];
+        pairForceSum(candidates, position, velocity, pi, constants, f);
+        // Mirror images: the pair term of x_i with R x_j equals R times the term of R x_i with x_j
+        // (R is a reflection, its own inverse), velocities likewise.
+        const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, constants.h);
+        for (int m = 0; m < mirrors.count; ++m)
         {
-#pragma omp simd reduction(+ : fx, fy, fz)
-          for (std::uint32_t j = rangeBegin[r]; j < rangeEnd[r]; ++j)
+          float image[3], imageVelocity[3], g[3];
+          for (int a = 0; a < 3; ++a)
           {
-            const float dx = xi - (sc[0] * x[j] + of[0]);
-            const float dy = yi - (sc[1] * y[j] + of[1]);
-            const float dz = zi - (sc[2] * z[j] + of[2]);
-            const float r2 = dx * dx + dy * dy + dz * dz;
-            const float dist = std::sqrt(r2);
-            const float q = r2 < h2 ? h - dist : 0.0f;
-            const float pairPressure =
-              pressureScale * (pi + pressure[j]) * inverseDensity[j] * q * q / std::max(dist, minDistance);
-            const float pairViscosity = viscosityScale * inverseDensity[j] * q;
-            fx += pairPressure * dx + pairViscosity * (sc[0] * vx[j] - vxi);
-            fy += pairPressure * dy + pairViscosity * (sc[1] * vy[j] - vyi);
-            fz += pairPressure * dz + pairViscosity * (sc[2] * vz[j] - vzi);
+            image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
+            imageVelocity[a] = mirrors.scale[m][a] * velocity[a];
+          }
+          pairForceSum(candidates, image, imageVelocity, pi, constants, g);
+          for (int a = 0; a < 3; ++a)
+          {
+            f[a] += mirrors.scale[m][a] * g[a];
           }
         }
+        const float inv = inverseDensity[i];
+        s.ax[i] = f[0] * inv + p.gravity[0];
+        s.ay[i] = f[1] * inv + p.gravity[1];
+        s.az[i] = f[2] * inv + p.gravity[2];
       }
-      const float inv = inverseDensity[i];
-      ax[i] = fx * inv + gx;
-      ay[i] = fy * inv + gy;
-      az[i] = fz * inv + gz;
     }
   }
 }
