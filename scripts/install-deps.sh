@@ -9,7 +9,7 @@ packages=(
   # ParaView 5.11 itself, its Python and development files
   paraview paraview-dev python3-paraview
   # what find_package(ParaView) pulls in on Debian 12 (see ../shared/ARCHITECTURE.md)
-  qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libqt5x11extras5-dev
+  qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libqt5x11extras5-dev libqt5opengl5-dev
   libutfcpp-dev libdouble-conversion-dev libtheora-dev libnetcdf-dev libgl2ps-dev libglew-dev
   libgdal-dev libfreetype-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   libboost-dev liblz4-dev liblzma-dev libtiff-dev libexpat1-dev libjpeg-dev libpng-dev

@@ -1,0 +1,99 @@
+#include "vtkPFParticleBlock.h"
+
+#include "vtkPFParticleArrays.h"
+
+#include "parafluid/ParticleLattice.h"
+#include "parafluid/SPHParameters.h"
+
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkTypeInt64Array.h"
+
+#include <exception>
+
+vtkStandardNewMacro(vtkPFParticleBlock);
+
+vtkPFParticleBlock::vtkPFParticleBlock()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+int vtkPFParticleBlock::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  const double h = 2.0 * this->Spacing; // about 33 neighbours inside the kernel radius
+  parafluid::ParticleLattice lattice;
+  float mass = 0.0f;
+  try
+  {
+    lattice = parafluid::fillBoxWithLattice(
+      { this->BlockBounds[0], this->BlockBounds[1], this->BlockBounds[2], this->BlockBounds[3],
+        this->BlockBounds[4], this->BlockBounds[5] },
+      this->Spacing);
+    mass = parafluid::sph::latticeParticleMass(
+      static_cast<float>(this->Spacing), static_cast<float>(h), static_cast<float>(this->RestDensity));
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("Particle Block: " << e.what());
+    return 0;
+  }
+  const auto n = static_cast<vtkIdType>(lattice.x.size());
+  vtkNew<vtkFloatArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(n);
+  float* p = coordinates->GetPointer(0);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    p[3 * i + 0] = lattice.x[i];
+    p[3 * i + 1] = lattice.y[i];
+    p[3 * i + 2] = lattice.z[i];
+  }
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
+  output->SetPoints(points);
+  parafluid::vtk::setOneVertexPerPoint(output, n);
+
+  auto addScalar = [&](const char* name, float value) {
+    vtkNew<vtkFloatArray> a;
+    a->SetName(name);
+    a->SetNumberOfValues(n);
+    a->FillValue(value);
+    output->GetPointData()->AddArray(a);
+  };
+  vtkNew<vtkFloatArray> velocity;
+  velocity->SetName("velocity");
+  velocity->SetNumberOfComponents(3);
+  velocity->SetNumberOfTuples(n);
+  velocity->FillValue(0.0f);
+  output->GetPointData()->SetVectors(velocity);
+  addScalar("density", static_cast<float>(this->RestDensity));
+  addScalar("pressure", 0.0f);
+  addScalar("mass", mass);
+  vtkNew<vtkTypeInt64Array> ids;
+  ids->SetName("id");
+  ids->SetNumberOfValues(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    ids->SetValue(i, i);
+  }
+  output->GetPointData()->AddArray(ids);
+
+  vtkFieldData* fd = output->GetFieldData();
+  parafluid::vtk::setFieldValue(fd, "particle_spacing", &this->Spacing, 1);
+  parafluid::vtk::setFieldValue(fd, "smoothing_length", &h, 1);
+  parafluid::vtk::setFieldValue(fd, "rest_density", &this->RestDensity, 1);
+  parafluid::vtk::setFieldValue(fd, "domain_bounds", this->DomainBounds, 6);
+  return 1;
+}
+
+void vtkPFParticleBlock::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Spacing: " << this->Spacing << "\n";
+  os << indent << "RestDensity: " << this->RestDensity << "\n";
+}

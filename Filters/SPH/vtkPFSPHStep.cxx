@@ -1,0 +1,322 @@
+#include "vtkPFSPHStep.h"
+
+#include "vtkPFParticleArrays.h"
+
+#include "parafluid/SPHParameters.h"
+#include "parafluid/WCSPHSolver.h"
+
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTypeInt64Array.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <optional>
+
+using parafluid::sph::ParticleState;
+using parafluid::sph::SPHParameters;
+using parafluid::sph::WCSPHSolver;
+
+struct vtkPFSPHStep::Cache
+{
+  std::optional<WCSPHSolver> Solver;
+  long long OutputIndex = 0;   // the output time the solver's state belongs to
+  vtkMTimeType InputTime = 0;  // the input data object's MTime it started from
+  vtkMTimeType FilterTime = 0; // this filter's MTime (its properties) it started with
+};
+
+vtkStandardNewMacro(vtkPFSPHStep);
+
+vtkPFSPHStep::vtkPFSPHStep()
+  : Cached(std::make_unique<Cache>())
+{
+}
+
+vtkPFSPHStep::~vtkPFSPHStep() = default;
+
+int vtkPFSPHStep::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+int vtkPFSPHStep::RequestInformation(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  this->InputHasTime = inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) &&
+    inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) > 0;
+  this->StartTime = this->InputHasTime ? inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[0] : 0.0;
+  const double interval = this->TimeStep * this->StepsPerOutput;
+  std::vector<double> times(static_cast<std::size_t>(this->NumberOfOutputs) + 1);
+  for (std::size_t k = 0; k < times.size(); ++k)
+  {
+    times[k] = this->StartTime + static_cast<double>(k) * interval;
+  }
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));
+  const double range[2] = { times.front(), times.back() };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  return 1;
+}
+
+int vtkPFSPHStep::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // Whatever time is asked of this filter, the simulation starts from the input at t0.
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  if (this->InputHasTime)
+  {
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), this->StartTime);
+  }
+  return 1;
+}
+
+namespace
+{
+/// Copies a 1- or 3-component input array into float vectors; false when absent or mis-shaped.
+bool readComponents(vtkDataArray* array, int components, std::vector<float>* targets[])
+{
+  if (!array || array->GetNumberOfComponents() != components)
+  {
+    return false;
+  }
+  const vtkIdType n = array->GetNumberOfTuples();
+  for (int c = 0; c < components; ++c)
+  {
+    targets[c]->resize(static_cast<std::size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      (*targets[c])[static_cast<std::size_t>(i)] = static_cast<float>(array->GetComponent(i, c));
+    }
+  }
+  return true;
+}
+} // namespace
+
+int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkPolyData* output = vtkPolyData::GetData(outInfo);
+  if (!input)
+  {
+    vtkErrorMacro("SPH Step: the input is not a point set (particles)");
+    return 0;
+  }
+  this->StepsTakenLastUpdate = 0;
+  const double interval = this->TimeStep * this->StepsPerOutput;
+  long long target = 0;
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) && interval > 0.0)
+  {
+    const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    target = std::llround((t - this->StartTime) / interval);
+    target = std::max(0LL, std::min<long long>(target, this->NumberOfOutputs));
+  }
+
+  Cache& cache = *this->Cached;
+  const bool reusable = cache.Solver && cache.InputTime == input->GetMTime() &&
+    cache.FilterTime == this->GetMTime() && cache.OutputIndex <= target;
+  if (!reusable)
+  {
+    cache.Solver.reset();
+    vtkFieldData* fd = input->GetFieldData();
+    const double spacing = parafluid::vtk::fieldValue(fd, "particle_spacing", 0.0);
+    SPHParameters p;
+    p.smoothingLength = static_cast<float>(this->SmoothingLength > 0.0
+        ? this->SmoothingLength
+        : parafluid::vtk::fieldValue(fd, "smoothing_length", 2.0 * spacing));
+    p.restDensity = static_cast<float>(this->RestDensity);
+    p.gasStiffness = static_cast<float>(this->GasStiffness);
+    p.viscosity = static_cast<float>(this->Viscosity);
+    p.timeStep = static_cast<float>(this->TimeStep);
+    p.wallRestitution = static_cast<float>(this->WallRestitution);
+    for (int a = 0; a < 3; ++a)
+    {
+      p.gravity[a] = static_cast<float>(this->Gravity[a]);
+    }
+    const bool domainGiven = std::any_of(this->DomainBounds, this->DomainBounds + 6, [](double v) { return v != 0.0; });
+    vtkDataArray* domain = vtkArrayDownCast<vtkDataArray>(fd ? fd->GetAbstractArray("domain_bounds") : nullptr);
+    if (!domainGiven && !(domain && domain->GetNumberOfValues() == 6))
+    {
+      vtkErrorMacro("SPH Step: set DomainBounds (xmin xmax ymin ymax zmin zmax, metres); the input has no "
+                    "domain_bounds field data to take them from");
+      return 0;
+    }
+    for (int k = 0; k < 6; ++k)
+    {
+      p.domainBounds[k] = static_cast<float>(domainGiven ? this->DomainBounds[k] : domain->GetComponent(k / domain->GetNumberOfComponents(), k % domain->GetNumberOfComponents()));
+    }
+    if (this->ParticleMass > 0.0)
+    {
+      p.particleMass = static_cast<float>(this->ParticleMass);
+    }
+    else if (spacing > 0.0 && p.smoothingLength > 0.0f)
+    {
+      try
+      {
+        p.particleMass = parafluid::sph::latticeParticleMass(static_cast<float>(spacing), p.smoothingLength, p.restDensity);
+      }
+      catch (const std::exception& e)
+      {
+        vtkErrorMacro("SPH Step: " << e.what());
+        return 0;
+      }
+    }
+    else
+    {
+      vtkErrorMacro("SPH Step: set ParticleMass (kg) and SmoothingLength (m); the input has no particle_spacing "
+                    "field data to derive them from");
+      return 0;
+    }
+
+    ParticleState state;
+    const vtkIdType n = input->GetNumberOfPoints();
+    state.x.resize(static_cast<std::size_t>(n));
+    state.y.resize(static_cast<std::size_t>(n));
+    state.z.resize(static_cast<std::size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      input->GetPoint(i, x);
+      state.x[i] = static_cast<float>(x[0]);
+      state.y[i] = static_cast<float>(x[1]);
+      state.z[i] = static_cast<float>(x[2]);
+    }
+    std::vector<float>* velocity[3] = { &state.vx, &state.vy, &state.vz };
+    readComponents(input->GetPointData()->GetArray("velocity"), 3, velocity);
+    if (vtkDataArray* ids = input->GetPointData()->GetArray("id"))
+    {
+      state.id.resize(static_cast<std::size_t>(n));
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        state.id[i] = static_cast<std::int64_t>(ids->GetComponent(i, 0));
+      }
+    }
+    try
+    {
+      cache.Solver.emplace(p, std::move(state));
+    }
+    catch (const std::exception& e)
+    {
+      vtkErrorMacro("SPH Step: " << e.what());
+      return 0;
+    }
+    cache.OutputIndex = 0;
+    cache.InputTime = input->GetMTime();
+    cache.FilterTime = this->GetMTime();
+  }
+
+  // Step from the cached output time to the requested one.
+  const long long steps = (target - cache.OutputIndex) * this->StepsPerOutput;
+  try
+  {
+    for (long long s = 0; s < steps; ++s)
+    {
+      cache.Solver->step();
+      ++this->StepsTakenLastUpdate;
+      if (s % 16 == 0)
+      {
+        this->UpdateProgress(static_cast<double>(s) / static_cast<double>(steps));
+        if (this->CheckAbort())
+        {
+          // The state is between output times now; drop it so the next update starts cleanly.
+          cache.Solver.reset();
+          return 1;
+        }
+      }
+    }
+  }
+  catch (const std::exception& e)
+  {
+    cache.Solver.reset();
+    vtkErrorMacro("SPH Step: " << e.what());
+    return 0;
+  }
+  cache.OutputIndex = target;
+
+  // Output in the input's order and with the input's other arrays.
+  const ParticleState& s = cache.Solver->state();
+  const auto n = static_cast<vtkIdType>(s.size());
+  output->GetPointData()->ShallowCopy(input->GetPointData());
+  output->GetFieldData()->ShallowCopy(input->GetFieldData());
+  vtkNew<vtkFloatArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(n);
+  auto vector3 = [&](const char* name) {
+    vtkNew<vtkFloatArray> a;
+    a->SetName(name);
+    a->SetNumberOfComponents(3);
+    a->SetNumberOfTuples(n);
+    output->GetPointData()->AddArray(a);
+    return a->GetPointer(0);
+  };
+  auto scalar = [&](const char* name) {
+    vtkNew<vtkFloatArray> a;
+    a->SetName(name);
+    a->SetNumberOfValues(n);
+    output->GetPointData()->AddArray(a);
+    return a->GetPointer(0);
+  };
+  float* position = coordinates->GetPointer(0);
+  float* velocityOut = vector3("velocity");
+  float* acceleration = vector3("acceleration");
+  float* density = scalar("density");
+  float* pressure = scalar("pressure");
+  vtkNew<vtkTypeInt64Array> ids;
+  ids->SetName("id");
+  ids->SetNumberOfValues(n);
+  output->GetPointData()->AddArray(ids);
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    const vtkIdType i = s.originalIndex[k];
+    position[3 * i + 0] = s.x[k];
+    position[3 * i + 1] = s.y[k];
+    position[3 * i + 2] = s.z[k];
+    velocityOut[3 * i + 0] = s.vx[k];
+    velocityOut[3 * i + 1] = s.vy[k];
+    velocityOut[3 * i + 2] = s.vz[k];
+    acceleration[3 * i + 0] = s.ax[k];
+    acceleration[3 * i + 1] = s.ay[k];
+    acceleration[3 * i + 2] = s.az[k];
+    density[i] = s.density[k];
+    pressure[i] = s.pressure[k];
+    ids->SetValue(i, s.id[k]);
+  }
+  output->GetPointData()->SetActiveVectors("velocity");
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
+  output->SetPoints(points);
+  parafluid::vtk::setOneVertexPerPoint(output, n);
+
+  const double time = this->StartTime + static_cast<double>(target) * interval;
+  const SPHParameters& p = cache.Solver->parameters();
+  const double h = p.smoothingLength, rho0 = p.restDensity, mass = p.particleMass;
+  const double bounds[6] = { p.domainBounds[0], p.domainBounds[1], p.domainBounds[2], p.domainBounds[3],
+    p.domainBounds[4], p.domainBounds[5] };
+  vtkFieldData* fd = output->GetFieldData();
+  parafluid::vtk::setFieldValue(fd, "time", &time, 1);
+  parafluid::vtk::setFieldValue(fd, "smoothing_length", &h, 1);
+  parafluid::vtk::setFieldValue(fd, "rest_density", &rho0, 1);
+  parafluid::vtk::setFieldValue(fd, "particle_mass", &mass, 1);
+  parafluid::vtk::setFieldValue(fd, "domain_bounds", bounds, 6);
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
+  return 1;
+}
+
+void vtkPFSPHStep::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SmoothingLength: " << this->SmoothingLength << "\n";
+  os << indent << "TimeStep: " << this->TimeStep << "\n";
+  os << indent << "StepsPerOutput: " << this->StepsPerOutput << "\n";
+}

@@ -1,0 +1,63 @@
+/**
+ * @class vtkPFH5PartReader
+ * @brief Reads particles from H5Part files (HDF5 groups "Step#0", "Step#1", ...).
+ *
+ * Coordinates come from datasets x, y, z or one N x 3 "position" dataset; every other numeric
+ * dataset of N (or N x k) values becomes a point array, with component triples (vx, vy, vz;
+ * velocity_x, ...) combined into vectors. Steps are time steps (time from a time/Time/TimeValue
+ * group attribute, else the step index). Only the selected arrays are read. Under MPI each piece
+ * reads its own contiguous slice of particles. Numeric root attributes (particle_spacing,
+ * smoothing_length, rest_density, ...) go to field data. Output: one vertex per particle and an
+ * int64 "id" array (the id dataset, else the particle's index in the file).
+ */
+#ifndef vtkPFH5PartReader_h
+#define vtkPFH5PartReader_h
+
+#include "ParaFluidReadersModule.h"
+#include "vtkNew.h"
+#include "vtkPolyDataAlgorithm.h"
+
+#include <string>
+#include <vector>
+
+class vtkDataArraySelection;
+
+class PARAFLUIDREADERS_EXPORT vtkPFH5PartReader : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkPFH5PartReader* New();
+  vtkTypeMacro(vtkPFH5PartReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  vtkSetStdStringFromCharMacro(FileName);
+  vtkGetCharFromStdStringMacro(FileName);
+
+  /// True when the file is HDF5 and has at least one "Step#" group.
+  static int CanReadFile(const char* fileName);
+
+  vtkDataArraySelection* GetPointDataArraySelection() { return this->PointArraySelection; }
+  int GetNumberOfPointArrays();
+  const char* GetPointArrayName(int index);
+  int GetPointArrayStatus(const char* name);
+  void SetPointArrayStatus(const char* name, int status);
+
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkPFH5PartReader();
+  ~vtkPFH5PartReader() override;
+
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkPFH5PartReader(const vtkPFH5PartReader&) = delete;
+  void operator=(const vtkPFH5PartReader&) = delete;
+
+  std::string FileName;
+  vtkNew<vtkDataArraySelection> PointArraySelection;
+  std::vector<std::string> StepGroups;
+  std::vector<double> StepTimes;
+};
+
+#endif

@@ -1,0 +1,336 @@
+#include "vtkPFH5PartWriter.h"
+
+#include "H5Handle.h"
+
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <unistd.h>
+
+using parafluid::h5::Handle;
+
+struct vtkPFH5PartWriter::OpenFile
+{
+  Handle File;
+  std::string TemporaryName;
+};
+
+namespace
+{
+/// Writes n x components values of the given memory type as dataset `name` of `group`.
+bool writeDataset(hid_t group, const std::string& name, hid_t memoryType, hid_t fileType, const void* data,
+  hsize_t n, hsize_t components, int compression)
+{
+  const hsize_t dims[2] = { n, components };
+  const int rank = components == 1 ? 1 : 2;
+  Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
+  Handle properties(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  if (n > 0)
+  {
+    // 64k rows a chunk: big enough for fast sequential reads, small enough that a reader of one
+    // MPI slice decompresses little it does not need.
+    const hsize_t chunk[2] = { std::min<hsize_t>(n, 65536), components };
+    H5Pset_chunk(properties, rank, chunk);
+    if (compression > 0)
+    {
+      H5Pset_shuffle(properties);
+      H5Pset_deflate(properties, static_cast<unsigned>(compression));
+    }
+  }
+  Handle dataset(
+    H5Dcreate2(group, name.c_str(), fileType, space, H5P_DEFAULT, properties, H5P_DEFAULT), H5Dclose);
+  if (!dataset.valid())
+  {
+    return false;
+  }
+  return n == 0 || H5Dwrite(dataset, memoryType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0;
+}
+
+bool writeDoubleAttribute(hid_t object, const char* name, const double* values, hsize_t count)
+{
+  Handle space(H5Screate_simple(1, &count, nullptr), H5Sclose);
+  Handle attribute(H5Acreate2(object, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  return attribute.valid() && H5Awrite(attribute, H5T_NATIVE_DOUBLE, values) >= 0;
+}
+
+/// HDF5 memory/file type for a VTK array, or -1 for types H5Part does not hold.
+bool typesFor(vtkDataArray* array, hid_t& memoryType, hid_t& fileType)
+{
+  switch (array->GetDataType())
+  {
+    case VTK_FLOAT:
+      memoryType = H5T_NATIVE_FLOAT;
+      fileType = H5T_IEEE_F32LE;
+      return true;
+    case VTK_DOUBLE:
+      memoryType = H5T_NATIVE_DOUBLE;
+      fileType = H5T_IEEE_F64LE;
+      return true;
+    case VTK_INT:
+      memoryType = H5T_NATIVE_INT;
+      fileType = H5T_STD_I32LE;
+      return true;
+    case VTK_LONG_LONG:
+    case VTK_ID_TYPE:
+    case VTK_LONG:
+      if (array->GetDataTypeSize() == 8)
+      {
+        memoryType = H5T_NATIVE_INT64;
+        fileType = H5T_STD_I64LE;
+        return true;
+      }
+      return false;
+    default:
+      return false;
+  }
+}
+} // namespace
+
+vtkStandardNewMacro(vtkPFH5PartWriter);
+
+vtkPFH5PartWriter::vtkPFH5PartWriter() = default;
+
+vtkPFH5PartWriter::~vtkPFH5PartWriter()
+{
+  this->AbandonFile();
+}
+
+int vtkPFH5PartWriter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+vtkTypeBool vtkPFH5PartWriter::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* inputInfo = inputVector[0]->GetInformationObject(0);
+  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_INFORMATION()))
+  {
+    this->InputTimes.clear();
+    if (inputInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+    {
+      const double* times = inputInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+      this->InputTimes.assign(times, times + inputInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+    }
+    this->CurrentStep = 0;
+    return 1;
+  }
+  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
+  {
+    if (this->WriteAllTimeSteps && !this->InputTimes.empty())
+    {
+      inputInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), this->InputTimes[this->CurrentStep]);
+    }
+    return 1;
+  }
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
+  {
+    vtkDataObject* input = inputInfo->Get(vtkDataObject::DATA_OBJECT());
+    const bool allSteps = this->WriteAllTimeSteps && !this->InputTimes.empty();
+    if (this->CurrentStep == 0 && !this->BeginFile())
+    {
+      request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+      return 0;
+    }
+    double time = 0.0;
+    if (allSteps)
+    {
+      time = this->InputTimes[this->CurrentStep];
+    }
+    else if (input->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()))
+    {
+      time = input->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP());
+    }
+    if (!this->WriteStep(input, this->CurrentStep, time))
+    {
+      this->AbandonFile();
+      this->CurrentStep = 0;
+      request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+      return 0;
+    }
+    ++this->CurrentStep;
+    if (allSteps && this->CurrentStep < static_cast<int>(this->InputTimes.size()))
+    {
+      request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
+      this->UpdateProgress(static_cast<double>(this->CurrentStep) / static_cast<double>(this->InputTimes.size()));
+      return 1;
+    }
+    request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+    this->CurrentStep = 0;
+    return this->FinishFile() ? 1 : 0;
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+bool vtkPFH5PartWriter::BeginFile()
+{
+  this->AbandonFile();
+  if (this->FileName.empty())
+  {
+    vtkErrorMacro("ParaFluid H5Part Writer: no file name was given");
+    return false;
+  }
+  parafluid::h5::QuietErrors quiet;
+  this->File = std::make_unique<OpenFile>();
+  this->File->TemporaryName = this->FileName + ".tmp-" + std::to_string(::getpid());
+  this->File->File = Handle(
+    H5Fcreate(this->File->TemporaryName.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  if (!this->File->File.valid())
+  {
+    vtkErrorMacro("ParaFluid H5Part Writer: cannot create '" << this->File->TemporaryName
+                                                             << "' (is the folder writable?)");
+    this->File.reset();
+    return false;
+  }
+  return true;
+}
+
+bool vtkPFH5PartWriter::WriteStep(vtkDataObject* input, int stepIndex, double time)
+{
+  auto* points = vtkPointSet::SafeDownCast(input);
+  if (!points)
+  {
+    vtkErrorMacro("ParaFluid H5Part Writer: the input is a " << (input ? input->GetClassName() : "null")
+                                                             << ", not particles (a vtkPointSet)");
+    return false;
+  }
+  parafluid::h5::QuietErrors quiet;
+  const hid_t file = this->File->File;
+  const std::string groupName = "Step#" + std::to_string(stepIndex);
+  Handle group(H5Gcreate2(file, groupName.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  if (!group.valid() || !writeDoubleAttribute(group, "time", &time, 1))
+  {
+    vtkErrorMacro("ParaFluid H5Part Writer: cannot create " << groupName);
+    return false;
+  }
+  const auto n = static_cast<hsize_t>(points->GetNumberOfPoints());
+  const int level = this->CompressionLevel;
+
+  // Coordinates as separate x, y, z datasets (the H5Part convention), in the points' precision.
+  vtkDataArray* coordinates = points->GetPoints() ? points->GetPoints()->GetData() : nullptr;
+  const bool doublePrecision = coordinates && coordinates->GetDataType() == VTK_DOUBLE;
+  std::vector<double> component(n);
+  std::vector<float> componentFloat(n);
+  const char* axes[3] = { "x", "y", "z" };
+  for (int a = 0; a < 3; ++a)
+  {
+    for (hsize_t i = 0; i < n; ++i)
+    {
+      component[i] = coordinates->GetComponent(static_cast<vtkIdType>(i), a);
+      componentFloat[i] = static_cast<float>(component[i]);
+    }
+    const bool ok = doublePrecision
+      ? writeDataset(group, axes[a], H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, component.data(), n, 1, level)
+      : writeDataset(group, axes[a], H5T_NATIVE_FLOAT, H5T_IEEE_F32LE, componentFloat.data(), n, 1, level);
+    if (!ok)
+    {
+      vtkErrorMacro("ParaFluid H5Part Writer: failed writing coordinates of " << groupName);
+      return false;
+    }
+  }
+
+  vtkPointData* pointData = points->GetPointData();
+  for (int k = 0; k < pointData->GetNumberOfArrays(); ++k)
+  {
+    vtkDataArray* array = pointData->GetArray(k);
+    if (!array || !array->GetName() || std::string(array->GetName()).empty())
+    {
+      continue;
+    }
+    const std::string name = array->GetName();
+    if (name == "x" || name == "y" || name == "z")
+    {
+      continue; // would collide with the coordinates
+    }
+    hid_t memoryType, fileType;
+    vtkSmartPointer<vtkDataArray> source = array;
+    if (!typesFor(array, memoryType, fileType))
+    {
+      // Other numeric types (char, short, unsigned ...) are stored as double.
+      source = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(VTK_DOUBLE));
+      source->DeepCopy(array);
+      typesFor(source, memoryType, fileType);
+    }
+    if (name == "id" && source->GetNumberOfComponents() == 1 && fileType != H5T_STD_I64LE)
+    {
+      auto ids = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(VTK_LONG_LONG));
+      ids->DeepCopy(source);
+      source = ids;
+      typesFor(source, memoryType, fileType);
+    }
+    if (!writeDataset(group, name, memoryType, fileType, source->GetVoidPointer(0), n,
+          static_cast<hsize_t>(source->GetNumberOfComponents()), level))
+    {
+      vtkErrorMacro("ParaFluid H5Part Writer: failed writing array '" << name << "' of " << groupName);
+      return false;
+    }
+  }
+
+  if (stepIndex == 0)
+  {
+    vtkFieldData* fieldData = input->GetFieldData();
+    for (int k = 0; fieldData && k < fieldData->GetNumberOfArrays(); ++k)
+    {
+      vtkDataArray* array = fieldData->GetArray(k);
+      if (!array || !array->GetName() || std::string(array->GetName()) == "time" || array->GetNumberOfValues() == 0)
+      {
+        continue;
+      }
+      std::vector<double> values(static_cast<std::size_t>(array->GetNumberOfValues()));
+      for (vtkIdType v = 0; v < array->GetNumberOfValues(); ++v)
+      {
+        values[static_cast<std::size_t>(v)] = array->GetVariantValue(v).ToDouble();
+      }
+      writeDoubleAttribute(file, array->GetName(), values.data(), values.size());
+    }
+  }
+  return true;
+}
+
+bool vtkPFH5PartWriter::FinishFile()
+{
+  if (!this->File)
+  {
+    return false;
+  }
+  const std::string temporary = this->File->TemporaryName;
+  this->File->File.reset(); // flush and close before the rename
+  this->File.reset();
+  if (std::rename(temporary.c_str(), this->FileName.c_str()) != 0)
+  {
+    std::remove(temporary.c_str());
+    vtkErrorMacro("ParaFluid H5Part Writer: cannot replace '" << this->FileName << "'");
+    return false;
+  }
+  return true;
+}
+
+void vtkPFH5PartWriter::AbandonFile()
+{
+  if (this->File)
+  {
+    const std::string temporary = this->File->TemporaryName;
+    this->File->File.reset();
+    this->File.reset();
+    std::remove(temporary.c_str());
+  }
+}
+
+void vtkPFH5PartWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << this->FileName << "\n";
+  os << indent << "WriteAllTimeSteps: " << this->WriteAllTimeSteps << "\n";
+  os << indent << "CompressionLevel: " << this->CompressionLevel << "\n";
+}

@@ -1,0 +1,68 @@
+/**
+ * @class vtkPFH5PartWriter
+ * @brief Writes particles (any vtkPointSet) to an H5Part file that vtkPFH5PartReader reads back.
+ *
+ * Per step a group "Step#k" with a "time" attribute, coordinates as datasets x, y, z and each point
+ * array as a dataset (N values, or N x k for k components; "id" as int64). Field-data numbers
+ * (particle_spacing, smoothing_length, ...) become root attributes. Datasets are chunked and
+ * deflate-compressed. Everything is written to a temporary file beside the target, which is renamed
+ * over the target only once complete, so a failed write never destroys an existing file.
+ * With WriteAllTimeSteps, every time step of the input goes into one file.
+ */
+#ifndef vtkPFH5PartWriter_h
+#define vtkPFH5PartWriter_h
+
+#include "ParaFluidReadersModule.h"
+#include "vtkWriter.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class PARAFLUIDREADERS_EXPORT vtkPFH5PartWriter : public vtkWriter
+{
+public:
+  static vtkPFH5PartWriter* New();
+  vtkTypeMacro(vtkPFH5PartWriter, vtkWriter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  vtkSetStdStringFromCharMacro(FileName);
+  vtkGetCharFromStdStringMacro(FileName);
+
+  /// Write every time step of the input (default: only the current one).
+  vtkSetMacro(WriteAllTimeSteps, bool);
+  vtkGetMacro(WriteAllTimeSteps, bool);
+  vtkBooleanMacro(WriteAllTimeSteps, bool);
+
+  /// Deflate level 0 (none) .. 9; default 1, which already halves typical particle data cheaply.
+  vtkSetClampMacro(CompressionLevel, int, 0, 9);
+  vtkGetMacro(CompressionLevel, int);
+
+  vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+protected:
+  vtkPFH5PartWriter();
+  ~vtkPFH5PartWriter() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  void WriteData() override {} // writing happens in ProcessRequest, step by step
+
+private:
+  vtkPFH5PartWriter(const vtkPFH5PartWriter&) = delete;
+  void operator=(const vtkPFH5PartWriter&) = delete;
+
+  bool BeginFile();
+  bool WriteStep(vtkDataObject* input, int stepIndex, double time);
+  bool FinishFile();
+  void AbandonFile();
+
+  std::string FileName;
+  bool WriteAllTimeSteps = false;
+  int CompressionLevel = 1;
+
+  struct OpenFile;
+  std::unique_ptr<OpenFile> File;
+  std::vector<double> InputTimes;
+  int CurrentStep = 0;
+};
+
+#endif
