@@ -218,10 +218,14 @@ vtkMTimeType vtkPFH5PartReader::GetMTime()
 
 int vtkPFH5PartReader::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
+  this->StepGroups.clear();
+  this->StepTimes.clear();
+  this->InformationError.clear();
   std::string error;
   Handle file = openFile(this->FileName, error);
   if (!file.valid())
   {
+    this->InformationError = error;
     vtkErrorMacro("ParaFluid H5Part Reader: " << error);
     return 0;
   }
@@ -229,11 +233,10 @@ int vtkPFH5PartReader::RequestInformation(vtkInformation*, vtkInformationVector*
   const auto steps = parafluid::h5::listSteps(file, error);
   if (steps.empty())
   {
-    vtkErrorMacro("ParaFluid H5Part Reader: '" << this->FileName << "': " << error);
+    this->InformationError = "'" + this->FileName + "': " + error;
+    vtkErrorMacro("ParaFluid H5Part Reader: " << this->InformationError);
     return 0;
   }
-  this->StepGroups.clear();
-  this->StepTimes.clear();
   for (const auto& s : steps)
   {
     this->StepGroups.push_back(s.group);
@@ -288,7 +291,8 @@ int vtkPFH5PartReader::RequestData(vtkInformation*, vtkInformationVector**, vtkI
   vtkPolyData* output = vtkPolyData::GetData(info);
   if (this->StepGroups.empty())
   {
-    vtkErrorMacro("ParaFluid H5Part Reader: no steps to read (see the error above)");
+    vtkErrorMacro("ParaFluid H5Part Reader: "
+      << (this->InformationError.empty() ? std::string("no steps to read") : this->InformationError));
     return 0;
   }
   std::string error;

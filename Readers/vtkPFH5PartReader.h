@@ -58,6 +58,7 @@ private:
   vtkNew<vtkDataArraySelection> PointArraySelection;
   std::vector<std::string> StepGroups;
   std::vector<double> StepTimes;
+  std::string InformationError; // why RequestInformation failed, repeated by RequestData
 };
 
 #endif

@@ -1,0 +1,83 @@
+"""Shared helpers of the ParaFluid pvpython tests: plugin loading, array access, test files.
+
+Test files are written by /usr/bin/python3 with h5py in a separate process, so that the pvpython
+process only ever holds the HDF5 library ParaView links.
+"""
+import os
+import subprocess
+import sys
+import tempfile
+
+from paraview.simple import LoadPlugin
+from paraview import servermanager
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.vtkConstants import VTK_STRING
+
+
+def plugin_path():
+    path = os.environ.get("PARAFLUID_PLUGIN")
+    if not path or not os.path.exists(path):
+        raise SystemExit("PARAFLUID_PLUGIN must name the built ParaFluid.so (got %r)" % path)
+    return path
+
+
+def load(namespace):
+    LoadPlugin(plugin_path(), ns=namespace)
+
+
+def fetch(proxy, time=None):
+    if time is not None:
+        proxy.UpdatePipeline(time)
+    else:
+        proxy.UpdatePipeline()
+    return servermanager.Fetch(proxy)
+
+
+def point_array(data, name):
+    array = data.GetPointData().GetArray(name)
+    if array is None:
+        raise AssertionError("point array %r missing; have %s" % (name, array_names(data)))
+    return vtk_to_numpy(array)
+
+
+def array_names(data):
+    pd = data.GetPointData()
+    return sorted(pd.GetArrayName(i) for i in range(pd.GetNumberOfArrays()))
+
+
+def points(data):
+    return vtk_to_numpy(data.GetPoints().GetData())
+
+
+def scratch_dir():
+    return tempfile.mkdtemp(prefix="parafluid-test-")
+
+
+def write_h5(path, script):
+    """Runs `script` with h5py imported and `f` an open, writable h5py.File at `path`."""
+    program = "import h5py, numpy as np\nwith h5py.File(%r, 'w') as f:\n" % path
+    program += "".join("    " + line + "\n" for line in script.strip().splitlines())
+    subprocess.run(["/usr/bin/python3", "-c", program], check=True)
+
+
+class ErrorCatcher:
+    """Collects vtkErrorMacro messages of a proxy's VTK object instead of printing them."""
+
+    def __init__(self, proxy):
+        self.messages = []
+        self.object = proxy.GetClientSideObject()
+        self.tag = self.object.AddObserver("ErrorEvent", self._on_error)
+
+    @calldata_type(VTK_STRING)
+    def _on_error(self, caller, event, data=None):
+        self.messages.append(str(data))
+
+    def text(self):
+        return "\n".join(self.messages)
+
+
+def check(condition, message):
+    if not condition:
+        print("FAILED: " + message, file=sys.stderr)
+        raise SystemExit(1)
