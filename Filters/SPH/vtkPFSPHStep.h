@@ -62,7 +62,7 @@ public:
   vtkGetMacro(WallRestitution, double);
 
   /// Number of SPH steps taken by the last update (0 when it was served from the cache).
-  vtkGetMacro(StepsTakenLastUpdate, long long);
+  vtkGetMacro(StepsTakenLastUpdate, vtkIdType);
 
 protected:
   vtkPFSPHStep();
@@ -90,7 +90,7 @@ private:
 
   double StartTime = 0.0;
   bool InputHasTime = false;
-  long long StepsTakenLastUpdate = 0;
+  vtkIdType StepsTakenLastUpdate = 0;
 
   struct Cache;
   std::unique_ptr<Cache> Cached;
