@@ -47,6 +47,11 @@ void NeighbourGrid::build(const float* x, const float* y, const float* z, std::s
   }
 
   const float inverseCell = 1.0f / cellSize;
+  this->CellSize = cellSize;
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Origin[a] = lo[a];
+  }
   double cells = 1.0;
   for (int a = 0; a < 3; ++a)
   {

@@ -155,41 +155,59 @@ struct CandidateBuffer
 {
   std::vector<float> x, y, z, vx, vy, vz, pressure, inverseDensity;
   std::vector<std::uint32_t> hits; // positions in the buffer of candidates inside the kernel radius
+  std::vector<float> distanceSquared;
   std::uint32_t size = 0;
 
+  /// Copies the particles of the 27 cells around (ix, iy, iz) that lie within `reach` of that
+  /// cell's box: the others cannot be within reach of any particle in the cell (this drops about
+  /// a quarter of the 27 cells' particles). Velocities etc. only when forces are to be summed.
   void gather(const NeighbourGrid& grid, int ix, int iy, int iz, const ParticleState& s,
-    const float* inverseDensityOfParticle)
+    const float* inverseDensityOfParticle, float reach)
   {
-    size = 0;
-    grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) { size += e - b; });
+    std::uint32_t capacity = 0;
+    grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) { capacity += e - b; });
+    const bool forces = inverseDensityOfParticle != nullptr;
     for (auto* a : { &x, &y, &z })
     {
-      a->resize(size);
+      a->resize(capacity);
     }
-    const bool forces = inverseDensityOfParticle != nullptr;
     if (forces)
     {
-      for (auto* a : { &vx, &vy, &vz, &pressure, &inverseDensity })
+      for (auto* a : { &vx, &vy, &vz, &pressure, &inverseDensity, &distanceSquared })
       {
-        a->resize(size);
+        a->resize(capacity);
       }
-      hits.resize(size);
+      hits.resize(capacity);
     }
-    std::uint32_t k = 0;
+    const float cell = grid.cellSize();
+    const float lo[3] = { grid.origin()[0] + ix * cell, grid.origin()[1] + iy * cell, grid.origin()[2] + iz * cell };
+    const float hi[3] = { lo[0] + cell, lo[1] + cell, lo[2] + cell };
+    const float reach2 = reach * reach;
+    size = 0;
     grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) {
-      const std::uint32_t count = e - b;
-      std::copy_n(s.x.data() + b, count, x.data() + k);
-      std::copy_n(s.y.data() + b, count, y.data() + k);
-      std::copy_n(s.z.data() + b, count, z.data() + k);
-      if (forces)
+      for (std::uint32_t j = b; j < e; ++j)
       {
-        std::copy_n(s.vx.data() + b, count, vx.data() + k);
-        std::copy_n(s.vy.data() + b, count, vy.data() + k);
-        std::copy_n(s.vz.data() + b, count, vz.data() + k);
-        std::copy_n(s.pressure.data() + b, count, pressure.data() + k);
-        std::copy_n(inverseDensityOfParticle + b, count, inverseDensity.data() + k);
+        const float px = s.x[j], py = s.y[j], pz = s.z[j];
+        const float dx = std::max({ lo[0] - px, 0.0f, px - hi[0] });
+        const float dy = std::max({ lo[1] - py, 0.0f, py - hi[1] });
+        const float dz = std::max({ lo[2] - pz, 0.0f, pz - hi[2] });
+        if (dx * dx + dy * dy + dz * dz >= reach2)
+        {
+          continue;
+        }
+        x[size] = px;
+        y[size] = py;
+        z[size] = pz;
+        if (forces)
+        {
+          vx[size] = s.vx[j];
+          vy[size] = s.vy[j];
+          vz[size] = s.vz[j];
+          pressure[size] = s.pressure[j];
+          inverseDensity[size] = inverseDensityOfParticle[j];
+        }
+        ++size;
       }
-      k += count;
     });
   }
 
@@ -221,14 +239,20 @@ void pairForceSum(CandidateBuffer& c, const float q[3], const float v[3], float 
 {
   // First find the ~15 % of candidates inside h, so the square roots and divisions below are
   // spent on real neighbours only.
-  std::uint32_t count = 0;
-  std::uint32_t* hits = c.hits.data();
   const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data();
+  float* r2 = c.distanceSquared.data();
+#pragma omp simd
   for (std::uint32_t j = 0; j < c.size; ++j)
   {
     const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
+    r2[j] = dx * dx + dy * dy + dz * dz;
+  }
+  std::uint32_t count = 0;
+  std::uint32_t* hits = c.hits.data();
+  for (std::uint32_t j = 0; j < c.size; ++j)
+  {
     hits[count] = j;
-    count += (dx * dx + dy * dy + dz * dz < k.h2) ? 1u : 0u;
+    count += r2[j] < k.h2 ? 1u : 0u;
   }
   float fx = 0.0f, fy = 0.0f, fz = 0.0f;
   const float *pvx = c.vx.data(), *pvy = c.vy.data(), *pvz = c.vz.data();
@@ -280,7 +304,7 @@ void WCSPHSolver::computeDensityAndPressure()
       }
       int ix, iy, iz;
       grid.cellCoordinates(static_cast<std::size_t>(c), ix, iy, iz);
-      candidates.gather(grid, ix, iy, iz, s, nullptr);
+      candidates.gather(grid, ix, iy, iz, s, nullptr, p.smoothingLength);
       for (std::uint32_t i = begin; i < end; ++i)
       {
         const float position[3] = { s.x[i], s.y[i], s.z[i] };
@@ -349,7 +373,7 @@ void WCSPHSolver::computeAccelerations()
       }
       int ix, iy, iz;
       grid.cellCoordinates(static_cast<std::size_t>(c), ix, iy, iz);
-      candidates.gather(grid, ix, iy, iz, s, inverseDensity);
+      candidates.gather(grid, ix, iy, iz, s, inverseDensity, constants.h);
       for (std::uint32_t i = begin; i < end; ++i)
       {
         const float position[3] = { s.x[i], s.y[i], s.z[i] };

@@ -24,6 +24,9 @@ public:
   const std::vector<std::uint32_t>& cellStart() const { return this->CellStart; }
 
   int dimension(int axis) const { return this->Dims[axis]; }
+  float cellSize() const { return this->CellSize; }
+  /// Lower corner of the grid (the particles' bounding-box minimum).
+  const float* origin() const { return this->Origin; }
   std::size_t cellCount() const { return this->CellStart.empty() ? 0 : this->CellStart.size() - 1; }
   std::size_t linearIndex(int ix, int iy, int iz) const
   {
@@ -83,6 +86,8 @@ public:
 
 private:
   int Dims[3] = { 0, 0, 0 };
+  float Origin[3] = { 0.0f, 0.0f, 0.0f };
+  float CellSize = 0.0f;
   std::vector<std::uint32_t> Order;
   std::vector<std::uint32_t> CellStart;
   std::vector<std::uint32_t> ParticleCell;
