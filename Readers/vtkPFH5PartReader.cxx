@@ -2,6 +2,7 @@
 
 #include "H5Handle.h"
 #include "H5PartLayout.h"
+#include "vtkPFParticleArrays.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArraySelection.h"
@@ -396,16 +397,7 @@ int vtkPFH5PartReader::RequestData(vtkInformation*, vtkInformationVector**, vtkI
   points->SetData(coordinates);
   output->SetPoints(points);
 
-  // One vertex cell per particle, built directly as offsets + connectivity.
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfValues(n + 1);
-  std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, vtkIdType(0));
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(n);
-  std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, vtkIdType(0));
-  vtkNew<vtkCellArray> vertices;
-  vertices->SetData(offsets, connectivity);
-  output->SetVerts(vertices);
+  parafluid::vtk::setOneVertexPerPoint(output, n);
 
   // Stable ids: the file's, else the index in the file.
   vtkNew<vtkTypeInt64Array> ids;

@@ -26,7 +26,7 @@ int threadCount(const SPHParameters& p)
 }
 
 /// Gathers a into sorted order through scratch, then swaps, so each array is copied once.
-template <class T>
+template<class T>
 void permute(std::vector<T>& a, std::vector<T>& scratch, const std::vector<std::uint32_t>& order, int threads)
 {
   const auto n = static_cast<std::int64_t>(order.size());
@@ -85,12 +85,12 @@ WCSPHSolver::WCSPHSolver(const SPHParameters& parameters, ParticleState initial)
   }
   for (std::size_t i = 0; i < n; ++i)
   {
-    const float s = this->State.x[i] + this->State.y[i] + this->State.z[i] + this->State.vx[i] +
-      this->State.vy[i] + this->State.vz[i];
+    const float s = this->State.x[i] + this->State.y[i] + this->State.z[i] + this->State.vx[i] + this->State.vy[i] +
+                    this->State.vz[i];
     if (!std::isfinite(s))
     {
-      throw std::invalid_argument("SPH: particle " + std::to_string(i) + " (id " +
-        std::to_string(this->State.id[i]) + ") has a NaN or infinite position or velocity");
+      throw std::invalid_argument("SPH: particle " + std::to_string(i) + " (id " + std::to_string(this->State.id[i]) +
+                                  ") has a NaN or infinite position or velocity");
     }
   }
   // Particles that start outside the domain are put on its boundary, as the walls would.
@@ -128,7 +128,7 @@ void WCSPHSolver::step()
   if (!std::isfinite(total))
   {
     throw std::runtime_error("SPH became unstable at step " + std::to_string(this->Steps) +
-      " (non-finite velocity): reduce TimeStep or GasStiffness, or raise Viscosity");
+                             " (non-finite velocity): reduce TimeStep or GasStiffness, or raise Viscosity");
   }
 }
 
@@ -162,7 +162,7 @@ struct CandidateBuffer
   /// cell's box: the others cannot be within reach of any particle in the cell (this drops about
   /// a quarter of the 27 cells' particles). Velocities etc. only when forces are to be summed.
   void gather(const NeighbourGrid& grid, int ix, int iy, int iz, const ParticleState& s,
-    const float* inverseDensityOfParticle, float reach)
+              const float* inverseDensityOfParticle, float reach)
   {
     std::uint32_t capacity = 0;
     grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) { capacity += e - b; });
@@ -184,31 +184,33 @@ struct CandidateBuffer
     const float hi[3] = { lo[0] + cell, lo[1] + cell, lo[2] + cell };
     const float reach2 = reach * reach;
     size = 0;
-    grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) {
-      for (std::uint32_t j = b; j < e; ++j)
-      {
-        const float px = s.x[j], py = s.y[j], pz = s.z[j];
-        const float dx = std::max({ lo[0] - px, 0.0f, px - hi[0] });
-        const float dy = std::max({ lo[1] - py, 0.0f, py - hi[1] });
-        const float dz = std::max({ lo[2] - pz, 0.0f, pz - hi[2] });
-        if (dx * dx + dy * dy + dz * dz >= reach2)
-        {
-          continue;
-        }
-        x[size] = px;
-        y[size] = py;
-        z[size] = pz;
-        if (forces)
-        {
-          vx[size] = s.vx[j];
-          vy[size] = s.vy[j];
-          vz[size] = s.vz[j];
-          pressure[size] = s.pressure[j];
-          inverseDensity[size] = inverseDensityOfParticle[j];
-        }
-        ++size;
-      }
-    });
+    grid.forEachNeighbourRange(ix, iy, iz,
+                               [&](std::uint32_t b, std::uint32_t e)
+                               {
+                                 for (std::uint32_t j = b; j < e; ++j)
+                                 {
+                                   const float px = s.x[j], py = s.y[j], pz = s.z[j];
+                                   const float dx = std::max({ lo[0] - px, 0.0f, px - hi[0] });
+                                   const float dy = std::max({ lo[1] - py, 0.0f, py - hi[1] });
+                                   const float dz = std::max({ lo[2] - pz, 0.0f, pz - hi[2] });
+                                   if (dx * dx + dy * dy + dz * dz >= reach2)
+                                   {
+                                     continue;
+                                   }
+                                   x[size] = px;
+                                   y[size] = py;
+                                   z[size] = pz;
+                                   if (forces)
+                                   {
+                                     vx[size] = s.vx[j];
+                                     vy[size] = s.vy[j];
+                                     vz[size] = s.vz[j];
+                                     pressure[size] = s.pressure[j];
+                                     inverseDensity[size] = inverseDensityOfParticle[j];
+                                   }
+                                   ++size;
+                                 }
+                               });
   }
 
   /// Σ_j (h² − r²)³ over candidates inside h of q (the poly6 sum without its constant).
@@ -275,22 +277,17 @@ void pairForceSum(CandidateBuffer& c, const float q[3], const float v[3], float 
   f[1] = fy;
   f[2] = fz;
 }
-} // namespace
-
-void WCSPHSolver::computeDensityAndPressure()
+/// Runs body(candidates, i) for every particle i, cell by cell in parallel, after gathering into
+/// a thread-private buffer the candidates of that cell (with per-particle data if
+/// inverseDensity is given). Each particle is handled by one thread in a fixed candidate order, so
+/// the result does not depend on the thread count.
+template<class Body>
+void forEachParticleByCell(const NeighbourGrid& grid, const ParticleState& s, const float* inverseDensity, float reach,
+                           int threads, Body&& body)
 {
-  ParticleState& s = this->State;
-  const SPHParameters& p = this->Parameters;
-  const Poly6Kernel w(p.smoothingLength);
-  const float densityScale = p.particleMass * w.coefficient;
-  const float k = p.gasStiffness;
-  const float rho0 = p.restDensity;
-  const bool clamp = p.clampNegativePressure;
-  const NeighbourGrid& grid = this->Grid;
   const auto& start = grid.cellStart();
   const auto cells = static_cast<std::int64_t>(grid.cellCount());
-
-#pragma omp parallel num_threads(threadCount(p))
+#pragma omp parallel num_threads(threads)
   {
     CandidateBuffer candidates;
 #pragma omp for schedule(dynamic, 64)
@@ -304,29 +301,47 @@ void WCSPHSolver::computeDensityAndPressure()
       }
       int ix, iy, iz;
       grid.cellCoordinates(static_cast<std::size_t>(c), ix, iy, iz);
-      candidates.gather(grid, ix, iy, iz, s, nullptr, p.smoothingLength);
+      candidates.gather(grid, ix, iy, iz, s, inverseDensity, reach);
       for (std::uint32_t i = begin; i < end; ++i)
       {
-        const float position[3] = { s.x[i], s.y[i], s.z[i] };
-        float sum = candidates.poly6Sum(position, w.h2); // includes the particle itself (r = 0)
-        // Near walls the mirrored fluid fills the cut-off neighbourhood: |x_i - R x_j| = |R x_i - x_j|.
-        const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, p.smoothingLength);
-        for (int m = 0; m < mirrors.count; ++m)
-        {
-          float image[3];
-          for (int a = 0; a < 3; ++a)
-          {
-            image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
-          }
-          sum += candidates.poly6Sum(image, w.h2);
-        }
-        const float rho = densityScale * sum;
-        s.density[i] = rho;
-        const float pressure = k * (rho - rho0);
-        s.pressure[i] = clamp ? std::max(pressure, 0.0f) : pressure;
+        body(candidates, i);
       }
     }
   }
+}
+} // namespace
+
+void WCSPHSolver::computeDensityAndPressure()
+{
+  ParticleState& s = this->State;
+  const SPHParameters& p = this->Parameters;
+  const Poly6Kernel w(p.smoothingLength);
+  const float densityScale = p.particleMass * w.coefficient;
+  const float k = p.gasStiffness;
+  const float rho0 = p.restDensity;
+  const bool clamp = p.clampNegativePressure;
+  forEachParticleByCell(this->Grid, s, nullptr, p.smoothingLength, threadCount(p),
+                        [&](const CandidateBuffer& candidates, std::uint32_t i)
+                        {
+                          const float position[3] = { s.x[i], s.y[i], s.z[i] };
+                          float sum = candidates.poly6Sum(position, w.h2); // includes the particle itself (r = 0)
+                          // Near walls the mirrored fluid fills the cut-off neighbourhood: |x_i - R x_j| = |R x_i -
+                          // x_j|.
+                          const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, p.smoothingLength);
+                          for (int m = 0; m < mirrors.count; ++m)
+                          {
+                            float image[3];
+                            for (int a = 0; a < 3; ++a)
+                            {
+                              image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
+                            }
+                            sum += candidates.poly6Sum(image, w.h2);
+                          }
+                          const float rho = densityScale * sum;
+                          s.density[i] = rho;
+                          const float pressure = k * (rho - rho0);
+                          s.pressure[i] = clamp ? std::max(pressure, 0.0f) : pressure;
+                        });
 }
 
 void WCSPHSolver::computeAccelerations()
@@ -355,56 +370,36 @@ void WCSPHSolver::computeAccelerations()
   {
     inverseDensity[i] = 1.0f / s.density[i]; // density > 0: every particle counts itself
   }
-  const NeighbourGrid& grid = this->Grid;
-  const auto& start = grid.cellStart();
-  const auto cells = static_cast<std::int64_t>(grid.cellCount());
-
-#pragma omp parallel num_threads(threads)
-  {
-    CandidateBuffer candidates;
-#pragma omp for schedule(dynamic, 64)
-    for (std::int64_t c = 0; c < cells; ++c)
-    {
-      const std::uint32_t begin = start[c];
-      const std::uint32_t end = start[c + 1];
-      if (begin == end)
-      {
-        continue;
-      }
-      int ix, iy, iz;
-      grid.cellCoordinates(static_cast<std::size_t>(c), ix, iy, iz);
-      candidates.gather(grid, ix, iy, iz, s, inverseDensity, constants.h);
-      for (std::uint32_t i = begin; i < end; ++i)
-      {
-        const float position[3] = { s.x[i], s.y[i], s.z[i] };
-        const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
-        const float pi = s.pressure[i];
-        float f[3];
-        pairForceSum(candidates, position, velocity, pi, constants, f);
-        // Mirror images: the pair term of x_i with R x_j equals R times the term of R x_i with x_j
-        // (R is a reflection, its own inverse), velocities likewise.
-        const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, constants.h);
-        for (int m = 0; m < mirrors.count; ++m)
-        {
-          float image[3], imageVelocity[3], g[3];
-          for (int a = 0; a < 3; ++a)
-          {
-            image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
-            imageVelocity[a] = mirrors.scale[m][a] * velocity[a];
-          }
-          pairForceSum(candidates, image, imageVelocity, pi, constants, g);
-          for (int a = 0; a < 3; ++a)
-          {
-            f[a] += mirrors.scale[m][a] * g[a];
-          }
-        }
-        const float inv = inverseDensity[i];
-        s.ax[i] = f[0] * inv + p.gravity[0];
-        s.ay[i] = f[1] * inv + p.gravity[1];
-        s.az[i] = f[2] * inv + p.gravity[2];
-      }
-    }
-  }
+  forEachParticleByCell(this->Grid, s, inverseDensity, constants.h, threads,
+                        [&](CandidateBuffer& candidates, std::uint32_t i)
+                        {
+                          const float position[3] = { s.x[i], s.y[i], s.z[i] };
+                          const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
+                          const float pi = s.pressure[i];
+                          float f[3];
+                          pairForceSum(candidates, position, velocity, pi, constants, f);
+                          // Mirror images: the pair term of x_i with R x_j equals R times the term of R x_i with x_j
+                          // (R is a reflection, its own inverse), velocities likewise.
+                          const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, constants.h);
+                          for (int m = 0; m < mirrors.count; ++m)
+                          {
+                            float image[3], imageVelocity[3], g[3];
+                            for (int a = 0; a < 3; ++a)
+                            {
+                              image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
+                              imageVelocity[a] = mirrors.scale[m][a] * velocity[a];
+                            }
+                            pairForceSum(candidates, image, imageVelocity, pi, constants, g);
+                            for (int a = 0; a < 3; ++a)
+                            {
+                              f[a] += mirrors.scale[m][a] * g[a];
+                            }
+                          }
+                          const float inv = inverseDensity[i];
+                          s.ax[i] = f[0] * inv + p.gravity[0];
+                          s.ay[i] = f[1] * inv + p.gravity[1];
+                          s.az[i] = f[2] * inv + p.gravity[2];
+                        });
 }
 
 void WCSPHSolver::kick(float dt)
@@ -469,8 +464,9 @@ double WCSPHSolver::bytesPerParticle() const
     return 0.0;
   }
   const std::size_t total = this->State.bytes() + this->ScratchFloat.capacity() * sizeof(float) +
-    this->ScratchId.capacity() * sizeof(std::int64_t) + this->ScratchIndex.capacity() * sizeof(std::uint32_t) +
-    this->InverseDensity.capacity() * sizeof(float) + this->Grid.bytes();
+                            this->ScratchId.capacity() * sizeof(std::int64_t) +
+                            this->ScratchIndex.capacity() * sizeof(std::uint32_t) +
+                            this->InverseDensity.capacity() * sizeof(float) + this->Grid.bytes();
   return static_cast<double>(total) / static_cast<double>(n);
 }
 } // namespace parafluid::sph

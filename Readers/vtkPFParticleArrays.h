@@ -1,6 +1,6 @@
 #pragma once
-// Helpers shared by the SPH adapters: reading scene constants from field data and building the
-// particle polydata of the reader/filter data contract (one vertex per particle).
+// The particle data contract shared by readers and filters: scene constants in field data and
+// particle polydata with one vertex per particle.
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
