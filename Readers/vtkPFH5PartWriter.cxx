@@ -1,15 +1,20 @@
 #include "vtkPFH5PartWriter.h"
 
 #include "H5Handle.h"
+#include "vtkPFParticleArrays.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkPoints.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
@@ -128,6 +133,12 @@ vtkTypeBool vtkPFH5PartWriter::ProcessRequest(
   }
   if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
   {
+    // A writer is a sink: it asks for this process's piece itself (the whole data when serial).
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    const int pieces = controller ? controller->GetNumberOfProcesses() : 1;
+    const int piece = controller ? controller->GetLocalProcessId() : 0;
+    inputInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), piece);
+    inputInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), pieces);
     if (this->WriteAllTimeSteps && !this->InputTimes.empty())
     {
       inputInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), this->InputTimes[this->CurrentStep]);
@@ -136,8 +147,24 @@ vtkTypeBool vtkPFH5PartWriter::ProcessRequest(
   }
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
   {
-    vtkDataObject* input = inputInfo->Get(vtkDataObject::DATA_OBJECT());
+    vtkDataObject* local = inputInfo->Get(vtkDataObject::DATA_OBJECT());
     const bool allSteps = this->WriteAllTimeSteps && !this->InputTimes.empty();
+    // Under MPI every process holds a piece: process 0 gathers them and writes the one file, so
+    // processes never write (and rename) over each other.
+    bool writesHere = true;
+    vtkSmartPointer<vtkDataObject> input = parafluid::vtk::gatherToFirstProcess(local, writesHere);
+    if (!writesHere)
+    {
+      ++this->CurrentStep;
+      if (allSteps && this->CurrentStep < static_cast<int>(this->InputTimes.size()))
+      {
+        request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
+        return 1;
+      }
+      request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
+      this->CurrentStep = 0;
+      return 1;
+    }
     if (this->CurrentStep == 0 && !this->BeginFile())
     {
       request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
@@ -148,9 +175,9 @@ vtkTypeBool vtkPFH5PartWriter::ProcessRequest(
     {
       time = this->InputTimes[this->CurrentStep];
     }
-    else if (input->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()))
+    else if (local->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()))
     {
-      time = input->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP());
+      time = local->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP());
     }
     if (!this->WriteStep(input, this->CurrentStep, time))
     {

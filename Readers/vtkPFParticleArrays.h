@@ -2,6 +2,12 @@
 // The particle data contract shared by readers and filters: scene constants in field data and
 // particle polydata with one vertex per particle.
 #include "vtkCellArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkMultiProcessController.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkSmartPointer.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -10,6 +16,7 @@
 #include "vtkPolyData.h"
 
 #include <numeric>
+#include <vector>
 
 namespace parafluid::vtk
 {
@@ -41,5 +48,64 @@ inline void setOneVertexPerPoint(vtkPolyData* output, vtkIdType n)
   vtkNew<vtkCellArray> vertices;
   vertices->SetData(offsets, connectivity);
   output->SetVerts(vertices);
+}
+/// The pieces of all processes as one point set on process 0 (the point arrays every piece has);
+/// on other processes nothing. In a serial session the input itself.
+inline vtkSmartPointer<vtkDataObject> gatherToFirstProcess(vtkDataObject* input, bool& writesHere)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (!controller || controller->GetNumberOfProcesses() < 2)
+  {
+    writesHere = true;
+    return input;
+  }
+  std::vector<vtkSmartPointer<vtkDataObject>> pieces;
+  controller->Gather(input, pieces, 0);
+  writesHere = controller->GetLocalProcessId() == 0;
+  if (!writesHere)
+  {
+    return nullptr;
+  }
+  std::vector<vtkPointSet*> sets;
+  vtkIdType total = 0;
+  for (const auto& piece : pieces)
+  {
+    if (auto* set = vtkPointSet::SafeDownCast(piece))
+    {
+      if (set->GetNumberOfPoints() > 0)
+      {
+        sets.push_back(set);
+        total += set->GetNumberOfPoints();
+      }
+    }
+  }
+  auto merged = vtkSmartPointer<vtkPolyData>::New();
+  merged->GetFieldData()->ShallowCopy(input->GetFieldData());
+  if (sets.empty())
+  {
+    return merged;
+  }
+  vtkDataSetAttributes::FieldList common(static_cast<int>(sets.size()));
+  for (vtkPointSet* set : sets)
+  {
+    common.IntersectFieldList(set->GetPointData());
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataType(sets[0]->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(total);
+  merged->GetPointData()->CopyAllocate(common, total);
+  vtkIdType offset = 0;
+  for (std::size_t k = 0; k < sets.size(); ++k)
+  {
+    const vtkIdType n = sets[k]->GetNumberOfPoints();
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      points->SetPoint(offset + i, sets[k]->GetPoint(i));
+      merged->GetPointData()->CopyData(common, sets[k]->GetPointData(), static_cast<int>(k), i, offset + i);
+    }
+    offset += n;
+  }
+  merged->SetPoints(points);
+  return merged;
 }
 } // namespace parafluid::vtk

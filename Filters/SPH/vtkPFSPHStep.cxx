@@ -105,15 +105,27 @@ bool readComponents(vtkDataArray* array, int components, std::vector<float>* tar
 
 int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPointSet* local = vtkPointSet::GetData(inputVector[0]);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkPolyData* output = vtkPolyData::GetData(outInfo);
-  if (!input)
+  if (!local)
   {
     vtkErrorMacro("SPH Step: the input is not a point set (particles)");
     return 0;
   }
   this->StepsTakenLastUpdate = 0;
+  // Under MPI the pieces are gathered on process 0, which simulates all particles (a particle
+  // needs its neighbours from every piece; ghost exchange would let each process keep its own).
+  bool simulatesHere = true;
+  vtkSmartPointer<vtkDataObject> gathered = parafluid::vtk::gatherToFirstProcess(local, simulatesHere);
+  if (!simulatesHere)
+  {
+    output->Initialize();
+    return 1;
+  }
+  vtkPointSet* input = vtkPointSet::SafeDownCast(gathered);
+  // The gathered copy is new on every update; the input's own MTime says whether it changed.
+  const vtkMTimeType inputTime = local->GetMTime();
   const double interval = this->TimeStep * this->StepsPerOutput;
   long long target = 0;
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) && interval > 0.0)
@@ -124,7 +136,7 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   }
 
   Cache& cache = *this->Cached;
-  const bool reusable = cache.Solver && cache.InputTime == input->GetMTime() &&
+  const bool reusable = cache.Solver && cache.InputTime == inputTime &&
     cache.FilterTime == this->GetMTime() && cache.OutputIndex <= target;
   if (!reusable)
   {
@@ -212,7 +224,7 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
       return 0;
     }
     cache.OutputIndex = 0;
-    cache.InputTime = input->GetMTime();
+    cache.InputTime = inputTime;
     cache.FilterTime = this->GetMTime();
   }
 

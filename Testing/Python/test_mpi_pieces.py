@@ -1,5 +1,6 @@
 """Under MPI (pvbatch, 2 ranks) each rank reads its own contiguous slice of the particles, and the
-pieces together hold every particle exactly once."""
+pieces together hold every particle exactly once; the writer gathers the pieces into one file and
+SPH Step simulates all particles together."""
 import numpy as np
 from paraview.simple import *
 from paraview import servermanager
@@ -23,4 +24,28 @@ for rank in range(ranks):
     mine = np.sort(ids[owner == rank])
     pftest.check(len(mine) == n // ranks, "rank %d read %d particles, expected %d" % (rank, len(mine), n // ranks))
     pftest.check(mine[-1] - mine[0] + 1 == len(mine), "rank %d's particles are not one contiguous slice" % rank)
+
+# Writing from 2 ranks: one file holding every particle once, equal to what was read.
+import tempfile
+out = os.path.join(tempfile.mkdtemp(prefix="parafluid-mpi-"), "copy.h5part")
+SaveData(out, proxy=reader)
+pftest.check(os.path.exists(out), "the parallel write produced no file")
+pftest.check([f for f in os.listdir(os.path.dirname(out)) if ".tmp-" in f] == [], "temporary files left behind")
+copy = pftest.fetch(ParaFluidH5PartReader(FileName=out))
+original = pftest.fetch(reader)
+order_copy, order_original = np.argsort(pftest.point_array(copy, "id")), np.argsort(pftest.point_array(original, "id"))
+pftest.check(copy.GetNumberOfPoints() == n, "the parallel write holds %d particles, not %d" % (copy.GetNumberOfPoints(), n))
+pftest.check(np.array_equal(pftest.point_array(copy, "id")[order_copy], np.arange(n)), "ids lost or repeated in the parallel write")
+pftest.check(np.array_equal(pftest.points(copy)[order_copy], pftest.points(original)[order_original]), "positions differ after the parallel write")
+pftest.check(np.array_equal(pftest.point_array(copy, "velocity")[order_copy], pftest.point_array(original, "velocity")[order_original]), "velocity differs after the parallel write")
+
+# SPH Step gathers the pieces: every particle is simulated once, with all its neighbours, on
+# process 0 (the output of the other process is empty).
+sph = SPHStep(Input=reader, StepsPerOutput=20, NumberOfOutputs=2)
+stepped = pftest.fetch(ProcessIdScalars(Input=sph), sph.TimestepValues[-1])
+pftest.check(stepped.GetNumberOfPoints() == n, "SPH output holds %d particles, not %d" % (stepped.GetNumberOfPoints(), n))
+pftest.check(np.array_equal(np.sort(pftest.point_array(stepped, "id")), np.arange(n)), "SPH output lost or repeated particles")
+pftest.check(set(pftest.point_array(stepped, "ProcessId")) == {0}, "SPH output should all be on process 0")
+moved = pftest.points(stepped)[np.argsort(pftest.point_array(stepped, "id"))] - pftest.points(original)[order_original]
+pftest.check(np.abs(moved).max() > 1e-4 and np.all(np.isfinite(moved)), "SPH under MPI did not step")
 print("mpi pieces: ok")
