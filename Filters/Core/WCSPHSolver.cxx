@@ -93,7 +93,7 @@ WCSPHSolver::WCSPHSolver(const SPHParameters& parameters, ParticleState initial)
                                   ") has a NaN or infinite position or velocity");
     }
   }
-  // Particles that start outside the domain are put on its boundary, as the walls would.
+  // Particles that start outside the domain are reflected inside, as the walls would do.
   this->drift(0.0f);
   this->computeForces();
 }
@@ -436,10 +436,10 @@ void WCSPHSolver::drift(float dt)
     {
       float xa = position[a][i] + dt * velocity[a][i];
       float va = velocity[a][i];
-      // Damped reflection: a particle that left the box is put back on the wall and its normal
-      // velocity reversed and scaled, so walls take energy out instead of adding it.
-      // The overshoot is mirrored back (damped too), not clamped onto the wall: a particle on the
-      // plane would coincide with its own mirror image, which then could not push it.
+      // Damped reflection: a particle that left the box has its overshoot mirrored back inside and
+      // its normal velocity reversed and scaled, so walls take energy out instead of adding it.
+      // Not clamped onto the wall: a particle on the plane would coincide with its own mirror
+      // image, which then could not push it.
       if (xa < b[2 * a])
       {
         xa = std::min(b[2 * a] + restitution * (b[2 * a] - xa), b[2 * a + 1]);
