@@ -4,12 +4,10 @@
 #include "H5PartLayout.h"
 #include "vtkPFParticleArrays.h"
 
-#include "vtkCellArray.h"
 #include "vtkDataArraySelection.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
