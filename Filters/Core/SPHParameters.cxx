@@ -33,9 +33,37 @@ std::string SPHParameters::validate() const
   {
     return "Viscosity must be zero or positive (Pa s), got " + std::to_string(viscosity);
   }
+  if (!std::isfinite(surfaceTension) || surfaceTension < 0.0f)
+  {
+    return "SurfaceTension must be zero or positive (N/m), got " + std::to_string(surfaceTension);
+  }
+  if (!std::isfinite(surfaceThreshold) || surfaceThreshold < 0.0f)
+  {
+    return "SurfaceThreshold must be zero or positive, got " + std::to_string(surfaceThreshold);
+  }
   if (!positiveFinite(timeStep))
   {
     return "TimeStep must be a positive number of seconds, got " + std::to_string(timeStep);
+  }
+  if (!positiveFinite(maxTimeStep))
+  {
+    return "MaxTimeStep must be a positive number of seconds, got " + std::to_string(maxTimeStep);
+  }
+  if (!positiveFinite(cflNumber) || cflNumber > 2.0f)
+  {
+    return "CFLNumber must lie in (0, 2], got " + std::to_string(cflNumber);
+  }
+  if (!positiveFinite(densityTolerance) || densityTolerance >= 1.0f)
+  {
+    return "DensityTolerance must lie in (0, 1) (a fraction of rest density), got " + std::to_string(densityTolerance);
+  }
+  if (!positiveFinite(divergenceTolerance) || divergenceTolerance >= 1.0f)
+  {
+    return "DivergenceTolerance must lie in (0, 1), got " + std::to_string(divergenceTolerance);
+  }
+  if (maxPressureIterations < 1 || maxPressureIterations > 100000)
+  {
+    return "MaxPressureIterations must lie in [1, 100000], got " + std::to_string(maxPressureIterations);
   }
   if (!positiveFinite(particleMass))
   {
@@ -62,6 +90,10 @@ std::string SPHParameters::validate() const
   {
     return "WallRestitution must lie in [0, 1], got " + std::to_string(wallRestitution);
   }
+  if (!std::isfinite(boundaryDamping) || boundaryDamping < 0.0f || boundaryDamping > 1.0f)
+  {
+    return "BoundaryDamping must lie in [0, 1], got " + std::to_string(boundaryDamping);
+  }
   if (threads < 0)
   {
     return "threads must be 0 (default) or positive";
@@ -69,7 +101,7 @@ std::string SPHParameters::validate() const
   return {};
 }
 
-float latticeParticleMass(float spacing, float smoothingLength, float restDensity)
+float latticeParticleMass(float spacing, float smoothingLength, float restDensity, DensityKernel kernel)
 {
   if (!positiveFinite(spacing) || !positiveFinite(smoothingLength) || !positiveFinite(restDensity))
   {
@@ -79,7 +111,8 @@ float latticeParticleMass(float spacing, float smoothingLength, float restDensit
   {
     throw std::invalid_argument("particle mass: smoothing length is more than 50 particle spacings");
   }
-  const Poly6Kernel w(smoothingLength);
+  const Poly6Kernel poly6(smoothingLength);
+  const CubicSplineKernel cubic(smoothingLength);
   const int reach = static_cast<int>(std::ceil(smoothingLength / spacing));
   double sum = 0.0;
   for (int k = -reach; k <= reach; ++k)
@@ -89,7 +122,8 @@ float latticeParticleMass(float spacing, float smoothingLength, float restDensit
       for (int i = -reach; i <= reach; ++i)
       {
         const double r2 = (double(i) * i + double(j) * j + double(k) * k) * double(spacing) * spacing;
-        sum += w.valueFromSquared(static_cast<float>(r2));
+        sum += kernel == DensityKernel::Poly6 ? poly6.valueFromSquared(static_cast<float>(r2))
+                                              : cubic.value(static_cast<float>(std::sqrt(r2)));
       }
     }
   }

@@ -3,7 +3,7 @@
 #include "vtkPFParticleArrays.h"
 
 #include "parafluid/SPHParameters.h"
-#include "parafluid/WCSPHSolver.h"
+#include "parafluid/SPHSolver.h"
 
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -24,11 +24,11 @@
 
 using parafluid::sph::ParticleState;
 using parafluid::sph::SPHParameters;
-using parafluid::sph::WCSPHSolver;
+using parafluid::sph::SPHSolver;
 
 struct vtkPFSPHStep::Cache
 {
-  std::optional<WCSPHSolver> Solver;
+  std::optional<SPHSolver> Solver;
   long long OutputIndex = 0;   // the output time the solver's state belongs to
   vtkMTimeType InputTime = 0;  // the input data object's MTime it started from
   vtkMTimeType FilterTime = 0; // this filter's MTime (its properties) it started with

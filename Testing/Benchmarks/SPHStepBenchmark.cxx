@@ -2,7 +2,7 @@
 // tank 4 wide), 10k and 100k particles, 1 and 2 threads. Reports particle-steps per second, the
 // neighbour count (the work per particle) and the solver's bytes per particle.
 #include "parafluid/ParticleLattice.h"
-#include "parafluid/WCSPHSolver.h"
+#include "parafluid/SPHSolver.h"
 
 #include <benchmark/benchmark.h>
 
@@ -13,7 +13,7 @@ namespace
 using namespace parafluid;
 using namespace parafluid::sph;
 
-WCSPHSolver damBreak(std::size_t particles, int threads)
+SPHSolver damBreak(std::size_t particles, int threads)
 {
   // Block of a x 2a x a (x, z, y) layers of spacing d: particles = 2 a^3 / d^3.
   const double a = 0.5;
@@ -25,7 +25,7 @@ WCSPHSolver damBreak(std::size_t particles, int threads)
   p.domainBounds = { 0.f, static_cast<float>(4 * a), 0.f, static_cast<float>(a), 0.f, static_cast<float>(3 * a) };
   p.threads = threads;
   auto lattice = fillBoxWithLattice({ 0, a, 0, a, 0, 2 * a }, d);
-  WCSPHSolver solver(p, ParticleState::atRest(std::move(lattice.x), std::move(lattice.y), std::move(lattice.z)));
+  SPHSolver solver(p, ParticleState::atRest(std::move(lattice.x), std::move(lattice.y), std::move(lattice.z)));
   for (int k = 0; k < 20; ++k) // leave the perfect lattice, as in a running simulation
   {
     solver.step();
@@ -33,7 +33,7 @@ WCSPHSolver damBreak(std::size_t particles, int threads)
   return solver;
 }
 
-double meanNeighbours(const WCSPHSolver& solver)
+double meanNeighbours(const SPHSolver& solver)
 {
   // mass-weighted: density / (m W(0)) ~ neighbours inside h weighted by the kernel; report the
   // plain count instead by sampling.
@@ -54,7 +54,7 @@ double meanNeighbours(const WCSPHSolver& solver)
 
 void BM_SPHStep(benchmark::State& state)
 {
-  WCSPHSolver solver = damBreak(static_cast<std::size_t>(state.range(0)), static_cast<int>(state.range(1)));
+  SPHSolver solver = damBreak(static_cast<std::size_t>(state.range(0)), static_cast<int>(state.range(1)));
   for (auto _ : state)
   {
     solver.step();

@@ -25,6 +25,25 @@ struct Poly6Kernel
     const float d = h2 - r2;
     return coefficient * d * d * d;
   }
+  /// dW/dr / r: the gradient with respect to x_i is this times r_ij (no square root needed).
+  float gradientFactorFromSquared(float r2) const
+  {
+    if (r2 >= h2)
+    {
+      return 0.0f;
+    }
+    const float d = h2 - r2;
+    return -6.0f * coefficient * d * d;
+  }
+  /// ∇²W = −6 c (h² − r²)(3h² − 7r²); negative near the centre, positive towards the rim.
+  float laplacianFromSquared(float r2) const
+  {
+    if (r2 >= h2)
+    {
+      return 0.0f;
+    }
+    return -6.0f * coefficient * (h2 - r2) * (3.0f * h2 - 7.0f * r2);
+  }
   float h2;
   float coefficient;
 };
@@ -84,5 +103,62 @@ struct ViscosityKernel
   float h;
   float valueCoefficient;
   float laplacianCoefficient;
+};
+
+/// Cubic B-spline (Monaghan 1992) written with the support radius h (q = r/h):
+/// W = 8/(π h³) · { 6q³ − 6q² + 1 for q ≤ ½;  2(1 − q)³ for ½ < q ≤ 1 }.
+/// The divergence-free solver uses it for density and gradient alike: predicting the density change
+/// from the same kernel that measures density is what makes the predicted and the measured density
+/// agree. Its gradient peaks at q = 1/3, well inside the neighbour distance of a lattice with h = 2
+/// spacings, so compressed pairs are pushed apart harder (no pairing).
+struct CubicSplineKernel
+{
+  explicit CubicSplineKernel(float h)
+    : h(h)
+    , h2(h * h)
+    , inverseH(1.0f / h)
+    , coefficient(8.0f / (kPi * h * h * h))
+  {
+  }
+  float value(float r) const
+  {
+    const float q = r * inverseH;
+    if (q >= 1.0f)
+    {
+      return 0.0f;
+    }
+    if (q <= 0.5f)
+    {
+      return coefficient * (6.0f * q * q * (q - 1.0f) + 1.0f);
+    }
+    const float d = 1.0f - q;
+    return coefficient * 2.0f * d * d * d;
+  }
+  /// dW/dr.
+  float radialDerivative(float r) const
+  {
+    const float q = r * inverseH;
+    if (q >= 1.0f)
+    {
+      return 0.0f;
+    }
+    if (q <= 0.5f)
+    {
+      return coefficient * inverseH * q * (18.0f * q - 12.0f);
+    }
+    const float d = 1.0f - q;
+    return -6.0f * coefficient * inverseH * d * d;
+  }
+  float h;
+  float h2;
+  float inverseH;
+  float coefficient;
+};
+
+/// Which kernel measures density: Müller's poly6 (WCSPH) or the cubic spline (DFSPH).
+enum class DensityKernel
+{
+  Poly6,
+  CubicSpline
 };
 } // namespace parafluid::sph

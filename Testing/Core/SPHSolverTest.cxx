@@ -1,7 +1,7 @@
 // Physics of the weakly compressible SPH solver: conservation, rest state, determinism, bad input.
 #include "parafluid/ParticleLattice.h"
 #include "parafluid/SPHKernels.h"
-#include "parafluid/WCSPHSolver.h"
+#include "parafluid/SPHSolver.h"
 
 #include <gtest/gtest.h>
 
@@ -26,6 +26,7 @@ SPHParameters waterParameters()
   p.gasStiffness = 1000.0f;
   p.viscosity = 3.5f;
   p.timeStep = 2e-4f;
+  p.adaptiveTimeStep = false; // these tests step with a fixed dt; TimeStepTest covers adaptivity
   p.particleMass = latticeParticleMass(kSpacing, p.smoothingLength, p.restDensity);
   return p;
 }
@@ -41,7 +42,7 @@ TEST(LatticeMass, GivesRestDensityInsideALattice)
   SPHParameters p = waterParameters();
   p.gravity = { 0, 0, 0 };
   p.domainBounds = { -1, 2, -1, 2, -1, 2 };
-  WCSPHSolver solver(p, block({ 0, 0.4, 0, 0.4, 0, 0.4 }));
+  SPHSolver solver(p, block({ 0, 0.4, 0, 0.4, 0, 0.4 }));
   const auto& s = solver.state();
   int interior = 0;
   for (std::size_t i = 0; i < s.size(); ++i)
@@ -58,7 +59,7 @@ TEST(LatticeMass, GivesRestDensityInsideALattice)
   EXPECT_GT(std::fabs(p.particleMass - p.restDensity * kSpacing * kSpacing * kSpacing), 0.005f * p.particleMass);
 }
 
-TEST(WCSPHSolver, PressureAndViscosityForcesConserveMomentum)
+TEST(SPHSolver, PressureAndViscosityForcesConserveMomentum)
 {
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> u(0.0f, 0.3f);
@@ -81,7 +82,7 @@ TEST(WCSPHSolver, PressureAndViscosityForcesConserveMomentum)
     p.viscosity = 2.0f;
     p.clampNegativePressure = clamp;
     p.domainBounds = { -1, 2, -1, 2, -1, 2 };
-    WCSPHSolver solver(p, s);
+    SPHSolver solver(p, s);
     const auto& st = solver.state();
     double sum[3] = { 0, 0, 0 };
     double magnitude = 0.0;
@@ -114,12 +115,12 @@ double kineticEnergy(const ParticleState& s, float mass)
   return e;
 }
 
-TEST(WCSPHSolver, RestingBlockUnderGravitySettlesWithBoundedDensityError)
+TEST(SPHSolver, RestingBlockUnderGravitySettlesWithBoundedDensityError)
 {
   SPHParameters p = waterParameters();
   // A tank exactly as wide as the block: the water has nowhere to go and must come to rest.
   p.domainBounds = { 0, 0.2, 0, 0.2, 0, 0.6 };
-  WCSPHSolver solver(p, block({ 0, 0.2, 0, 0.2, 0, 0.3 }));
+  SPHSolver solver(p, block({ 0, 0.2, 0, 0.2, 0, 0.3 }));
   const std::size_t n = solver.state().size();
   ASSERT_EQ(n, 10u * 10u * 15u);
   for (int k = 0; k < 4000; ++k) // 0.8 s
@@ -153,7 +154,7 @@ std::vector<float> runDamBreak(int threads, int steps)
   SPHParameters p = waterParameters();
   p.threads = threads;
   p.domainBounds = { 0, 0.6, 0, 0.1, 0, 0.4 };
-  WCSPHSolver solver(p, block({ 0, 0.2, 0, 0.1, 0, 0.3 }));
+  SPHSolver solver(p, block({ 0, 0.2, 0, 0.1, 0, 0.3 }));
   for (int k = 0; k < steps; ++k)
   {
     solver.step();
@@ -169,7 +170,7 @@ std::vector<float> runDamBreak(int threads, int steps)
   return byOriginalIndex;
 }
 
-TEST(WCSPHSolver, IsDeterministicForAGivenThreadCountAndAcrossThreadCounts)
+TEST(SPHSolver, IsDeterministicForAGivenThreadCountAndAcrossThreadCounts)
 {
   const auto a = runDamBreak(2, 600);
   const auto b = runDamBreak(2, 600);
@@ -185,7 +186,7 @@ TEST(WCSPHSolver, IsDeterministicForAGivenThreadCountAndAcrossThreadCounts)
   EXPECT_GT(front, 0.24f);
 }
 
-TEST(WCSPHSolver, KeepsIdsAndOriginalIndicesAsAPermutation)
+TEST(SPHSolver, KeepsIdsAndOriginalIndicesAsAPermutation)
 {
   SPHParameters p = waterParameters();
   p.domainBounds = { 0, 0.6, 0, 0.1, 0, 0.4 };
@@ -194,7 +195,7 @@ TEST(WCSPHSolver, KeepsIdsAndOriginalIndicesAsAPermutation)
   {
     id = 1000 + 7 * id;
   }
-  WCSPHSolver solver(p, initial);
+  SPHSolver solver(p, initial);
   for (int k = 0; k < 50; ++k)
   {
     solver.step();
@@ -210,7 +211,7 @@ TEST(WCSPHSolver, KeepsIdsAndOriginalIndicesAsAPermutation)
   }
 }
 
-TEST(WCSPHSolver, RejectsBadParametersAndInputClearly)
+TEST(SPHSolver, RejectsBadParametersAndInputClearly)
 {
   const ParticleState s = block({ 0, 0.1, 0, 0.1, 0, 0.1 });
   auto expectInvalid = [&](auto change, const char* word) {
@@ -218,7 +219,7 @@ TEST(WCSPHSolver, RejectsBadParametersAndInputClearly)
     change(p);
     try
     {
-      WCSPHSolver solver(p, s);
+      SPHSolver solver(p, s);
       ADD_FAILURE() << "accepted bad " << word;
     }
     catch (const std::invalid_argument& e)
@@ -235,17 +236,17 @@ TEST(WCSPHSolver, RejectsBadParametersAndInputClearly)
 
   ParticleState bad = s;
   bad.y[3] = std::numeric_limits<float>::infinity();
-  EXPECT_THROW(WCSPHSolver(waterParameters(), bad), std::invalid_argument);
+  EXPECT_THROW(SPHSolver(waterParameters(), bad), std::invalid_argument);
 }
 
-TEST(WCSPHSolver, HandlesZeroAndOneParticle)
+TEST(SPHSolver, HandlesZeroAndOneParticle)
 {
   SPHParameters p = waterParameters();
-  WCSPHSolver empty(p, ParticleState{});
+  SPHSolver empty(p, ParticleState{});
   empty.step();
   EXPECT_EQ(empty.state().size(), 0u);
 
-  WCSPHSolver single(p, ParticleState::atRest({ 0.5f }, { 0.5f }, { 0.5f }));
+  SPHSolver single(p, ParticleState::atRest({ 0.5f }, { 0.5f }, { 0.5f }));
   for (int k = 0; k < 100; ++k)
   {
     single.step();
@@ -255,7 +256,7 @@ TEST(WCSPHSolver, HandlesZeroAndOneParticle)
   EXPECT_NEAR(single.state().density[0], p.particleMass * Poly6Kernel(p.smoothingLength).valueFromSquared(0), 1e-3f);
 }
 
-TEST(WCSPHSolver, StopsWithAClearErrorWhenItBlowsUp)
+TEST(SPHSolver, StopsWithAClearErrorWhenItBlowsUp)
 {
   SPHParameters p = waterParameters();
   p.timeStep = 0.05f;       // 200 times too large
@@ -265,7 +266,7 @@ TEST(WCSPHSolver, StopsWithAClearErrorWhenItBlowsUp)
   s.x[0] = s.x[1]; // two particles on top of each other
   s.y[0] = s.y[1];
   s.z[0] = s.z[1];
-  WCSPHSolver solver(p, s);
+  SPHSolver solver(p, s);
   bool stopped = false;
   try
   {

@@ -1,0 +1,387 @@
+#include "parafluid/SPHSolver.h"
+
+#include "parafluid/TriangleBoundary.h"
+#include "private/NeighbourCandidates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace parafluid::sph
+{
+using detail::permute;
+using detail::threadCount;
+
+SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial, std::shared_ptr<const TriangleBoundary> boundary)
+  : Parameters(parameters)
+  , State(std::move(initial))
+  , Boundary(std::move(boundary))
+{
+  const std::string problem = this->Parameters.validate();
+  if (!problem.empty())
+  {
+    throw std::invalid_argument("SPH: " + problem);
+  }
+  const std::size_t n = this->State.x.size();
+  if (this->State.y.size() != n || this->State.z.size() != n)
+  {
+    throw std::invalid_argument("SPH: position arrays have different lengths");
+  }
+  const bool hasVelocity = this->State.vx.size() == n && this->State.vy.size() == n && this->State.vz.size() == n;
+  const bool hasId = this->State.id.size() == n;
+  const bool hasIndex = this->State.originalIndex.size() == n;
+  if (!hasVelocity && !(this->State.vx.empty() && this->State.vy.empty() && this->State.vz.empty()))
+  {
+    throw std::invalid_argument("SPH: velocity arrays do not match the particle count");
+  }
+  std::vector<std::int64_t> ids;
+  std::vector<std::uint32_t> indices;
+  if (hasId)
+  {
+    ids.swap(this->State.id);
+  }
+  if (hasIndex)
+  {
+    indices.swap(this->State.originalIndex);
+  }
+  this->State.resize(n); // zero velocity when none was given; ids and indices default to the index
+  if (hasId)
+  {
+    this->State.id.swap(ids);
+  }
+  if (hasIndex)
+  {
+    this->State.originalIndex.swap(indices);
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const float s = this->State.x[i] + this->State.y[i] + this->State.z[i] + this->State.vx[i] + this->State.vy[i] +
+      this->State.vz[i];
+    if (!std::isfinite(s))
+    {
+      throw std::invalid_argument("SPH: particle " + std::to_string(i) + " (id " + std::to_string(this->State.id[i]) +
+        ") has a NaN or infinite position or velocity");
+    }
+  }
+  // Particles that start outside the domain are reflected inside, as the walls would do.
+  this->drift(0.0f);
+  this->sortByCell();
+  if (this->Parameters.pressureSolver == PressureSolver::DFSPH)
+  {
+    this->DensityStiffness.assign(n, 0.0f);
+    this->DivergenceStiffness.assign(n, 0.0f);
+    this->computeDensityAndFactor();
+    this->computeAccelerations(false);
+  }
+  else
+  {
+    this->computeDensityAndPressure();
+    this->computeAccelerations(true);
+  }
+  this->measureCompression();
+}
+
+std::int64_t SPHSolver::advance(double duration, const std::function<bool(double)>& progress)
+{
+  if (!(duration >= 0.0) || !std::isfinite(duration))
+  {
+    throw std::invalid_argument("SPH: the time to advance must be a non-negative number of seconds");
+  }
+  const double end = this->Time + duration;
+  std::int64_t taken = 0;
+  // A step this much shorter than the longest allowed one means forces have blown up; stop rather
+  // than crawl forever.
+  const double smallest = 1e-7 * std::min(this->Parameters.maxTimeStep, this->Parameters.timeStep);
+  while (this->Time < end)
+  {
+    const double remaining = end - this->Time;
+    const double dt = this->step(remaining);
+    ++taken;
+    if (dt >= remaining)
+    {
+      this->Time = end; // exactly, whatever the rounding of the sum
+    }
+    if (dt < smallest && dt < remaining)
+    {
+      throw std::runtime_error("SPH became unstable at t = " + std::to_string(this->Time) +
+        " s: the adaptive time step fell to " + std::to_string(dt) +
+        " s; lower GasStiffness or raise Viscosity");
+    }
+    if (progress && taken % 8 == 0 && !progress(duration > 0.0 ? 1.0 - (end - this->Time) / duration : 1.0))
+    {
+      break;
+    }
+  }
+  return taken;
+}
+
+double SPHSolver::step(double maxStep)
+{
+  if (this->Parameters.pressureSolver == PressureSolver::DFSPH)
+  {
+    this->stepDFSPH(maxStep);
+  }
+  else
+  {
+    this->stepWCSPH(this->chooseTimeStep(maxStep));
+  }
+  ++this->Steps;
+  this->checkFinite();
+  this->measureCompression();
+  return this->Last.timeStep;
+}
+
+double SPHSolver::maxAcceleration() const
+{
+  const ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  float a2 = 0.0f;
+#pragma omp parallel for schedule(static) reduction(max : a2) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    a2 = std::max(a2, s.ax[i] * s.ax[i] + s.ay[i] * s.ay[i] + s.az[i] * s.az[i]);
+  }
+  return std::sqrt(static_cast<double>(a2));
+}
+
+double SPHSolver::proposedTimeStep() const
+{
+  const SPHParameters& p = this->Parameters;
+  if (!p.adaptiveTimeStep)
+  {
+    return p.timeStep;
+  }
+  const ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  float v2 = 0.0f;
+#pragma omp parallel for schedule(static) reduction(max : v2) num_threads(threadCount(p))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    v2 = std::max(v2, s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+  }
+  const double h = p.smoothingLength;
+  double dt = p.maxTimeStep;
+  // CFL: information (sound for WCSPH, the flow itself for incompressible DFSPH) may cross only a
+  // fraction lambda of the kernel radius per step.
+  const double c = p.pressureSolver == PressureSolver::WCSPH ? std::sqrt(static_cast<double>(p.gasStiffness)) : 0.0;
+  const double speed = c + std::sqrt(static_cast<double>(v2));
+  if (speed > 0.0)
+  {
+    dt = std::min(dt, p.cflNumber * h / speed);
+  }
+  if (p.viscosity > 0.0f) // explicit diffusion: dt <= 0.125 h^2 / nu, nu = mu / rho0
+  {
+    dt = std::min(dt, 0.125 * h * h * p.restDensity / p.viscosity);
+  }
+  const double a = this->maxAcceleration();
+  if (a > 0.0) // a particle may not move more than ~h/16 from its acceleration alone
+  {
+    dt = std::min(dt, 0.25 * std::sqrt(h / a));
+  }
+  if (p.surfaceTension > 0.0f) // capillary waves (Brackbill et al. 1992)
+  {
+    dt = std::min(dt, std::sqrt(p.restDensity * h * h * h / (2.0 * kPi * p.surfaceTension)));
+  }
+  return dt;
+}
+
+double SPHSolver::chooseTimeStep(double remaining) const
+{
+  const double dt = this->proposedTimeStep();
+  // Land exactly on the end time without a sliver of a last step: split the last two evenly.
+  if (remaining <= dt)
+  {
+    return remaining;
+  }
+  if (remaining < 2.0 * dt)
+  {
+    return 0.5 * remaining;
+  }
+  return dt;
+}
+
+void SPHSolver::checkFinite() const
+{
+  // A blown-up simulation shows as a non-finite velocity; stop rather than hand on NaN.
+  const auto n = static_cast<std::int64_t>(this->State.size());
+  const float* vx = this->State.vx.data();
+  const float* vy = this->State.vy.data();
+  const float* vz = this->State.vz.data();
+  double total = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : total) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    total += std::fabs(vx[i]) + std::fabs(vy[i]) + std::fabs(vz[i]);
+  }
+  if (!std::isfinite(total))
+  {
+    throw std::runtime_error("SPH became unstable at step " + std::to_string(this->Steps) +
+      " (non-finite velocity): turn on AdaptiveTimeStep or reduce TimeStep or GasStiffness, or raise Viscosity");
+  }
+}
+
+void SPHSolver::measureCompression()
+{
+  const auto n = static_cast<std::int64_t>(this->State.size());
+  const float* rho = this->State.density.data();
+  const float rho0 = this->Parameters.restDensity;
+  double total = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : total) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    total += std::max(rho[i] - rho0, 0.0f);
+  }
+  this->Last.meanCompression = n > 0 ? total / (static_cast<double>(n) * rho0) : 0.0;
+}
+
+void SPHSolver::sortByCell()
+{
+  ParticleState& s = this->State;
+  this->Grid.build(s.x.data(), s.y.data(), s.z.data(), s.size(), this->Parameters.smoothingLength);
+  const auto& order = this->Grid.sortedOrder();
+  const int threads = threadCount(this->Parameters);
+  for (auto* a : { &s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz })
+  {
+    permute(*a, this->ScratchFloat, order, threads);
+  }
+  if (this->Parameters.pressureSolver == PressureSolver::DFSPH)
+  {
+    // DFSPH sorts in the middle of a step: the accelerations summed so far and the warm starts move
+    // with their particles.
+    for (auto* a : { &s.ax, &s.ay, &s.az, &this->DensityStiffness, &this->DivergenceStiffness })
+    {
+      if (a->size() == s.size())
+      {
+        permute(*a, this->ScratchFloat, order, threads);
+      }
+    }
+  }
+  permute(s.id, this->ScratchId, order, threads);
+  permute(s.originalIndex, this->ScratchIndex, order, threads);
+  // Densities and pressures are recomputed from the sorted positions next.
+}
+
+void SPHSolver::kick(float dt)
+{
+  ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  float* vx = s.vx.data();
+  float* vy = s.vy.data();
+  float* vz = s.vz.data();
+  const float* ax = s.ax.data();
+  const float* ay = s.ay.data();
+  const float* az = s.az.data();
+#pragma omp parallel for simd schedule(static) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    vx[i] += dt * ax[i];
+    vy[i] += dt * ay[i];
+    vz[i] += dt * az[i];
+  }
+}
+
+void SPHSolver::drift(float dt)
+{
+  ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  const auto& b = this->Parameters.domainBounds;
+  const float restitution = this->Parameters.wallRestitution;
+  const TriangleBoundary* mesh = this->Boundary && this->Boundary->triangleCount() > 0 ? this->Boundary.get() : nullptr;
+  const float damping = this->Parameters.boundaryDamping;
+  // Particles are put back this far off a mesh, so the next step starts on a definite side of it.
+  const float offset = 1e-3f * this->Parameters.smoothingLength;
+  float* position[3] = { s.x.data(), s.y.data(), s.z.data() };
+  float* velocity[3] = { s.vx.data(), s.vy.data(), s.vz.data() };
+#pragma omp parallel for schedule(static) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    const float from[3] = { position[0][i], position[1][i], position[2][i] };
+    float to[3];
+    float v[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      float xa = from[a] + dt * velocity[a][i];
+      float va = velocity[a][i];
+      // Damped reflection: a particle that left the box has its overshoot mirrored back inside and
+      // its normal velocity reversed and scaled, so walls take energy out instead of adding it.
+      // Not clamped onto the wall: a particle on the plane would coincide with its own mirror
+      // image, which then could not push it.
+      if (xa < b[2 * a])
+      {
+        xa = std::min(b[2 * a] + restitution * (b[2 * a] - xa), b[2 * a + 1]);
+        va = va < 0.0f ? -restitution * va : va;
+      }
+      else if (xa > b[2 * a + 1])
+      {
+        xa = std::max(b[2 * a + 1] - restitution * (xa - b[2 * a + 1]), b[2 * a]);
+        va = va > 0.0f ? -restitution * va : va;
+      }
+      to[a] = xa;
+      v[a] = va;
+    }
+    // The box is convex and both ends of the move are inside it, so the mesh can only move the end
+    // point back towards the start, except by the small offset, which the clamp takes care of.
+    if (mesh && mesh->resolve(from, to, v, damping, offset))
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        to[a] = std::clamp(to[a], b[2 * a], b[2 * a + 1]);
+      }
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      position[a][i] = to[a];
+      velocity[a][i] = v[a];
+    }
+  }
+}
+
+std::vector<std::uint32_t> SPHSolver::neighbourCounts() const
+{
+  const ParticleState& s = this->State;
+  std::vector<std::uint32_t> counts(s.size(), 0);
+  const float h2 = this->Parameters.smoothingLength * this->Parameters.smoothingLength;
+  detail::forEachParticleByCell(this->Grid, s, this->Parameters.smoothingLength, threadCount(this->Parameters), {},
+    [&](detail::CandidateBuffer& candidates, std::uint32_t i)
+    {
+      const float q[3] = { s.x[i], s.y[i], s.z[i] };
+      counts[i] = candidates.findHits(q, h2) - 1; // the particle itself is a candidate
+    });
+  return counts;
+}
+
+double SPHSolver::kineticEnergy() const
+{
+  const ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  double sum = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : sum) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    sum += static_cast<double>(s.vx[i]) * s.vx[i] + static_cast<double>(s.vy[i]) * s.vy[i] +
+      static_cast<double>(s.vz[i]) * s.vz[i];
+  }
+  return 0.5 * this->Parameters.particleMass * sum;
+}
+
+double SPHSolver::bytesPerParticle() const
+{
+  const std::size_t n = this->State.size();
+  if (n == 0)
+  {
+    return 0.0;
+  }
+  std::size_t total = this->State.bytes() + this->ScratchFloat.capacity() * sizeof(float) +
+    this->ScratchId.capacity() * sizeof(std::int64_t) + this->ScratchIndex.capacity() * sizeof(std::uint32_t) +
+    this->InverseDensity.capacity() * sizeof(float) + this->Grid.bytes() +
+    this->NeighbourCount.capacity() * sizeof(std::uint16_t);
+  for (const auto* a : { &this->Factor, &this->DensityRate, &this->Stiffness, &this->DensityStiffness,
+         &this->DivergenceStiffness })
+  {
+    total += a->capacity() * sizeof(float);
+  }
+  return static_cast<double>(total) / static_cast<double>(n);
+}
+} // namespace parafluid::sph

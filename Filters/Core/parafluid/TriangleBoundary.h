@@ -1,0 +1,57 @@
+#pragma once
+// A static triangle mesh that particles cannot cross (a terrain, a container, an obstacle).
+// Triangles are bucketed in a uniform grid, so a particle's move is tested only against the
+// triangles near the segment it travels in one step. A particle whose segment crosses a triangle
+// is put back on the side it came from, its remaining travel is reflected across the triangle's
+// plane, and its velocity is reflected about the normal interpolated at the crossing point from the
+// vertex normals (so a smooth terrain deflects smoothly), keeping (1 - damping) of the normal speed.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace parafluid
+{
+class TriangleBoundary
+{
+public:
+  /// points: x,y,z per vertex [m]; triangles: three vertex indices each; vertexNormals: x,y,z per
+  /// vertex, or empty to use area-weighted averages of the face normals. Degenerate triangles are
+  /// dropped. Throws std::invalid_argument for out-of-range indices or non-finite coordinates.
+  TriangleBoundary(std::vector<float> points, std::vector<std::uint32_t> triangles, std::vector<float> vertexNormals = {});
+
+  struct Crossing
+  {
+    float t = 0.0f;           // fraction of the segment at which it crosses
+    std::uint32_t triangle = 0;
+    float barycentric[3] = { 0, 0, 0 };
+    float side = 1.0f;        // +1 when the segment starts on the side the face normal points to
+  };
+  /// The first triangle the segment a -> b crosses (strictly from one side to the other).
+  bool firstCrossing(const float a[3], const float b[3], Crossing& crossing) const;
+
+  /// Keeps a particle moving from `from` to `to` on from's side of every triangle: on a crossing
+  /// `to` becomes the damped reflection of the overshoot (at least `offset` metres off the plane) and
+  /// `velocity` is reflected. Returns true when the particle hit the mesh.
+  bool resolve(const float from[3], float to[3], float velocity[3], float damping, float offset) const;
+
+  std::size_t triangleCount() const { return this->Triangles.size() / 3; }
+  const float* bounds() const { return this->Bounds; }
+  /// Unit normal of triangle t (right-handed in its vertex order).
+  const float* faceNormal(std::uint32_t t) const { return &this->FaceNormals[3 * t]; }
+
+private:
+  void buildGrid();
+  bool cellRange(const float lo[3], const float hi[3], int first[3], int last[3]) const;
+
+  std::vector<float> Points;
+  std::vector<std::uint32_t> Triangles;
+  std::vector<float> VertexNormals;
+  std::vector<float> FaceNormals;
+  float Bounds[6] = { 0, 0, 0, 0, 0, 0 };
+  float Origin[3] = { 0, 0, 0 };
+  float CellSize = 1.0f;
+  int Dims[3] = { 1, 1, 1 };
+  std::vector<std::uint32_t> CellStart;     // triangles of cell c: CellTriangles[CellStart[c] .. CellStart[c+1])
+  std::vector<std::uint32_t> CellTriangles;
+};
+} // namespace parafluid
