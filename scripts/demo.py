@@ -2,7 +2,7 @@
 render it to PNG.
 
   pvpython scripts/demo.py --plugin build/.../ParaFluid.so [--data Data/dam_break.h5part]
-      [--outputs 20] [--steps-per-output 50] [--result out.h5part] [--png out.png]
+      [--outputs 20] [--interval 0.01] [--solver WCSPH|DFSPH] [--result out.h5part] [--png out.png]
 """
 import argparse
 import os
@@ -16,7 +16,8 @@ parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.R
 parser.add_argument("--plugin", default=os.environ.get("PARAFLUID_PLUGIN"), help="path of ParaFluid.so")
 parser.add_argument("--data", default=os.path.join(here, "..", "Data", "dam_break.h5part"))
 parser.add_argument("--outputs", type=int, default=20, help="output times to compute")
-parser.add_argument("--steps-per-output", type=int, default=50)
+parser.add_argument("--interval", type=float, default=0.01, help="simulated seconds between outputs")
+parser.add_argument("--solver", choices=["WCSPH", "DFSPH"], default="WCSPH", help="pressure solver")
 parser.add_argument("--result", default="dam_break_result.h5part", help="where to save the final state")
 parser.add_argument("--png", default="dam_break.png")
 parser.add_argument("--size", type=int, nargs=2, default=[800, 600])
@@ -26,13 +27,15 @@ if not args.plugin or not os.path.exists(args.plugin):
 
 LoadPlugin(args.plugin, ns=globals())
 reader = ParaFluidH5PartReader(FileName=args.data)
-sph = SPHStep(Input=reader, StepsPerOutput=args.steps_per_output, NumberOfOutputs=args.outputs)
+sph = SPHStep(Input=reader, OutputInterval=args.interval, NumberOfOutputs=args.outputs,
+              PressureSolver="DFSPH" if args.solver == "DFSPH" else "WCSPH (Müller)")
 final_time = sph.TimestepValues[-1] if args.outputs > 0 else sph.TimestepValues
 start = time.time()
 sph.UpdatePipeline(final_time)
 elapsed = time.time() - start
 particles = sph.GetDataInformation().GetNumberOfPoints()
-steps = args.outputs * args.steps_per_output
+sph.UpdatePropertyInformation()
+steps = sph.GetPropertyValue("StepsTakenLastUpdate")
 print("demo: %d particles, %d SPH steps to t = %.3f s in %.2f s (%.2f M particle-steps/s)"
       % (particles, steps, final_time, elapsed, particles * steps / max(elapsed, 1e-9) / 1e6))
 

@@ -209,6 +209,20 @@ void SPHSolver::applyPressureImpulse(float dt)
     });
 }
 
+void SPHSolver::warmStart(std::vector<float>& accumulated, float dt)
+{
+  // Half the previous step's pressure starts this one: a good guess that still decays when it was
+  // too high (the iterations only ever add pressure, never take it away).
+  const auto n = static_cast<std::int64_t>(accumulated.size());
+#pragma omp parallel for schedule(static) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    accumulated[i] *= 0.5f;
+  }
+  this->Stiffness = accumulated;
+  this->applyPressureImpulse(dt);
+}
+
 int SPHSolver::solveDensity(float dt)
 {
   ParticleState& s = this->State;
@@ -216,9 +230,7 @@ int SPHSolver::solveDensity(float dt)
   const auto n = static_cast<std::int64_t>(s.size());
   const int threads = threadCount(p);
   const float rho0 = p.restDensity;
-  // Warm start: the previous step's pressure is the best guess for this one.
-  this->Stiffness = this->DensityStiffness;
-  this->applyPressureImpulse(dt);
+  this->warmStart(this->DensityStiffness, dt);
   int iterations = 0;
   while (iterations < p.maxPressureIterations)
   {
@@ -256,8 +268,7 @@ int SPHSolver::solveDivergence(float dt)
   const auto n = static_cast<std::int64_t>(s.size());
   const int threads = threadCount(p);
   const float rho0 = p.restDensity;
-  this->Stiffness = this->DivergenceStiffness;
-  this->applyPressureImpulse(dt);
+  this->warmStart(this->DivergenceStiffness, dt);
   int iterations = 0;
   while (iterations < p.maxPressureIterations)
   {
@@ -303,8 +314,8 @@ void SPHSolver::stepDFSPH(double remaining)
 #pragma omp parallel for schedule(static) num_threads(threadCount(this->Parameters))
   for (std::int64_t i = 0; i < n; ++i)
   {
-    // Both solves' impulses over the step amount to p_i = rho_i k_i.
-    s.pressure[i] = s.density[i] * (this->DensityStiffness[i] + this->DivergenceStiffness[i]);
+    // Both solves' impulses over the step amount to the pressure p_i = rho_i^2 k_i.
+    s.pressure[i] = s.density[i] * s.density[i] * (this->DensityStiffness[i] + this->DivergenceStiffness[i]);
   }
   this->Last.timeStep = dt;
   this->Time += dt;

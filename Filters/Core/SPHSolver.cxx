@@ -190,6 +190,13 @@ double SPHSolver::proposedTimeStep() const
 double SPHSolver::chooseTimeStep(double remaining) const
 {
   const double dt = this->proposedTimeStep();
+  if (!this->Parameters.adaptiveTimeStep)
+  {
+    // Fixed steps: equal steps that fit the remaining time exactly (TimeStep 2e-4 over 4e-3 s is
+    // 20 steps of exactly 2e-4, whatever the float rounding of 2e-4).
+    const double steps = std::max(1.0, std::ceil(remaining / dt - 1e-6));
+    return remaining / steps;
+  }
   // Land exactly on the end time without a sliver of a last step: split the last two evenly.
   if (remaining <= dt)
   {

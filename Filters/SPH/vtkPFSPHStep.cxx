@@ -1,6 +1,7 @@
 #include "vtkPFSPHStep.h"
 
 #include "vtkPFParticleArrays.h"
+#include "vtkPFTriangleBoundary.h"
 
 #include "parafluid/SPHParameters.h"
 #include "parafluid/SPHSolver.h"
@@ -9,6 +10,7 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
@@ -23,6 +25,7 @@
 #include <optional>
 
 using parafluid::sph::ParticleState;
+using parafluid::sph::PressureSolver;
 using parafluid::sph::SPHParameters;
 using parafluid::sph::SPHSolver;
 
@@ -31,6 +34,7 @@ struct vtkPFSPHStep::Cache
   std::optional<SPHSolver> Solver;
   long long OutputIndex = 0;   // the output time the solver's state belongs to
   vtkMTimeType InputTime = 0;  // the input data object's MTime it started from
+  vtkMTimeType BoundaryTime = 0; // the boundary surface's MTime (0 without one)
   vtkMTimeType FilterTime = 0; // this filter's MTime (its properties) it started with
 };
 
@@ -39,12 +43,19 @@ vtkStandardNewMacro(vtkPFSPHStep);
 vtkPFSPHStep::vtkPFSPHStep()
   : Cached(std::make_unique<Cache>())
 {
+  this->SetNumberOfInputPorts(2);
 }
 
 vtkPFSPHStep::~vtkPFSPHStep() = default;
 
-int vtkPFSPHStep::FillInputPortInformation(int, vtkInformation* info)
+int vtkPFSPHStep::FillInputPortInformation(int port, vtkInformation* info)
 {
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
   return 1;
 }
@@ -57,7 +68,7 @@ int vtkPFSPHStep::RequestInformation(
   this->InputHasTime = inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) &&
     inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) > 0;
   this->StartTime = this->InputHasTime ? inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[0] : 0.0;
-  const double interval = this->TimeStep * this->StepsPerOutput;
+  const double interval = this->OutputInterval > 0.0 ? this->OutputInterval : 1.0;
   std::vector<double> times(static_cast<std::size_t>(this->NumberOfOutputs) + 1);
   for (std::size_t k = 0; k < times.size(); ++k)
   {
@@ -126,7 +137,12 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   vtkPointSet* input = vtkPointSet::SafeDownCast(gathered);
   // The gathered copy is new on every update; the input's own MTime says whether it changed.
   const vtkMTimeType inputTime = local->GetMTime();
-  const double interval = this->TimeStep * this->StepsPerOutput;
+  if (!(this->OutputInterval > 0.0) || !std::isfinite(this->OutputInterval))
+  {
+    vtkErrorMacro("SPH Step: OutputInterval must be a positive number of seconds, got " << this->OutputInterval);
+    return 0;
+  }
+  const double interval = this->OutputInterval;
   long long target = 0;
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) && interval > 0.0)
   {
@@ -135,8 +151,11 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
     target = std::max(0LL, std::min<long long>(target, this->NumberOfOutputs));
   }
 
+  vtkPolyData* surface = vtkPolyData::GetData(inputVector[1]);
+  const vtkMTimeType boundaryTime = surface ? surface->GetMTime() : 0;
+
   Cache& cache = *this->Cached;
-  const bool reusable = cache.Solver && cache.InputTime == inputTime &&
+  const bool reusable = cache.Solver && cache.InputTime == inputTime && cache.BoundaryTime == boundaryTime &&
     cache.FilterTime == this->GetMTime() && cache.OutputIndex <= target;
   if (!reusable)
   {
@@ -149,9 +168,17 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
         : parafluid::vtk::fieldValue(fd, "smoothing_length", 2.0 * spacing));
     p.restDensity = static_cast<float>(this->RestDensity);
     p.gasStiffness = static_cast<float>(this->GasStiffness);
+    p.pressureSolver = this->PressureSolver == 1 ? PressureSolver::DFSPH : PressureSolver::WCSPH;
     p.viscosity = static_cast<float>(this->Viscosity);
+    p.surfaceTension = static_cast<float>(this->SurfaceTension);
+    p.adaptiveTimeStep = this->AdaptiveTimeStep;
+    p.cflNumber = static_cast<float>(this->CFLNumber);
+    p.maxTimeStep = static_cast<float>(this->MaxTimeStep);
     p.timeStep = static_cast<float>(this->TimeStep);
+    p.densityTolerance = static_cast<float>(this->DensityTolerance);
+    p.maxPressureIterations = this->MaxPressureIterations;
     p.wallRestitution = static_cast<float>(this->WallRestitution);
+    p.boundaryDamping = static_cast<float>(this->BoundaryDamping);
     for (int a = 0; a < 3; ++a)
     {
       p.gravity[a] = static_cast<float>(this->Gravity[a]);
@@ -176,7 +203,8 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
     {
       try
       {
-        p.particleMass = parafluid::sph::latticeParticleMass(static_cast<float>(spacing), p.smoothingLength, p.restDensity);
+        p.particleMass = parafluid::sph::latticeParticleMass(
+          static_cast<float>(spacing), p.smoothingLength, p.restDensity, p.densityKernel());
       }
       catch (const std::exception& e)
       {
@@ -214,9 +242,20 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
         state.id[i] = static_cast<std::int64_t>(ids->GetComponent(i, 0));
       }
     }
+    std::shared_ptr<const parafluid::TriangleBoundary> boundary;
+    if (surface)
+    {
+      std::string problem;
+      boundary = parafluid::vtk::makeTriangleBoundary(surface, problem);
+      if (!boundary)
+      {
+        vtkErrorMacro("SPH Step: " << problem);
+        return 0;
+      }
+    }
     try
     {
-      cache.Solver.emplace(p, std::move(state));
+      cache.Solver.emplace(p, std::move(state), std::move(boundary));
     }
     catch (const std::exception& e)
     {
@@ -225,27 +264,31 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
     }
     cache.OutputIndex = 0;
     cache.InputTime = inputTime;
+    cache.BoundaryTime = boundaryTime;
     cache.FilterTime = this->GetMTime();
   }
 
-  // Step from the cached output time to the requested one.
-  const long long steps = (target - cache.OutputIndex) * this->StepsPerOutput;
+  // Advance from the cached output time to the requested one, one output interval at a time, so
+  // that the steps taken (and so the result) do not depend on which times were asked for before.
   try
   {
-    for (long long s = 0; s < steps; ++s)
+    bool aborted = false;
+    const long long intervals = target - cache.OutputIndex;
+    for (long long k = 0; k < intervals && !aborted; ++k)
     {
-      cache.Solver->step();
-      ++this->StepsTakenLastUpdate;
-      if (s % 16 == 0)
-      {
-        this->UpdateProgress(static_cast<double>(s) / static_cast<double>(steps));
-        if (this->CheckAbort())
+      this->StepsTakenLastUpdate += cache.Solver->advance(interval,
+        [this, &aborted, k, intervals](double fraction)
         {
-          // The state is between output times now; drop it so the next update starts cleanly.
-          cache.Solver.reset();
-          return 1;
-        }
-      }
+          this->UpdateProgress((static_cast<double>(k) + fraction) / static_cast<double>(intervals));
+          aborted = this->CheckAbort() != 0;
+          return !aborted;
+        });
+    }
+    if (aborted)
+    {
+      // The state is between output times now; drop it so the next update starts cleanly.
+      cache.Solver.reset();
+      return 1;
     }
   }
   catch (const std::exception& e)
@@ -254,6 +297,7 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
     vtkErrorMacro("SPH Step: " << e.what());
     return 0;
   }
+  this->MeanDensityError = cache.Solver->lastStep().meanCompression;
   cache.OutputIndex = target;
 
   // Output in the input's order and with the input's other arrays.
@@ -281,9 +325,30 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   };
   float* position = coordinates->GetPointer(0);
   float* velocityOut = vector3("velocity");
-  float* acceleration = vector3("acceleration");
   float* density = scalar("density");
-  float* pressure = scalar("pressure");
+  // Optional arrays: without them the input's arrays of that name (if any) are dropped too, as they
+  // would describe the start time.
+  float* acceleration = nullptr;
+  float* pressure = nullptr;
+  output->GetPointData()->RemoveArray("acceleration");
+  output->GetPointData()->RemoveArray("pressure");
+  if (this->OutputAcceleration)
+  {
+    acceleration = vector3("acceleration");
+  }
+  if (this->OutputPressure)
+  {
+    pressure = scalar("pressure");
+  }
+  std::vector<std::uint32_t> neighbours;
+  vtkNew<vtkIntArray> neighbourCount;
+  if (this->OutputNeighbourCount)
+  {
+    neighbours = cache.Solver->neighbourCounts();
+    neighbourCount->SetName("neighbour_count");
+    neighbourCount->SetNumberOfValues(n);
+    output->GetPointData()->AddArray(neighbourCount);
+  }
   vtkNew<vtkTypeInt64Array> ids;
   ids->SetName("id");
   ids->SetNumberOfValues(n);
@@ -297,11 +362,21 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
     velocityOut[3 * i + 0] = s.vx[k];
     velocityOut[3 * i + 1] = s.vy[k];
     velocityOut[3 * i + 2] = s.vz[k];
-    acceleration[3 * i + 0] = s.ax[k];
-    acceleration[3 * i + 1] = s.ay[k];
-    acceleration[3 * i + 2] = s.az[k];
+    if (acceleration)
+    {
+      acceleration[3 * i + 0] = s.ax[k];
+      acceleration[3 * i + 1] = s.ay[k];
+      acceleration[3 * i + 2] = s.az[k];
+    }
+    if (pressure)
+    {
+      pressure[i] = s.pressure[k];
+    }
+    if (!neighbours.empty())
+    {
+      neighbourCount->SetValue(i, static_cast<int>(neighbours[k]));
+    }
     density[i] = s.density[k];
-    pressure[i] = s.pressure[k];
     ids->SetValue(i, s.id[k]);
   }
   output->GetPointData()->SetActiveVectors("velocity");
@@ -329,6 +404,8 @@ void vtkPFSPHStep::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SmoothingLength: " << this->SmoothingLength << "\n";
+  os << indent << "PressureSolver: " << (this->PressureSolver == 1 ? "DFSPH" : "WCSPH") << "\n";
+  os << indent << "AdaptiveTimeStep: " << this->AdaptiveTimeStep << "\n";
   os << indent << "TimeStep: " << this->TimeStep << "\n";
-  os << indent << "StepsPerOutput: " << this->StepsPerOutput << "\n";
+  os << indent << "OutputInterval: " << this->OutputInterval << "\n";
 }

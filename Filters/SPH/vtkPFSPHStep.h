@@ -1,12 +1,16 @@
 /**
  * @class vtkPFSPHStep
- * @brief Time-aware filter: advances particles with Müller et al. (2003) weakly compressible SPH.
+ * @brief Time-aware filter: advances particles with SPH (Müller's weakly compressible SPH or
+ * Bender & Koschier's divergence-free SPH).
  *
- * The input is the state at t0 (its first time step, or its only state). The output offers the
- * times t0 + k * StepsPerOutput * TimeStep, k = 0 .. NumberOfOutputs, and produces the state at the
- * requested one. The last computed state is cached: moving forward in the animation continues from
- * it; moving back, or changing a property or the input, restarts from t0. Output particles keep the
- * input's order and arrays, with position, velocity, density, pressure, acceleration and id updated.
+ * Input 0 is the particle state at t0 (its first time step, or its only state). The optional input
+ * 1 ("Boundary") is a surface the particles cannot cross (any vtkPolyData; polygons are
+ * triangulated). The output offers the times t0 + k * OutputInterval, k = 0 .. NumberOfOutputs, and
+ * produces the state at the requested one: the solver takes as many steps as the time-step control
+ * needs and lands exactly on it. The last computed state is cached: moving forward in the animation
+ * continues from it; moving back, or changing a property or an input, restarts from t0. Output
+ * particles keep the input's order and arrays, with position, velocity, density, id and (when asked)
+ * pressure, acceleration and neighbour_count updated.
  *
  * Zero-valued SmoothingLength / ParticleMass / DomainBounds mean "from the input's field data"
  * (smoothing_length, particle_spacing, domain_bounds, as the ParaFluid reader and the Particle
@@ -17,6 +21,8 @@
 
 #include "ParaFluidSPHFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
+
+class vtkAlgorithmOutput;
 
 #include <memory>
 
@@ -39,12 +45,47 @@ public:
   /// Müller's viscosity coefficient mu [Pa s].
   vtkSetMacro(Viscosity, double);
   vtkGetMacro(Viscosity, double);
-  /// dt [s].
+  /// 0 = WCSPH (Müller's equation of state), 1 = DFSPH (divergence-free, incompressible).
+  vtkSetClampMacro(PressureSolver, int, 0, 1);
+  vtkGetMacro(PressureSolver, int);
+  /// Surface tension sigma [N/m] (colour-field model); 0 skips the colour-field pass.
+  vtkSetMacro(SurfaceTension, double);
+  vtkGetMacro(SurfaceTension, double);
+  /// Choose each step from the CFL, viscous and force conditions (else use TimeStep).
+  vtkSetMacro(AdaptiveTimeStep, bool);
+  vtkGetMacro(AdaptiveTimeStep, bool);
+  vtkBooleanMacro(AdaptiveTimeStep, bool);
+  /// lambda in dt <= lambda h / (c + v_max).
+  vtkSetMacro(CFLNumber, double);
+  vtkGetMacro(CFLNumber, double);
+  /// Upper limit of the adaptive step [s].
+  vtkSetMacro(MaxTimeStep, double);
+  vtkGetMacro(MaxTimeStep, double);
+  /// Fixed dt [s] when AdaptiveTimeStep is off.
   vtkSetMacro(TimeStep, double);
   vtkGetMacro(TimeStep, double);
-  /// SPH steps between two output times.
-  vtkSetClampMacro(StepsPerOutput, int, 1, 1000000);
-  vtkGetMacro(StepsPerOutput, int);
+  /// Simulated time between two output times [s].
+  vtkSetMacro(OutputInterval, double);
+  vtkGetMacro(OutputInterval, double);
+  /// DFSPH: mean density error the solver keeps below (fraction of rest density).
+  vtkSetMacro(DensityTolerance, double);
+  vtkGetMacro(DensityTolerance, double);
+  /// DFSPH: iteration limit of each solve.
+  vtkSetMacro(MaxPressureIterations, int);
+  vtkGetMacro(MaxPressureIterations, int);
+  /// Fraction of the normal velocity lost when a particle hits the Boundary mesh (0..1).
+  vtkSetMacro(BoundaryDamping, double);
+  vtkGetMacro(BoundaryDamping, double);
+  /// Optional output arrays: computed (or copied) only when on.
+  vtkSetMacro(OutputPressure, bool);
+  vtkGetMacro(OutputPressure, bool);
+  vtkSetMacro(OutputAcceleration, bool);
+  vtkGetMacro(OutputAcceleration, bool);
+  vtkSetMacro(OutputNeighbourCount, bool);
+  vtkGetMacro(OutputNeighbourCount, bool);
+
+  /// Connects the optional boundary surface (input port 1).
+  void SetBoundaryConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
   /// Number of output times after t0.
   vtkSetClampMacro(NumberOfOutputs, int, 0, 1000000);
   vtkGetMacro(NumberOfOutputs, int);
@@ -63,6 +104,8 @@ public:
 
   /// Number of SPH steps taken by the last update (0 when it was served from the cache).
   vtkGetMacro(StepsTakenLastUpdate, vtkIdType);
+  /// Mean over particles of max(rho - rho0, 0) / rho0 after the last step of the last update.
+  vtkGetMacro(MeanDensityError, double);
 
 protected:
   vtkPFSPHStep();
@@ -80,8 +123,19 @@ private:
   double RestDensity = 1000.0;
   double GasStiffness = 1000.0;
   double Viscosity = 3.5;
+  int PressureSolver = 0;
+  double SurfaceTension = 0.0;
+  bool AdaptiveTimeStep = true;
+  double CFLNumber = 0.2;
+  double MaxTimeStep = 0.005;
   double TimeStep = 2.0e-4;
-  int StepsPerOutput = 50;
+  double OutputInterval = 0.01;
+  double DensityTolerance = 0.001;
+  int MaxPressureIterations = 100;
+  double BoundaryDamping = 0.5;
+  bool OutputPressure = true;
+  bool OutputAcceleration = false;
+  bool OutputNeighbourCount = false;
   int NumberOfOutputs = 100;
   double Gravity[3] = { 0.0, 0.0, -9.81 };
   double DomainBounds[6] = { 0, 0, 0, 0, 0, 0 };
@@ -91,6 +145,7 @@ private:
   double StartTime = 0.0;
   bool InputHasTime = false;
   vtkIdType StepsTakenLastUpdate = 0;
+  double MeanDensityError = 0.0;
 
   struct Cache;
   std::unique_ptr<Cache> Cached;

@@ -19,7 +19,7 @@ baseline = os.path.join(root, "Testing", "Baselines", "demo_dam_break.png")
 out = pftest.scratch_dir()
 png = os.path.join(out, "demo.png")
 
-sys.argv = ["demo.py", "--plugin", pftest.plugin_path(), "--outputs", "10", "--steps-per-output", "50",
+sys.argv = ["demo.py", "--plugin", pftest.plugin_path(), "--outputs", "10", "--interval", "0.01",
             "--result", os.path.join(out, "result.h5part"), "--png", png, "--size", "400", "300"]
 runpy.run_path(os.path.join(root, "scripts", "demo.py"), run_name="__main__")
 

@@ -41,7 +41,7 @@ pftest.check(np.array_equal(pftest.point_array(copy, "velocity")[order_copy], pf
 
 # SPH Step gathers the pieces: every particle is simulated once, with all its neighbours, on
 # process 0 (the output of the other process is empty).
-sph = SPHStep(Input=reader, StepsPerOutput=20, NumberOfOutputs=2)
+sph = SPHStep(Input=reader, OutputInterval=0.004, NumberOfOutputs=2)
 stepped = pftest.fetch(ProcessIdScalars(Input=sph), sph.TimestepValues[-1])
 pftest.check(stepped.GetNumberOfPoints() == n, "SPH output holds %d particles, not %d" % (stepped.GetNumberOfPoints(), n))
 pftest.check(np.array_equal(np.sort(pftest.point_array(stepped, "id")), np.arange(n)), "SPH output lost or repeated particles")

@@ -6,7 +6,7 @@ import pftest
 
 pftest.load(globals())
 block = ParticleBlock(Spacing=0.02, BlockBounds=[0, 0.2, 0, 0.1, 0, 0.3], DomainBounds=[0, 0.6, 0, 0.1, 0, 0.4])
-sph = SPHStep(Input=block, StepsPerOutput=10, NumberOfOutputs=6)
+sph = SPHStep(Input=block, AdaptiveTimeStep=0, TimeStep=2e-4, OutputInterval=0.002, NumberOfOutputs=6)
 
 
 def steps_taken(proxy):
@@ -24,7 +24,7 @@ again2 = pftest.points(pftest.fetch(sph, times[2]))
 pftest.check(steps_taken(sph) == 20, "going back must restart from t0")
 pftest.check(np.array_equal(at2, again2), "restarted run differs from the first")
 
-fresh = SPHStep(Input=block, StepsPerOutput=10, NumberOfOutputs=6)
+fresh = SPHStep(Input=block, AdaptiveTimeStep=0, TimeStep=2e-4, OutputInterval=0.002, NumberOfOutputs=6)
 pftest.check(np.array_equal(pftest.points(pftest.fetch(fresh, times[5])), at5), "cached stepping differs from a fresh run")
 
 # A property change invalidates the cache.
@@ -37,4 +37,11 @@ data = pftest.fetch(sph, times[5])
 pftest.check(np.array_equal(pftest.point_array(data, "id"), np.arange(data.GetNumberOfPoints())), "order not kept")
 pftest.check(data.GetFieldData().GetArray("time").GetValue(0) == times[5], "output time field data")
 pftest.check(np.all(np.isfinite(pftest.points(data))), "non-finite positions")
+
+# Adaptive stepping (the default) still lands exactly on every output time.
+adaptive = SPHStep(Input=block, OutputInterval=0.004, NumberOfOutputs=3)
+for k, t in enumerate(adaptive.TimestepValues):
+    d = pftest.fetch(adaptive, t)
+    pftest.check(d.GetFieldData().GetArray("time").GetValue(0) == t, "adaptive output %d is not at t = %g" % (k, t))
+pftest.check(steps_taken(adaptive) > 0, "adaptive run took no steps")
 print("sph time: ok")

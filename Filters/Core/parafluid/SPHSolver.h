@@ -84,6 +84,7 @@ private:
   // DFSPH (DivergenceFreeSolver.cxx)
   void stepDFSPH(double remaining);
   void computeDensityAndFactor();
+  void warmStart(std::vector<float>& accumulated, float dt);
   int solveDensity(float dt);
   int solveDivergence(float dt);
   /// Sum over neighbours j of m (v_i - v_j) . grad W_ij into DensityRate (D rho / D t).

@@ -1,0 +1,19 @@
+#ifndef vtkPFTriangleBoundary_h
+#define vtkPFTriangleBoundary_h
+// Converts a surface (any vtkPolyData: polygons, strips) into the core's triangle boundary.
+#include "parafluid/TriangleBoundary.h"
+
+#include <memory>
+#include <string>
+
+class vtkPolyData;
+
+namespace parafluid::vtk
+{
+/// Triangulates the polygons and strips of `surface` (lines and vertices are ignored) and keeps
+/// its point normals when it has them. Returns null and sets `error` when the surface has no
+/// triangles or bad coordinates.
+std::shared_ptr<const TriangleBoundary> makeTriangleBoundary(vtkPolyData* surface, std::string& error);
+}
+
+#endif
