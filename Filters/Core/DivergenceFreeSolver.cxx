@@ -168,7 +168,9 @@ void SPHSolver::applyPressureImpulse(float dt)
   ParticleState& s = this->State;
   const SPHParameters& p = this->Parameters;
   const CubicPair w(p.smoothingLength);
-  const float m = p.particleMass;
+  // The pressure force uses the gradient corrected to be exact for a linear field on the rest
+  // lattice; the prediction (density rate) keeps the plain one, which matches the measured density.
+  const float m = p.particleMass * this->GradientCorrection;
   // Velocities change in place: the pass reads the stiffnesses only, never the velocities.
   forEachParticleByCell(this->Grid, s, p.smoothingLength, threadCount(p), { this->Stiffness.data() },
     [&](CandidateBuffer& c, std::uint32_t i)

@@ -129,4 +129,50 @@ float latticeParticleMass(float spacing, float smoothingLength, float restDensit
   }
   return static_cast<float>(restDensity / sum);
 }
+
+float latticeSpacingForMass(float particleMass, float smoothingLength, float restDensity, DensityKernel kernel)
+{
+  // The lattice mass grows with the spacing; bisect between h / 20 and h.
+  float lo = smoothingLength / 20.0f, hi = smoothingLength;
+  for (int k = 0; k < 40; ++k)
+  {
+    const float mid = 0.5f * (lo + hi);
+    (latticeParticleMass(mid, smoothingLength, restDensity, kernel) < particleMass ? lo : hi) = mid;
+  }
+  return 0.5f * (lo + hi);
+}
+
+float latticeGradientCorrection(float spacing, float smoothingLength, DensityKernel kernel)
+{
+  if (!positiveFinite(spacing) || !positiveFinite(smoothingLength) || smoothingLength / spacing > 50.0f)
+  {
+    return 1.0f;
+  }
+  const Poly6Kernel poly6(smoothingLength);
+  const CubicSplineKernel cubic(smoothingLength);
+  const int reach = static_cast<int>(std::ceil(smoothingLength / spacing));
+  double sum = 0.0, moment = 0.0;
+  for (int k = -reach; k <= reach; ++k)
+  {
+    for (int j = -reach; j <= reach; ++j)
+    {
+      for (int i = -reach; i <= reach; ++i)
+      {
+        const double r = std::sqrt(double(i) * i + double(j) * j + double(k) * k) * spacing;
+        const auto rf = static_cast<float>(r);
+        sum += kernel == DensityKernel::Poly6 ? poly6.valueFromSquared(rf * rf) : cubic.value(rf);
+        if (r > 0.0)
+        {
+          const double dWdr = kernel == DensityKernel::Poly6 ? poly6.gradientFactorFromSquared(rf * rf) * r
+                                                             : cubic.radialDerivative(rf);
+          const double dz = double(k) * spacing;
+          moment -= dWdr / r * dz * dz; // -(dW/dz)(z_i - z_j) with z_i - z_j = -dz
+        }
+      }
+    }
+  }
+  // V = 1 / sum (the volume that gives rest density), so C = moment / sum.
+  const double c = moment / sum;
+  return c > 0.0 ? static_cast<float>(1.0 / c) : 1.0f;
+}
 } // namespace parafluid::sph

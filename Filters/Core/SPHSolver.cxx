@@ -1,6 +1,7 @@
 #include "parafluid/SPHSolver.h"
 
 #include "parafluid/TriangleBoundary.h"
+#include "parafluid/WallMirrors.h"
 #include "private/NeighbourCandidates.h"
 
 #include <algorithm>
@@ -70,6 +71,9 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial, std
   this->sortByCell();
   if (this->Parameters.pressureSolver == PressureSolver::DFSPH)
   {
+    const SPHParameters& p = this->Parameters;
+    const float spacing = latticeSpacingForMass(p.particleMass, p.smoothingLength, p.restDensity, p.densityKernel());
+    this->GradientCorrection = latticeGradientCorrection(spacing, p.smoothingLength, p.densityKernel());
     this->DensityStiffness.assign(n, 0.0f);
     this->DivergenceStiffness.assign(n, 0.0f);
     this->computeDensityAndFactor();
@@ -171,9 +175,11 @@ double SPHSolver::proposedTimeStep() const
   {
     dt = std::min(dt, p.cflNumber * h / speed);
   }
-  if (p.viscosity > 0.0f) // explicit diffusion: dt <= 0.125 h^2 / nu, nu = mu / rho0
+  if (p.viscosity > 0.0f)
   {
-    dt = std::min(dt, 0.125 * h * h * p.restDensity / p.viscosity);
+    // Explicit diffusion is stable for dt nu S < 1, S the sum of Müller's Laplacian weights over a
+    // neighbourhood: about 15 / h^2, up to twice that beside a wall's mirror images. Kept at 0.75.
+    dt = std::min(dt, h * h * p.restDensity / (40.0 * p.viscosity));
   }
   const double a = this->maxAcceleration();
   if (a > 0.0) // a particle may not move more than ~h/16 from its acceleration alone
@@ -357,6 +363,54 @@ std::vector<std::uint32_t> SPHSolver::neighbourCounts() const
       counts[i] = candidates.findHits(q, h2) - 1; // the particle itself is a candidate
     });
   return counts;
+}
+
+std::vector<float> SPHSolver::smoothedPressure() const
+{
+  const ParticleState& s = this->State;
+  const SPHParameters& p = this->Parameters;
+  std::vector<float> volume(s.size()), smoothed(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    volume[i] = p.particleMass / s.density[i];
+  }
+  const float h2 = p.smoothingLength * p.smoothingLength;
+  detail::forEachParticleByCell(this->Grid, s, p.smoothingLength, threadCount(p), { volume.data(), s.pressure.data() },
+    [&](detail::CandidateBuffer& c, std::uint32_t i)
+    {
+      const float position[3] = { s.x[i], s.y[i], s.z[i] };
+      float weighted = 0.0f, weights = 0.0f;
+      auto accumulate = [&](const float q[3])
+      {
+        const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data();
+        const float *v = c.channel[0].data(), *pj = c.channel[1].data();
+        float a = 0.0f, b = 0.0f;
+#pragma omp simd reduction(+ : a, b)
+        for (std::uint32_t j = 0; j < c.size; ++j)
+        {
+          const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
+          const float d = std::max(h2 - (dx * dx + dy * dy + dz * dz), 0.0f);
+          const float w = v[j] * d * d * d; // poly6 without its constant, which cancels
+          a += w * pj[j];
+          b += w;
+        }
+        weighted += a;
+        weights += b;
+      };
+      accumulate(position);
+      const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, p.smoothingLength);
+      for (int m = 0; m < mirrors.count; ++m)
+      {
+        float image[3];
+        for (int a = 0; a < 3; ++a)
+        {
+          image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
+        }
+        accumulate(image);
+      }
+      smoothed[i] = weights > 0.0f ? weighted / weights : s.pressure[i];
+    });
+  return smoothed;
 }
 
 double SPHSolver::kineticEnergy() const

@@ -3,7 +3,8 @@
 //  - dam break: a column of width a and height 2a released at t = 0; surge front Z = x/a against
 //    T = t sqrt(2 g / a), compared with Martin & Moyce (1952).
 // Writes CSV files into the directory given as first argument; plot_validation.py draws them.
-// Usage: ParaFluidSPHValidation <output-directory> [--quick]
+// Usage: ParaFluidSPHValidation <output-directory> [--quick] [--scene all|hydrostatic|dambreak]
+//        [--solver WCSPH|DFSPH] [--resolutions 10,20,40] [--viscosity 3.5] [--tolerance 0.001]
 #include "parafluid/ParticleLattice.h"
 #include "parafluid/SPHParameters.h"
 #include "parafluid/SPHSolver.h"
@@ -12,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -32,7 +34,8 @@ const char* name(PressureSolver s)
 
 /// Water with h = 2 spacings; a slab four particles thick in y between free-slip mirror walls,
 /// which makes the flow two-dimensional as in the experiments.
-float gViscosity = 3.5f; // [Pa s], --viscosity; Müller's water value, the filter's default
+float gViscosity = 3.5f;        // [Pa s], --viscosity; Müller's water value, the filter's default
+float gDensityTolerance = 0.001f; // --tolerance; the filter's default (0.1 %)
 
 SPHParameters water(PressureSolver solver, float spacing, const std::array<float, 6>& domain)
 {
@@ -44,6 +47,7 @@ SPHParameters water(PressureSolver solver, float spacing, const std::array<float
   p.viscosity = gViscosity;
   p.gravity = { 0.0f, 0.0f, -kGravity };
   p.domainBounds = domain;
+  p.densityTolerance = gDensityTolerance;
   p.particleMass = latticeParticleMass(spacing, p.smoothingLength, kRho0, p.densityKernel());
   return p;
 }
@@ -61,7 +65,7 @@ double seconds(std::chrono::steady_clock::time_point since)
 
 struct Hydrostatic
 {
-  double error = 0.0, wall = 0.0, compression = 0.0;
+  double error = 0.0, profileError = 0.0, wall = 0.0, compression = 0.0;
   long long particles = 0, steps = 0;
 };
 
@@ -86,9 +90,10 @@ Hydrostatic hydrostatic(PressureSolver solver, int across, std::ofstream* profil
   {
     r.steps += s.advance(0.005);
     r.compression += s.lastStep().meanCompression / samples;
+    const std::vector<float> pressure = s.smoothedPressure(); // what SPH Step outputs as "pressure"
     for (std::size_t i = 0; i < n; ++i)
     {
-      sum[static_cast<std::size_t>(s.state().id[i])] += s.state().pressure[i] / samples;
+      sum[static_cast<std::size_t>(s.state().id[i])] += pressure[i] / samples;
     }
   }
   r.wall = seconds(start);
@@ -105,6 +110,28 @@ Hydrostatic hydrostatic(PressureSolver solver, int across, std::ofstream* profil
     }
   }
   r.error = std::sqrt(num / den);
+  // The pressure-against-depth profile: particles binned into layers one spacing thick.
+  std::vector<double> layerPressure(2 * static_cast<std::size_t>(across) + 2, 0.0), layerReference(layerPressure.size(), 0.0);
+  std::vector<int> layerCount(layerPressure.size(), 0);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const auto id = static_cast<std::size_t>(s.state().id[i]);
+    const auto layer = std::min(layerPressure.size() - 1, static_cast<std::size_t>(std::max(0.0f, s.state().z[i] / d)));
+    layerPressure[layer] += sum[id];
+    layerReference[layer] += kRho0 * kGravity * (height - s.state().z[i]);
+    ++layerCount[layer];
+  }
+  num = den = 0.0;
+  for (std::size_t l = 0; l < layerPressure.size(); ++l)
+  {
+    if (layerCount[l] > 0)
+    {
+      const double p = layerPressure[l] / layerCount[l], ref = layerReference[l] / layerCount[l];
+      num += (p - ref) * (p - ref);
+      den += ref * ref;
+    }
+  }
+  r.profileError = std::sqrt(num / den);
   return r;
 }
 
@@ -194,6 +221,9 @@ int main(int argc, char** argv)
   }
   const std::string dir = argv[1];
   bool quick = false;
+  std::string scene = "all";
+  std::vector<PressureSolver> solvers = { PressureSolver::WCSPH, PressureSolver::DFSPH };
+  std::vector<int> resolutions;
   for (int k = 2; k < argc; ++k)
   {
     const std::string option = argv[k];
@@ -205,35 +235,66 @@ int main(int argc, char** argv)
     {
       gViscosity = std::stof(argv[++k]);
     }
+    else if (option == "--tolerance" && k + 1 < argc)
+    {
+      gDensityTolerance = std::stof(argv[++k]);
+    }
+    else if (option == "--scene" && k + 1 < argc)
+    {
+      scene = argv[++k];
+    }
+    else if (option == "--solver" && k + 1 < argc)
+    {
+      const std::string v = argv[++k];
+      solvers = { v == "DFSPH" ? PressureSolver::DFSPH : PressureSolver::WCSPH };
+    }
+    else if (option == "--resolutions" && k + 1 < argc)
+    {
+      resolutions.clear();
+      for (const char* c = argv[++k]; *c;)
+      {
+        char* end = nullptr;
+        resolutions.push_back(static_cast<int>(std::strtol(c, &end, 10)));
+        c = *end == ',' ? end + 1 : end;
+      }
+    }
   }
-  const std::vector<int> hydrostaticResolutions = quick ? std::vector<int>{ 10 } : std::vector<int>{ 10, 20, 40 };
-  const std::vector<int> damResolutions = quick ? std::vector<int>{ 10 } : std::vector<int>{ 10, 20, 40 };
+  if (resolutions.empty())
+  {
+    resolutions = quick ? std::vector<int>{ 10 } : std::vector<int>{ 10, 20, 40 };
+  }
 
+  if (scene == "all" || scene == "hydrostatic")
+  {
   std::ofstream hydro(dir + "/hydrostatic.csv");
   std::ofstream profile(dir + "/hydrostatic_profile.csv");
-  hydro << "solver,particles_across,particles,steps,wall_s,relative_l2_error,mean_compression\n";
+  hydro << "solver,particles_across,particles,steps,wall_s,relative_l2_error,profile_relative_l2_error,mean_compression\n";
   profile << "solver,particles_across,z,pressure,reference\n";
-  for (PressureSolver solver : { PressureSolver::WCSPH, PressureSolver::DFSPH })
+  for (PressureSolver solver : solvers)
   {
-    for (int across : hydrostaticResolutions)
+    for (int across : resolutions)
     {
       const Hydrostatic r = hydrostatic(solver, across, &profile);
       hydro << name(solver) << "," << across << "," << r.particles << "," << r.steps << "," << r.wall << "," << r.error
-            << "," << r.compression << "\n";
-      std::printf("hydrostatic %s %3d across: %6lld particles %6lld steps %8.2f s  L2 error %.4f  compression %.5f\n",
-        name(solver), across, r.particles, r.steps, r.wall, r.error, r.compression);
+            << "," << r.profileError << "," << r.compression << "\n";
+      std::printf("hydrostatic %s %3d across: %6lld particles %6lld steps %8.2f s  L2 error per particle %.4f, "
+                  "of the layer profile %.4f  compression %.5f\n",
+        name(solver), across, r.particles, r.steps, r.wall, r.error, r.profileError, r.compression);
       std::fflush(stdout);
     }
   }
 
+  }
+  if (scene == "all" || scene == "dambreak")
+  {
   std::ofstream curve(dir + "/dambreak_front.csv");
   std::ofstream summary(dir + "/dambreak.csv");
   curve << "solver,particles_across,T,Z\n";
   summary << "solver,particles_across,particles,steps,wall_s,mean_relative_error,max_relative_error,"
              "mean_compression,max_compression,density_iterations,divergence_iterations\n";
-  for (PressureSolver solver : { PressureSolver::WCSPH, PressureSolver::DFSPH })
+  for (PressureSolver solver : solvers)
   {
-    for (int across : damResolutions)
+    for (int across : resolutions)
     {
       const DamBreak r = damBreak(solver, across, 3.0, curve);
       summary << name(solver) << "," << across << "," << r.particles << "," << r.steps << "," << r.wall << ","
@@ -245,6 +306,7 @@ int main(int argc, char** argv)
         r.maxCompression, r.densityIterations, r.divergenceIterations);
       std::fflush(stdout);
     }
+  }
   }
   return 0;
 }

@@ -35,7 +35,7 @@ struct SPHParameters
 
   // Time stepping. With adaptiveTimeStep the step is the smallest of the CFL condition
   // lambda h / (c + v_max) (c = sqrt(k) for WCSPH, 0 for DFSPH), the viscous condition
-  // 0.125 h^2 rho0 / mu, the force condition 0.25 sqrt(h / a_max), the capillary condition
+  // h^2 rho0 / (40 mu), the force condition 0.25 sqrt(h / a_max), the capillary condition
   // sqrt(rho0 h^3 / (2 pi sigma)), and maxTimeStep; else it is timeStep.
   bool adaptiveTimeStep = true;
   float cflNumber = 0.2f;         // lambda, relative to the support radius h (= 0.4 particle spacings)
@@ -68,4 +68,14 @@ struct SPHParameters
 /// few percent for h = 2 spacings, which would make a block at rest expand or shrink at t = 0).
 float latticeParticleMass(float spacing, float smoothingLength, float restDensity,
   DensityKernel kernel = DensityKernel::Poly6);
+
+/// The spacing of the cubic lattice on which particles of this mass have rest density with the
+/// given kernel (the inverse of latticeParticleMass).
+float latticeSpacingForMass(float particleMass, float smoothingLength, float restDensity, DensityKernel kernel);
+
+/// 1 / C, where C = -sum_j V (z_i - z_j) dW/dz over a rest lattice (V the particle volume) is what
+/// the discrete SPH gradient returns for the linear field z; exactly 1 for a continuous kernel, but
+/// 1.02 for the cubic spline at h = 2 spacings. Scaling pressure forces by it makes the discrete
+/// gradient of a linear pressure (hydrostatics) exact on the rest lattice.
+float latticeGradientCorrection(float spacing, float smoothingLength, DensityKernel kernel);
 } // namespace parafluid::sph

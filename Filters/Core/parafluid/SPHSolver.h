@@ -60,6 +60,12 @@ public:
   /// Neighbours of each particle within h (itself excluded), in state order. A separate pass:
   /// computed only when called.
   std::vector<std::uint32_t> neighbourCounts() const;
+  /// The pressure field at each particle, in state order [Pa]: the SPH (Shepard) interpolation of
+  /// the particles' pressures over each neighbourhood. It drops the layer-by-layer alternating
+  /// pattern that a collocated SPH pressure gradient cannot see (it exerts no force, so neither
+  /// solver removes it) and that makes single-particle pressures noisy. A separate pass: computed
+  /// only when called.
+  std::vector<float> smoothedPressure() const;
   /// Kinetic energy [J].
   double kineticEnergy() const;
   /// Bytes held per particle by the state, scratch and the neighbour grid.
@@ -104,6 +110,7 @@ private:
   // stiffness of both solves (the warm start of the next step; p = rho k).
   std::vector<float> Factor, DensityRate, Stiffness, DensityStiffness, DivergenceStiffness;
   std::vector<std::uint16_t> NeighbourCount; // DFSPH: neighbours incl. images, for the surface test
+  float GradientCorrection = 1.0f; // DFSPH pressure forces, see latticeGradientCorrection
   std::int64_t Steps = 0;
   double Time = 0.0;
   StepStatistics Last;
