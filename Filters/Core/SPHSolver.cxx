@@ -123,13 +123,22 @@ std::int64_t SPHSolver::advance(double duration, const std::function<bool(double
 
 double SPHSolver::step(double maxStep)
 {
-  if (this->Parameters.pressureSolver == PressureSolver::DFSPH)
+  try
   {
-    this->stepDFSPH(maxStep);
+    if (this->Parameters.pressureSolver == PressureSolver::DFSPH)
+    {
+      this->stepDFSPH(maxStep);
+    }
+    else
+    {
+      this->stepWCSPH(this->chooseTimeStep(maxStep));
+    }
   }
-  else
+  catch (const std::invalid_argument&)
   {
-    this->stepWCSPH(this->chooseTimeStep(maxStep));
+    // The neighbour grid refuses non-finite positions: the step blew up before the check below.
+    throw std::runtime_error("SPH became unstable at step " + std::to_string(this->Steps) +
+      " (non-finite positions): turn on AdaptiveTimeStep or reduce TimeStep or GasStiffness, or raise Viscosity");
   }
   ++this->Steps;
   this->checkFinite();

@@ -225,14 +225,14 @@ bool TriangleBoundary::cellRange(const float lo[3], const float hi[3], int first
   return true;
 }
 
-bool TriangleBoundary::firstCrossing(const float a[3], const float b[3], Crossing& crossing) const
+bool TriangleBoundary::firstCrossing(const float a[3], const float b[3], Crossing& crossing, float skin) const
 {
   if (this->Triangles.empty())
   {
     return false;
   }
   // A crossing point lies exactly on a triangle; widen the box a little for points on cell borders.
-  const float pad = 1e-6f * this->CellSize;
+  const float pad = 1e-6f * this->CellSize + skin;
   const float lo[3] = { std::min(a[0], b[0]) - pad, std::min(a[1], b[1]) - pad, std::min(a[2], b[2]) - pad };
   const float hi[3] = { std::max(a[0], b[0]) + pad, std::max(a[1], b[1]) + pad, std::max(a[2], b[2]) + pad };
   int first[3], last[3];
@@ -264,22 +264,36 @@ bool TriangleBoundary::firstCrossing(const float a[3], const float b[3], Crossin
           subtract(b, p0, db);
           const double sa = dot(n, da);
           const double sb = dot(n, db);
-          // Strictly from one side to the other: a point on the plane has no side to keep.
-          if (!(sa * sb < 0.0))
+          // A point on the plane has no side to keep.
+          if (sa == 0.0)
           {
             continue;
           }
-          const double s = sa / (sa - sb);
+          const double side = sa > 0.0 ? 1.0 : -1.0;
+          const double startDistance = side * sa, endDistance = side * sb;
+          if (endDistance >= skin)
+          {
+            continue;
+          }
+          const double s = startDistance > skin ? (startDistance - skin) / (startDistance - endDistance) : 0.0;
           if (s >= bestT)
           {
             continue;
           }
-          // Barycentric coordinates of the crossing point q = a + s (b - a).
+          // Barycentric coordinates of q = a + s (b - a) projected onto the triangle's plane.
           double q[3], e1[3], e2[3], w[3];
           for (int d = 0; d < 3; ++d)
           {
             q[d] = a[d] + s * (static_cast<double>(b[d]) - a[d]);
-            w[d] = q[d] - p0[d];
+          }
+          double height = 0.0;
+          for (int d = 0; d < 3; ++d)
+          {
+            height += n[d] * (q[d] - p0[d]);
+          }
+          for (int d = 0; d < 3; ++d)
+          {
+            w[d] = q[d] - height * n[d] - p0[d];
           }
           subtract(p1, p0, e1);
           subtract(p2, p0, e2);
@@ -317,7 +331,7 @@ bool TriangleBoundary::resolve(const float from[3], float to[3], float velocity[
   for (int bounce = 0; bounce <= maxBounces; ++bounce)
   {
     Crossing c;
-    if (!this->firstCrossing(start, to, c))
+    if (!this->firstCrossing(start, to, c, 0.5f * offset))
     {
       return hit;
     }
@@ -335,12 +349,18 @@ bool TriangleBoundary::resolve(const float from[3], float to[3], float velocity[
     {
       point[d] = start[d] + c.t * (to[d] - start[d]);
     }
-    const float depth = -((to[0] - point[0]) * n[0] + (to[1] - point[1]) * n[1] + (to[2] - point[2]) * n[2]);
-    const float push = (1.0f + restitution) * std::max(depth, 0.0f) + offset;
+    // Distances from the plane itself (point lies on the skin, up to offset / 2 above the plane).
+    const float* p0 = &this->Points[3 * this->Triangles[3 * c.triangle]];
+    const float endHeight = (to[0] - p0[0]) * n[0] + (to[1] - p0[1]) * n[1] + (to[2] - p0[2]) * n[2];
+    const float pointHeight = (point[0] - p0[0]) * n[0] + (point[1] - p0[1]) * n[1] + (point[2] - p0[2]) * n[2];
+    // Overshoot below the plane is reflected (damped); the end point is left at least offset above.
+    const float reflected = endHeight < 0.0f ? -restitution * endHeight : endHeight;
+    const float push = std::max(reflected, offset) - endHeight;
+    const float lift = std::max(offset - pointHeight, 0.0f);
     for (int d = 0; d < 3; ++d)
     {
       to[d] += push * n[d];
-      start[d] = point[d] + offset * n[d];
+      start[d] = point[d] + lift * n[d];
     }
     // Velocity: reflect about the smooth (interpolated) normal, oriented to the fluid side.
     float smooth[3] = { 0, 0, 0 };

@@ -336,9 +336,11 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
   {
     acceleration = vector3("acceleration");
   }
+  std::vector<float> pressureField;
   if (this->OutputPressure)
   {
     pressure = scalar("pressure");
+    pressureField = cache.Solver->smoothedPressure();
   }
   std::vector<std::uint32_t> neighbours;
   vtkNew<vtkIntArray> neighbourCount;
@@ -370,7 +372,7 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
     }
     if (pressure)
     {
-      pressure[i] = s.pressure[k];
+      pressure[i] = pressureField[k];
     }
     if (!neighbours.empty())
     {

@@ -26,12 +26,16 @@ public:
     float barycentric[3] = { 0, 0, 0 };
     float side = 1.0f;        // +1 when the segment starts on the side the face normal points to
   };
-  /// The first triangle the segment a -> b crosses (strictly from one side to the other).
-  bool firstCrossing(const float a[3], const float b[3], Crossing& crossing) const;
+  /// The first triangle the segment a -> b crosses from one side to the other, or (skin > 0) ends
+  /// closer than `skin` to from a's side; t is where it enters that skin. A start point exactly on
+  /// a triangle's plane has no side and crosses nothing.
+  bool firstCrossing(const float a[3], const float b[3], Crossing& crossing, float skin = 0.0f) const;
 
   /// Keeps a particle moving from `from` to `to` on from's side of every triangle: on a crossing
   /// `to` becomes the damped reflection of the overshoot (at least `offset` metres off the plane) and
-  /// `velocity` is reflected. Returns true when the particle hit the mesh.
+  /// `velocity` is reflected. A move that would end within offset / 2 of a triangle counts as a hit
+  /// too, so a particle never comes to rest on a plane, where it would have no side. Returns true
+  /// when the particle hit the mesh.
   bool resolve(const float from[3], float to[3], float velocity[3], float damping, float offset) const;
 
   std::size_t triangleCount() const { return this->Triangles.size() / 3; }
