@@ -347,10 +347,21 @@ void SPHSolver::drift(float dt)
     // point back towards the start, except by the small offset, which the clamp takes care of.
     if (mesh && mesh->resolve(from, to, v, damping, offset))
     {
+      float clamped[3];
+      bool moved = false;
       for (int a = 0; a < 3; ++a)
       {
-        to[a] = std::clamp(to[a], b[2 * a], b[2 * a + 1]);
+        clamped[a] = std::clamp(to[a], b[2 * a], b[2 * a + 1]);
+        moved = moved || clamped[a] != to[a];
       }
+      // Clamping into the box can push a particle back across the mesh where the mesh leaves the
+      // box (a sphere cut by a wall); then it stays where it was, which is on the right side.
+      parafluid::TriangleBoundary::Crossing crossing;
+      if (moved && mesh->firstCrossing(from, clamped, crossing))
+      {
+        std::copy(from, from + 3, clamped);
+      }
+      std::copy(clamped, clamped + 3, to);
     }
     for (int a = 0; a < 3; ++a)
     {

@@ -330,8 +330,9 @@ bool TriangleBoundary::resolve(const float from[3], float to[3], float velocity[
   constexpr int maxBounces = 4;
   for (int bounce = 0; bounce <= maxBounces; ++bounce)
   {
+    // A true crossing first; failing that, an end point that would come to rest within the skin.
     Crossing c;
-    if (!this->firstCrossing(start, to, c, 0.5f * offset))
+    if (!this->firstCrossing(start, to, c) && !this->firstCrossing(start, to, c, 0.5f * offset))
     {
       return hit;
     }

@@ -1,0 +1,42 @@
+"""SPH Step with a Boundary surface and the DFSPH solver, through real ParaView pipelines: water
+poured on a sphere never gets inside it; optional arrays appear only when asked; a Boundary without
+polygons is refused with a clear message."""
+import numpy as np
+from paraview.simple import *
+import pftest
+
+pftest.load(globals())
+centre, radius = np.array([0.2, 0.05, 0.12]), 0.08
+ball = Sphere(Center=list(centre), Radius=radius, ThetaResolution=32, PhiResolution=32)
+block = ParticleBlock(Spacing=0.02, BlockBounds=[0.1, 0.3, 0, 0.1, 0.24, 0.4], DomainBounds=[0, 0.4, 0, 0.1, 0, 0.5])
+sph = SPHStep(Input=block, Boundary=ball, PressureSolver="DFSPH", OutputInterval=0.05, NumberOfOutputs=6,
+              OutputPressure=0, OutputAcceleration=1, OutputNeighbourCount=1)
+
+# The triangulated sphere lies inside the true one; its flat facets come no closer to the centre
+# than R cos(pi/32) cos(pi/62) > 0.99 R.
+closest = 1.0
+for t in sph.TimestepValues[1:]:
+    data = pftest.fetch(sph, t)
+    distance = np.linalg.norm(pftest.points(data) - centre, axis=1)
+    closest = min(closest, distance.min())
+    pftest.check(np.all(np.isfinite(pftest.points(data))), "non-finite positions at t = %g" % t)
+pftest.check(closest > 0.99 * radius, "a particle got inside the sphere: %.4f m from its centre (radius %.2f)" % (closest, radius))
+final = pftest.points(data)
+pftest.check(final[:, 2].min() < 0.1, "water should have run down past the sphere (lowest z %.3f)" % final[:, 2].min())
+
+names = pftest.array_names(data)
+pftest.check("pressure" not in names, "pressure was switched off but is in the output: %s" % names)
+pftest.check("acceleration" in names and "neighbour_count" in names, "optional arrays missing: %s" % names)
+counts = pftest.point_array(data, "neighbour_count")
+pftest.check(10 <= np.median(counts) <= 40, "median neighbour count %g is implausible at h = 2 spacings" % np.median(counts))
+
+sph.UpdatePropertyInformation()
+error = sph.GetPropertyValue("MeanDensityError")
+pftest.check(0.0 <= error < 0.005, "DFSPH mean density error %g" % error)
+
+# A surface without polygons cannot be a boundary.
+line = SPHStep(Input=block, Boundary=Line(), NumberOfOutputs=1)
+catcher = pftest.ErrorCatcher(line)
+line.UpdatePipeline(line.TimestepValues[-1])
+pftest.check("polygons" in catcher.text(), "Boundary without polygons: %r" % catcher.text())
+print("sph boundary: ok")
