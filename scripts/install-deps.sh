@@ -15,7 +15,7 @@ packages=(
   libboost-dev liblz4-dev liblzma-dev libtiff-dev libexpat1-dev libjpeg-dev libpng-dev
   libxml2-dev libopenmpi-dev python3-dev python3-mpi4py libx11-dev libxt-dev libgl-dev
   # HDF5 in the flavour ParaView's VTK links (one libhdf5 per process) and Python access for tests
-  libhdf5-openmpi-dev python3-h5py-mpi python3-numpy
+  libhdf5-openmpi-dev python3-h5py-mpi python3-numpy python3-matplotlib
   # rendering without a screen, MPI launcher
   xvfb xauth openmpi-bin
 )
