@@ -241,7 +241,10 @@ bool TriangleBoundary::firstCrossing(const float a[3], const float b[3], Crossin
     return false;
   }
   // Barycentric tolerance, so a segment through a shared edge is caught by one of the two triangles.
-  constexpr double tolerance = 1e-6;
+  // Generous (1e-4 of the triangle), so that at a convex edge the face the segment really goes
+  // through is found even when rounding puts the point a hair beyond it; otherwise the next face
+  // could be met from behind and the particle pushed into the solid.
+  constexpr double tolerance = 1e-4;
   bool found = false;
   double bestT = 2.0;
   for (int k = first[2]; k <= last[2]; ++k)
