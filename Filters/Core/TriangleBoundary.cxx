@@ -119,15 +119,9 @@ void TriangleBoundary::buildGrid()
   for (std::size_t t = 0; t < m; ++t)
   {
     float lo[3], hi[3];
+    this->triangleBox(t, lo, hi);
     for (int a = 0; a < 3; ++a)
     {
-      lo[a] = hi[a] = this->Points[3 * this->Triangles[3 * t] + a];
-      for (int k = 1; k < 3; ++k)
-      {
-        const float c = this->Points[3 * this->Triangles[3 * t + k] + a];
-        lo[a] = std::min(lo[a], c);
-        hi[a] = std::max(hi[a], c);
-      }
       this->Bounds[2 * a] = std::min(this->Bounds[2 * a], lo[a]);
       this->Bounds[2 * a + 1] = std::max(this->Bounds[2 * a + 1], hi[a]);
     }
@@ -174,16 +168,7 @@ void TriangleBoundary::buildGrid()
     for (std::size_t t = 0; t < m; ++t)
     {
       float lo[3], hi[3];
-      for (int a = 0; a < 3; ++a)
-      {
-        lo[a] = hi[a] = this->Points[3 * this->Triangles[3 * t] + a];
-        for (int k = 1; k < 3; ++k)
-        {
-          const float c = this->Points[3 * this->Triangles[3 * t + k] + a];
-          lo[a] = std::min(lo[a], c);
-          hi[a] = std::max(hi[a], c);
-        }
-      }
+      this->triangleBox(t, lo, hi);
       int first[3], last[3];
       this->cellRange(lo, hi, first, last);
       for (int k = first[2]; k <= last[2]; ++k)
@@ -205,6 +190,20 @@ void TriangleBoundary::buildGrid()
           }
         }
       }
+    }
+  }
+}
+
+void TriangleBoundary::triangleBox(std::size_t t, float lo[3], float hi[3]) const
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    lo[a] = hi[a] = this->Points[3 * this->Triangles[3 * t] + a];
+    for (int k = 1; k < 3; ++k)
+    {
+      const float c = this->Points[3 * this->Triangles[3 * t + k] + a];
+      lo[a] = std::min(lo[a], c);
+      hi[a] = std::max(hi[a], c);
     }
   }
 }

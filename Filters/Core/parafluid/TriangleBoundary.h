@@ -45,6 +45,7 @@ public:
 
 private:
   void buildGrid();
+  void triangleBox(std::size_t t, float lo[3], float hi[3]) const;
   bool cellRange(const float lo[3], const float hi[3], int first[3], int last[3]) const;
 
   std::vector<float> Points;
