@@ -93,8 +93,12 @@ std::int64_t SPHSolver::advance(double duration, const std::function<bool(double
   {
     throw std::invalid_argument("SPH: the time to advance must be a non-negative number of seconds");
   }
-  const double end = this->Time + duration;
+  const double begin = this->Time, end = this->Time + duration;
   std::int64_t taken = 0;
+  ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  const int threads = threadCount(this->Parameters);
+  this->PressureImpulse.assign(s.size(), 0.0f);
   // A step this much shorter than the longest allowed one means forces have blown up; stop rather
   // than crawl forever.
   const double smallest = 1e-7 * std::min(this->Parameters.maxTimeStep, this->Parameters.timeStep);
@@ -103,6 +107,12 @@ std::int64_t SPHSolver::advance(double duration, const std::function<bool(double
     const double remaining = end - this->Time;
     const double dt = this->step(remaining);
     ++taken;
+    const auto weight = static_cast<float>(dt);
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      this->PressureImpulse[i] += weight * s.pressure[i];
+    }
     if (dt >= remaining)
     {
       this->Time = end; // exactly, whatever the rounding of the sum
@@ -118,6 +128,17 @@ std::int64_t SPHSolver::advance(double duration, const std::function<bool(double
       break;
     }
   }
+  const double elapsed = this->Time - begin;
+  if (elapsed > 0.0)
+  {
+    const auto scale = static_cast<float>(1.0 / elapsed);
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      s.pressure[i] = scale * this->PressureImpulse[i];
+    }
+  }
+  this->PressureImpulse.clear(); // step() on its own leaves each step's pressure
   return taken;
 }
 
@@ -267,6 +288,10 @@ void SPHSolver::sortByCell()
   for (auto* a : { &s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz })
   {
     permute(*a, this->ScratchFloat, order, threads);
+  }
+  if (this->PressureImpulse.size() == s.size())
+  {
+    permute(this->PressureImpulse, this->ScratchFloat, order, threads);
   }
   if (this->Parameters.pressureSolver == PressureSolver::DFSPH)
   {

@@ -325,6 +325,34 @@ bool TriangleBoundary::firstCrossing(const float a[3], const float b[3], Crossin
 
 bool TriangleBoundary::resolve(const float from[3], float to[3], float velocity[3], float damping, float offset) const
 {
+  if (!this->bounce(from, to, velocity, damping, offset))
+  {
+    return false;
+  }
+  // The bounces decide sides one plane at a time. Just past a convex edge, rounding can let the
+  // plane of the next face be met "from behind" and the particle be pushed into the solid. The net
+  // move must cross nothing: if it does, the particle stays where it was (on the fluid side) and
+  // its velocity is reflected off the face that the net move would have gone through.
+  Crossing net;
+  if (this->firstCrossing(from, to, net))
+  {
+    std::copy(from, from + 3, to);
+    const float* face = this->faceNormal(net.triangle);
+    const float n[3] = { net.side * face[0], net.side * face[1], net.side * face[2] };
+    const float vn = velocity[0] * n[0] + velocity[1] * n[1] + velocity[2] * n[2];
+    if (vn < 0.0f)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        velocity[d] -= (2.0f - damping) * vn * n[d];
+      }
+    }
+  }
+  return true;
+}
+
+bool TriangleBoundary::bounce(const float from[3], float to[3], float velocity[3], float damping, float offset) const
+{
   const float restitution = 1.0f - damping;
   float start[3] = { from[0], from[1], from[2] };
   bool hit = false;

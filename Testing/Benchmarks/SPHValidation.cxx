@@ -5,6 +5,7 @@
 // Writes CSV files into the directory given as first argument; plot_validation.py draws them.
 // Usage: ParaFluidSPHValidation <output-directory> [--quick] [--scene all|hydrostatic|dambreak]
 //        [--solver WCSPH|DFSPH] [--resolutions 10,20,40] [--viscosity 3.5] [--tolerance 0.001]
+//        [--cfl 0.2] [--max-dt 0.005]
 #include "parafluid/ParticleLattice.h"
 #include "parafluid/SPHParameters.h"
 #include "parafluid/SPHSolver.h"
@@ -36,6 +37,8 @@ const char* name(PressureSolver s)
 /// which makes the flow two-dimensional as in the experiments.
 float gViscosity = 3.5f;        // [Pa s], --viscosity; Müller's water value, the filter's default
 float gDensityTolerance = 0.001f; // --tolerance; the filter's default (0.1 %)
+float gCFLNumber = SPHParameters().cflNumber;     // --cfl; smaller for a time-step convergence study
+float gMaxTimeStep = SPHParameters().maxTimeStep; // --max-dt [s]
 
 SPHParameters water(PressureSolver solver, float spacing, const std::array<float, 6>& domain)
 {
@@ -48,6 +51,8 @@ SPHParameters water(PressureSolver solver, float spacing, const std::array<float
   p.gravity = { 0.0f, 0.0f, -kGravity };
   p.domainBounds = domain;
   p.densityTolerance = gDensityTolerance;
+  p.cflNumber = gCFLNumber;
+  p.maxTimeStep = gMaxTimeStep;
   p.particleMass = latticeParticleMass(spacing, p.smoothingLength, kRho0, p.densityKernel());
   return p;
 }
@@ -85,7 +90,7 @@ Hydrostatic hydrostatic(PressureSolver solver, int across, std::ofstream* profil
   r.steps += s.advance(0.4);
   const std::size_t n = s.state().size();
   std::vector<double> sum(n, 0.0); // by id: the state is reordered every step
-  const int samples = 20;
+  const int samples = 40;
   for (int k = 0; k < samples; ++k)
   {
     r.steps += s.advance(0.005);
@@ -234,6 +239,14 @@ int main(int argc, char** argv)
     else if (option == "--viscosity" && k + 1 < argc)
     {
       gViscosity = std::stof(argv[++k]);
+    }
+    else if (option == "--cfl" && k + 1 < argc)
+    {
+      gCFLNumber = std::stof(argv[++k]);
+    }
+    else if (option == "--max-dt" && k + 1 < argc)
+    {
+      gMaxTimeStep = std::stof(argv[++k]);
     }
     else if (option == "--tolerance" && k + 1 < argc)
     {

@@ -143,6 +143,61 @@ TEST(TriangleBoundary, ReflectsVelocityAboutTheInterpolatedVertexNormal)
   EXPECT_NEAR(v[2], 0.0f, 1e-5f);
 }
 
+/// The closed surface of the box [lo, hi]^3, two triangles a face, normals pointing out.
+TriangleBoundary closedBox(float lo, float hi)
+{
+  std::vector<float> points;
+  for (int k = 0; k < 8; ++k)
+  {
+    points.insert(points.end(), { (k & 1) ? hi : lo, (k & 2) ? hi : lo, (k & 4) ? hi : lo });
+  }
+  // Each face as a quad (a, b, c, d) counter-clockwise seen from outside.
+  const std::uint32_t quads[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
+    { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  std::vector<std::uint32_t> triangles;
+  for (const auto& q : quads)
+  {
+    triangles.insert(triangles.end(), { q[0], q[1], q[2], q[0], q[2], q[3] });
+  }
+  return TriangleBoundary(std::move(points), std::move(triangles));
+}
+
+TEST(TriangleBoundary, ParticlesCreepingOverSharpEdgesNeverGetIntoAClosedBox)
+{
+  // A particle that climbs a face just below a 90 degree edge and steps up and over it: the move
+  // passes within rounding of the edge, where the plane of the next face can be met "from behind".
+  // Step lengths from 1e-3 h to h, over all twelve edges (by permuting and mirroring axes).
+  const float lo = 0.3f, hi = 0.5f, h = 0.02f, offset = 1e-3f * h;
+  const TriangleBoundary box = closedBox(lo, hi);
+  ASSERT_LT(box.faceNormal(0)[2], 0.0f) << "normals point out of the box";
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  const int permutations[6][3] = { { 0, 1, 2 }, { 0, 2, 1 }, { 1, 0, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 2, 1, 0 } };
+  long hits = 0;
+  for (int k = 0; k < 400000; ++k)
+  {
+    // Canonical frame: on the x = hi face, just under the top edge z = hi, moving up and in.
+    const float scale = std::pow(10.0f, -3.0f * u(random));
+    const float p[3] = { hi + offset * (0.4f + 2.0f * u(random)), lo + (hi - lo) * u(random), hi - h * scale * u(random) };
+    const float d[3] = { -2.0f * h * scale * u(random), h * scale * (u(random) - 0.5f), 2.0f * h * scale * u(random) };
+    const int* axes = permutations[k % 6];
+    const int flips = (k / 6) % 8;
+    float from[3], to[3], v[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const bool flip = (flips >> a) & 1;
+      from[axes[a]] = flip ? lo + hi - p[a] : p[a];
+      v[axes[a]] = flip ? -d[a] : d[a];
+      to[axes[a]] = from[axes[a]] + v[axes[a]];
+    }
+    hits += box.resolve(from, to, v, 0.1f, offset) ? 1 : 0;
+    const bool inside = to[0] > lo && to[0] < hi && to[1] > lo && to[1] < hi && to[2] > lo && to[2] < hi;
+    ASSERT_FALSE(inside) << "move " << k << " got into the box at (" << to[0] << ", " << to[1] << ", " << to[2]
+                         << ") from (" << from[0] << ", " << from[1] << ", " << from[2] << ")";
+  }
+  EXPECT_GT(hits, 100000) << "most moves should run into the box";
+}
+
 TEST(TriangleBoundary, RejectsBadMeshes)
 {
   EXPECT_THROW(TriangleBoundary({ 0, 0, 0, 1, 0, 0, 0, 1, 0 }, { 0, 1, 3 }), std::invalid_argument);

@@ -35,9 +35,12 @@ public:
   /// Advances exactly `duration` seconds in as many steps as the time-step control needs (the last
   /// steps are shortened to land on the end time). `progress(fraction)` is called every few steps
   /// and stops the advance when it returns false. Returns the number of steps taken. Throws
-  /// std::runtime_error when the simulation becomes unstable.
+  /// std::runtime_error when the simulation becomes unstable. Afterwards each particle's pressure
+  /// is its time-weighted mean over the steps taken: DFSPH's per-step pressure is an impulse that
+  /// also removes the last step's density error in one step (so it swings from step to step, the
+  /// more the shorter the step), and WCSPH's rings acoustically; the mean is what moved the fluid.
   std::int64_t advance(double duration, const std::function<bool(double)>& progress = {});
-  /// One step of at most maxStep seconds; returns the step taken [s].
+  /// One step of at most maxStep seconds; returns the step taken [s]. Pressure is that step's.
   double step(double maxStep = 1e30);
   /// The step the time-step control would take now [s] (WCSPH; DFSPH adds non-pressure forces first).
   double proposedTimeStep() const;
@@ -110,6 +113,7 @@ private:
   // stiffness of both solves (the warm start of the next step; p = rho k).
   std::vector<float> Factor, DensityRate, Stiffness, DensityStiffness, DivergenceStiffness;
   std::vector<std::uint16_t> NeighbourCount; // DFSPH: neighbours incl. images, for the surface test
+  std::vector<float> PressureImpulse; // sum of p dt over the steps of advance() [Pa s]
   float GradientCorrection = 1.0f; // DFSPH pressure forces, see latticeGradientCorrection
   std::int64_t Steps = 0;
   double Time = 0.0;

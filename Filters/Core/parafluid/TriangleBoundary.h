@@ -44,6 +44,8 @@ public:
   const float* faceNormal(std::uint32_t t) const { return &this->FaceNormals[3 * t]; }
 
 private:
+  /// The bounce sequence of resolve(), without its final check of the net move.
+  bool bounce(const float from[3], float to[3], float velocity[3], float damping, float offset) const;
   void buildGrid();
   void triangleBox(std::size_t t, float lo[3], float hi[3]) const;
   bool cellRange(const float lo[3], const float hi[3], int first[3], int last[3]) const;
