@@ -1,0 +1,268 @@
+#include "vtkPFGerstnerOcean.h"
+
+#include "vtkPFBathymetry.h"
+
+#include "parafluid/Bathymetry.h"
+#include "parafluid/GerstnerOcean.h"
+
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <memory>
+#include <cmath>
+#include <string>
+
+vtkStandardNewMacro(vtkPFGerstnerOcean);
+
+vtkPFGerstnerOcean::vtkPFGerstnerOcean()
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(1);
+}
+
+void vtkPFGerstnerOcean::SetWave(
+  int index, double amplitude, double wavelength, double direction, double steepness, double phase)
+{
+  if (index < 0)
+  {
+    return;
+  }
+  const std::size_t needed = 5 * (static_cast<std::size_t>(index) + 1);
+  if (this->Waves.size() < needed)
+  {
+    this->Waves.resize(needed, 0.0);
+  }
+  const double values[5] = { amplitude, wavelength, direction, steepness, phase };
+  if (!std::equal(values, values + 5, this->Waves.begin() + 5 * index))
+  {
+    std::copy(values, values + 5, this->Waves.begin() + 5 * index);
+    this->Modified();
+  }
+}
+
+void vtkPFGerstnerOcean::RemoveAllWaves()
+{
+  if (!this->Waves.empty())
+  {
+    this->Waves.clear();
+    this->Modified();
+  }
+}
+
+int vtkPFGerstnerOcean::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+int vtkPFGerstnerOcean::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const double duration = std::max(this->Duration, 0.0);
+  const double rate = this->FrameRate > 0.0 ? this->FrameRate : 30.0;
+  const auto frames = static_cast<int>(std::min(std::floor(duration * rate + 1e-9), 100000.0));
+  std::vector<double> times;
+  for (int k = 0; k <= frames; ++k)
+  {
+    times.push_back(k / rate);
+  }
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));
+  const double range[2] = { 0.0, times.back() };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  return 1;
+}
+
+int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  using namespace parafluid::ocean;
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkPolyData* output = vtkPolyData::GetData(outInfo);
+  const double time = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+    : 0.0;
+  const int nx = this->Resolution[0], ny = this->Resolution[1];
+  if (nx < 2 || ny < 2 || static_cast<double>(nx) * ny > 1.0e8)
+  {
+    vtkErrorMacro("Resolution must be at least 2 x 2 and at most 1e8 points, got " << nx << " x " << ny);
+    return 0;
+  }
+  if (!(this->Size[0] > 0.0) || !(this->Size[1] > 0.0) || !std::isfinite(this->Origin[0] + this->Origin[1]))
+  {
+    vtkErrorMacro("Size must be positive and Origin finite");
+    return 0;
+  }
+
+  OceanParameters p;
+  if (this->SeaState == CUSTOM)
+  {
+    for (std::size_t w = 0; w + 4 < this->Waves.size(); w += 5)
+    {
+      GerstnerWave wave;
+      wave.amplitude = this->Waves[w];
+      wave.wavelength = this->Waves[w + 1];
+      wave.direction = this->Waves[w + 2];
+      wave.steepness = this->Waves[w + 3];
+      wave.phase = this->Waves[w + 4];
+      p.waves.push_back(wave);
+    }
+    if (p.waves.empty())
+    {
+      vtkWarningMacro("Sea State is Custom but the wave list is empty: the sea is flat");
+    }
+  }
+  else
+  {
+    using parafluid::ocean::SeaState;
+    const SeaState state = this->SeaState == CALM ? SeaState::Calm
+      : this->SeaState == SWELL                   ? SeaState::Swell
+                                                  : SeaState::Storm;
+    p.waves = seaStatePreset(state, this->WindDirection);
+  }
+  p.depth = this->WaterDepth > 0.0 ? this->WaterDepth : kDeepWater;
+  p.maxSteepness = this->MaxSteepness;
+  p.windDirection = this->WindDirection;
+  p.windLean = this->WindLean;
+  p.breakingDepthRatio = this->BreakingDepthRatio;
+  p.breakingStretch = this->BreakingStretch;
+  p.breakingLean = this->BreakingLean;
+  p.breakingShift = this->BreakingShift;
+
+  std::shared_ptr<Bathymetry> floor;
+  vtkDataObject* floorData = this->GetNumberOfInputConnections(0) > 0 ? vtkDataObject::GetData(inputVector[0], 0) : nullptr;
+  if (floorData)
+  {
+    std::string error;
+    floor = vtkPFBathymetryFrom(floorData, this->SeaLevel, this->BathymetryResolution, error);
+    if (!floor)
+    {
+      vtkErrorMacro(<< error);
+      return 0;
+    }
+  }
+  const double region[4] = { this->Origin[0], this->Origin[0] + this->Size[0], this->Origin[1],
+    this->Origin[1] + this->Size[1] };
+  std::unique_ptr<GerstnerOcean> ocean;
+  try
+  {
+    ocean = std::make_unique<GerstnerOcean>(p, floor, region);
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+
+  // Rest points, row by row; evaluated a block of rows at a time for progress and abort.
+  const vtkIdType n = static_cast<vtkIdType>(nx) * ny;
+  std::vector<float> xs(static_cast<std::size_t>(n)), ys(static_cast<std::size_t>(n));
+  for (int j = 0; j < ny; ++j)
+  {
+    for (int i = 0; i < nx; ++i)
+    {
+      const std::size_t k = static_cast<std::size_t>(j) * nx + i;
+      xs[k] = static_cast<float>(region[0] + this->Size[0] * i / (nx - 1));
+      ys[k] = static_cast<float>(region[2] + this->Size[1] * j / (ny - 1));
+    }
+  }
+  vtkNew<vtkFloatArray> displacement, normals, jacobian, foam, depth;
+  displacement->SetNumberOfComponents(3);
+  displacement->SetNumberOfTuples(n);
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(n);
+  jacobian->SetName("jacobian");
+  jacobian->SetNumberOfTuples(n);
+  foam->SetName("foam");
+  foam->SetNumberOfTuples(n);
+  depth->SetName("depth");
+  depth->SetNumberOfTuples(n);
+  const bool hasBottom = floor || this->WaterDepth > 0.0;
+  const int blocks = std::min(ny, 32);
+  for (int b = 0; b < blocks && !this->AbortExecute; ++b)
+  {
+    const std::size_t first = static_cast<std::size_t>(ny) * b / blocks * nx;
+    const std::size_t last = static_cast<std::size_t>(ny) * (b + 1) / blocks * nx;
+    ocean->evaluate(xs.data() + first, ys.data() + first, last - first, time, displacement->GetPointer(3 * first),
+      normals->GetPointer(3 * first), jacobian->GetPointer(first), foam->GetPointer(first),
+      depth->GetPointer(first));
+    this->UpdateProgress(static_cast<double>(b + 1) / blocks);
+  }
+  if (this->AbortExecute)
+  {
+    return 1;
+  }
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(n);
+  float* xyz = static_cast<float*>(points->GetVoidPointer(0));
+  const float* d = displacement->GetPointer(0);
+  const auto level = static_cast<float>(this->SeaLevel);
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    xyz[3 * k] = xs[static_cast<std::size_t>(k)] + d[3 * k];
+    xyz[3 * k + 1] = ys[static_cast<std::size_t>(k)] + d[3 * k + 1];
+    xyz[3 * k + 2] = level + d[3 * k + 2];
+  }
+  // Quads in one offsets/connectivity pair (no per-cell insertion).
+  const vtkIdType quads = static_cast<vtkIdType>(nx - 1) * (ny - 1);
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfTuples(quads + 1);
+  connectivity->SetNumberOfTuples(4 * quads);
+  vtkIdType* o = offsets->GetPointer(0);
+  vtkIdType* c = connectivity->GetPointer(0);
+  vtkIdType q = 0;
+  for (int j = 0; j + 1 < ny; ++j)
+  {
+    for (int i = 0; i + 1 < nx; ++i, ++q)
+    {
+      const vtkIdType a = static_cast<vtkIdType>(j) * nx + i;
+      o[q] = 4 * q;
+      c[4 * q] = a;
+      c[4 * q + 1] = a + 1;
+      c[4 * q + 2] = a + 1 + nx;
+      c[4 * q + 3] = a + nx;
+    }
+  }
+  o[quads] = 4 * quads;
+  vtkNew<vtkCellArray> cells;
+  cells->SetData(offsets, connectivity);
+  output->SetPoints(points);
+  output->SetPolys(cells);
+  output->GetPointData()->SetNormals(normals);
+  output->GetPointData()->AddArray(jacobian);
+  output->GetPointData()->AddArray(foam);
+  if (hasBottom)
+  {
+    output->GetPointData()->AddArray(depth);
+  }
+  vtkNew<vtkDoubleArray> timeArray;
+  timeArray->SetName("time");
+  timeArray->InsertNextValue(time);
+  output->GetFieldData()->AddArray(timeArray);
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
+  return 1;
+}
+
+void vtkPFGerstnerOcean::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Origin: " << this->Origin[0] << ", " << this->Origin[1] << "\n";
+  os << indent << "Size: " << this->Size[0] << ", " << this->Size[1] << "\n";
+  os << indent << "Resolution: " << this->Resolution[0] << " x " << this->Resolution[1] << "\n";
+  os << indent << "SeaState: " << this->SeaState << ", waves in list: " << this->GetNumberOfWaves() << "\n";
+  os << indent << "WaterDepth: " << this->WaterDepth << "\n";
+}
