@@ -98,6 +98,18 @@ std::string SPHParameters::validate() const
   {
     return "threads must be 0 (default) or positive";
   }
+  if (pressureSolver == PressureSolver::DFSPH)
+  {
+    // The Jacobi pressure solves use a diagonal factor that is tight enough at h = 2 spacings; with
+    // wider kernels they overshoot and diverge within a step (h = 3 spacings blows up at once, and
+    // 2.5 already leaves a resting column 20 % off hydrostatic).
+    const float ratio = smoothingLength / latticeSpacingForMass(particleMass, smoothingLength, restDensity, densityKernel());
+    if (!(ratio <= 2.25f))
+    {
+      return "DFSPH needs SmoothingLength of at most 2.25 particle spacings (2 is the default), got " +
+        std::to_string(ratio) + "; lower it or use WCSPH";
+    }
+  }
   return {};
 }
 

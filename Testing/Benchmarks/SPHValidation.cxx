@@ -5,7 +5,7 @@
 // Writes CSV files into the directory given as first argument; plot_validation.py draws them.
 // Usage: ParaFluidSPHValidation <output-directory> [--quick] [--scene all|hydrostatic|dambreak]
 //        [--solver WCSPH|DFSPH] [--resolutions 10,20,40] [--viscosity 3.5] [--tolerance 0.001]
-//        [--cfl 0.2] [--max-dt 0.005]
+//        [--cfl 0.2] [--max-dt 0.005] [--stiffness 1000]
 #include "parafluid/ParticleLattice.h"
 #include "parafluid/SPHParameters.h"
 #include "parafluid/SPHSolver.h"
@@ -37,6 +37,7 @@ const char* name(PressureSolver s)
 /// which makes the flow two-dimensional as in the experiments.
 float gViscosity = 3.5f;        // [Pa s], --viscosity; Müller's water value, the filter's default
 float gDensityTolerance = 0.001f; // --tolerance; the filter's default (0.1 %)
+float gGasStiffness = 1000.0f;  // --stiffness [m^2/s^2], WCSPH's k (c = sqrt(k))
 float gCFLNumber = SPHParameters().cflNumber;     // --cfl; smaller for a time-step convergence study
 float gMaxTimeStep = SPHParameters().maxTimeStep; // --max-dt [s]
 
@@ -46,7 +47,7 @@ SPHParameters water(PressureSolver solver, float spacing, const std::array<float
   p.pressureSolver = solver;
   p.smoothingLength = 2.0f * spacing;
   p.restDensity = kRho0;
-  p.gasStiffness = 1000.0f; // c = 31.6 m/s, ten times the fastest flow in these scenes
+  p.gasStiffness = gGasStiffness; // default 1000: c = 31.6 m/s, ten times the fastest flow here
   p.viscosity = gViscosity;
   p.gravity = { 0.0f, 0.0f, -kGravity };
   p.domainBounds = domain;
@@ -239,6 +240,10 @@ int main(int argc, char** argv)
     else if (option == "--viscosity" && k + 1 < argc)
     {
       gViscosity = std::stof(argv[++k]);
+    }
+    else if (option == "--stiffness" && k + 1 < argc)
+    {
+      gGasStiffness = std::stof(argv[++k]);
     }
     else if (option == "--cfl" && k + 1 < argc)
     {

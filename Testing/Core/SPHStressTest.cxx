@@ -188,6 +188,20 @@ TEST(SPHStress, ThousandTimesStifferRunsStablyWithAdaptiveSteps)
   }
 }
 
+TEST(SPHStress, DFSPHRefusesKernelsWiderThanItsSolveConvergesFor)
+{
+  // At h = 3 spacings the DFSPH density solve diverges within the first step; it is refused up
+  // front with a message naming the limit, and WCSPH runs the same scene.
+  SPHParameters p = water(PressureSolver::DFSPH);
+  p.smoothingLength = 3.0f * kSpacing;
+  p.particleMass = latticeParticleMass(kSpacing, p.smoothingLength, p.restDensity, p.densityKernel());
+  const std::string message = runOrStop(p, smallBlock(), 5);
+  EXPECT_NE(message.find("at most 2.25 particle spacings"), std::string::npos) << message;
+  p.pressureSolver = PressureSolver::WCSPH;
+  p.particleMass = latticeParticleMass(kSpacing, p.smoothingLength, p.restDensity, p.densityKernel());
+  EXPECT_EQ(runOrStop(p, smallBlock(), 20), "");
+}
+
 TEST(SPHStress, ZeroViscositySkipsThePassAndStaysBounded)
 {
   for (PressureSolver solver : { PressureSolver::WCSPH, PressureSolver::DFSPH })
