@@ -32,6 +32,12 @@ public:
   /// x0, x1, y0, y1 of the grid [m].
   void bounds(double b[4]) const;
   double spacing() const { return this->DX < this->DY ? this->DX : this->DY; }
+  /// The grid as stored: elevations (x fastest), origin and spacing (for GPU upload).
+  const std::vector<float>& elevation() const { return this->Elevation; }
+  void grid(double origin[2], double spacing[2]) const
+  {
+    origin[0] = this->X0, origin[1] = this->Y0, spacing[0] = this->DX, spacing[1] = this->DY;
+  }
 
 private:
   /// Cell (i, j) and the fractions (fx, fy) of (x, y) inside it, clamped to the grid.

@@ -70,6 +70,16 @@ public:
   /// The waves as evaluated: steepness scaled down when the summed Q k A exceeded MaxSteepness.
   const std::vector<GerstnerWave>& effectiveWaves() const { return this->Waves; }
   const OceanParameters& parameters() const { return this->Parameters; }
+  /// Per wave: deep-water wavenumber, angular frequency, wind lean term, unit direction, and the
+  /// wavenumber in the uniform depth; the phase fields when there is a bathymetry.
+  const std::vector<double>& deepWavenumbers() const { return this->DeepK; }
+  const std::vector<double>& angularFrequencies() const { return this->Omega; }
+  const std::vector<double>& leans() const { return this->Lean; }
+  double directionX(std::size_t i) const { return this->DirX[i]; }
+  double directionY(std::size_t i) const { return this->DirY[i]; }
+  const std::vector<double>& uniformWavenumbers() const { return this->UniformK; }
+  const std::vector<WavePhaseField>& phaseFields() const { return this->Phases; }
+  const Bathymetry* bathymetry() const { return this->Floor.get(); }
 
 private:
   OceanParameters Parameters;

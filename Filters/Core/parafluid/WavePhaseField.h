@@ -25,6 +25,12 @@ public:
 
   int samplesAlong() const { return this->NS; }
   int samplesAcross() const { return this->NT; }
+  /// The grid as stored, for GPU upload: s0, t0, step; and per sample (along fastest) the phase,
+  /// the wavenumber and the phase's derivative across.
+  void grid(double& s0, double& t0, double& step) const { s0 = this->S0, t0 = this->T0, step = this->Step; }
+  const std::vector<double>& phases() const { return this->Phase; }
+  const std::vector<float>& wavenumbers() const { return this->Wavenumber; }
+  const std::vector<float>& phasesAcross() const { return this->PhaseAcross; }
 
 private:
   double Direction[2];

@@ -1,0 +1,553 @@
+#include "vtkPFGerstnerOceanRepresentation.h"
+
+#include "GerstnerOceanShading.h"
+#include "GerstnerOceanWaves.h"
+#include "vtkPFOceanTextures.h"
+
+#include "parafluid/Bathymetry.h"
+#include "parafluid/GerstnerOcean.h"
+
+#include "vtkAlgorithmOutput.h"
+#include "vtkCellArray.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkCamera.h"
+#include "vtkInformation.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLVertexBufferObject.h"
+#include "vtkPVLODActor.h"
+#include "vtkPVRenderView.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkShaderProperty.h"
+#include "vtkTexture.h"
+#include "vtkUniforms.h"
+
+#include <array>
+#include <cmath>
+#include <sstream>
+
+namespace
+{
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kMaxGpuWaves = 16;   // in deep or uniform water
+constexpr int kMaxFloorWaves = 8;  // over a bathymetry (one phase texture each)
+
+float luminance(const double c[3])
+{
+  return static_cast<float>(0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]);
+}
+}
+
+struct vtkPFGerstnerOceanRepresentation::Internals
+{
+  std::unique_ptr<parafluid::ocean::GerstnerOcean> Model;
+  std::string ModelKey;       // parameters and data the model was built from
+  std::string ShaderKey;      // defines the shaders were built with
+  bool HasFloor = false;
+  bool HasCubeMap = false;
+  std::string CubeMapKey;
+  vtkSmartPointer<vtkTexture> Ripples;
+  vtkSmartPointer<vtkTexture> CubeMap;
+};
+
+vtkStandardNewMacro(vtkPFGerstnerOceanRepresentation);
+
+vtkPFGerstnerOceanRepresentation::vtkPFGerstnerOceanRepresentation()
+  : Internal(new Internals)
+{
+  // The displacement needs true coordinates in the shader, and a decimated LOD would move
+  // differently from the full surface.
+  for (vtkMapper* mapper : { this->Mapper, this->LODMapper })
+  {
+    if (auto* gl = vtkOpenGLPolyDataMapper::SafeDownCast(mapper))
+    {
+      gl->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+    }
+  }
+  this->SetSuppressLOD(true);
+  this->Internal->Ripples = parafluid::vtk::makeRippleTexture();
+  this->Property->SetTexture("oceanRipples", this->Internal->Ripples);
+}
+
+vtkPFGerstnerOceanRepresentation::~vtkPFGerstnerOceanRepresentation() = default;
+
+void vtkPFGerstnerOceanRepresentation::SetWave(
+  int index, double amplitude, double wavelength, double direction, double steepness, double phase)
+{
+  if (index < 0)
+  {
+    return;
+  }
+  if (this->Waves.size() < 5 * (static_cast<std::size_t>(index) + 1))
+  {
+    this->Waves.resize(5 * (static_cast<std::size_t>(index) + 1), 0.0);
+  }
+  const double values[5] = { amplitude, wavelength, direction, steepness, phase };
+  std::copy(values, values + 5, this->Waves.begin() + 5 * index);
+  this->Modified();
+}
+
+void vtkPFGerstnerOceanRepresentation::RemoveAllWaves()
+{
+  this->Waves.clear();
+  this->Modified();
+}
+
+void vtkPFGerstnerOceanRepresentation::SetBathymetryArray(const char* name)
+{
+  const std::string value = name ? name : "";
+  if (value != this->BathymetryArray)
+  {
+    this->BathymetryArray = value;
+    this->Modified();
+  }
+}
+
+void vtkPFGerstnerOceanRepresentation::SetEnvironmentImage(int face, const char* file)
+{
+  if (face >= 0 && face < 6)
+  {
+    this->EnvironmentImages[face] = file ? file : "";
+    this->Modified();
+  }
+}
+
+int vtkPFGerstnerOceanRepresentation::ProcessViewRequest(
+  vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo)
+{
+  const int result = this->Superclass::ProcessViewRequest(request, inInfo, outInfo);
+  if (result && request == vtkPVView::REQUEST_RENDER())
+  {
+    vtkDataObject* delivered = nullptr;
+    if (vtkAlgorithmOutput* port = vtkPVRenderView::GetPieceProducer(inInfo, this, 0))
+    {
+      delivered = port->GetProducer()->GetOutputDataObject(port->GetIndex());
+    }
+    this->UpdateModel(delivered);
+    this->UpdateShaders();
+    auto* view = vtkPVView::SafeDownCast(this->GetView());
+    this->UpdateUniforms(view ? view->GetViewTime() : 0.0);
+  }
+  return result;
+}
+
+namespace
+{
+/// The first polydata leaf of what the view delivered (a multiblock in ParaView 5.11).
+vtkPolyData* firstSurface(vtkDataObject* data)
+{
+  if (auto* poly = vtkPolyData::SafeDownCast(data))
+  {
+    return poly;
+  }
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      if (auto* poly = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
+      {
+        return poly;
+      }
+    }
+  }
+  return nullptr;
+}
+}
+
+void vtkPFGerstnerOceanRepresentation::UpdateModel(vtkDataObject* delivered)
+{
+  using namespace parafluid::ocean;
+  vtkPolyData* surface = firstSurface(delivered);
+  vtkDataArray* elevation = surface && !this->BathymetryArray.empty()
+    ? surface->GetPointData()->GetArray(this->BathymetryArray.c_str())
+    : nullptr;
+  std::ostringstream key;
+  key.precision(17);
+  key << this->SeaState << ' ' << this->WindDirection << ' ' << this->WindLean << ' ' << this->WaterDepth << ' '
+      << this->MaxSteepness << ' ' << this->BreakingDepthRatio << ' ' << this->BreakingStretch << ' '
+      << this->BreakingLean << ' ' << this->BreakingShift << ' ' << this->SeaLevel << ' ' << this->BathymetryArray
+      << ' ' << this->BathymetryResolution << ' ' << (elevation ? elevation->GetMTime() : 0) << ' '
+      << (surface ? surface->GetMTime() : 0);
+  for (double w : this->Waves)
+  {
+    key << ' ' << w;
+  }
+  if (key.str() == this->Internal->ModelKey && this->Internal->Model)
+  {
+    return;
+  }
+  this->Internal->ModelKey = key.str();
+  this->LastError.clear();
+
+  OceanParameters p;
+  if (this->SeaState == 0)
+  {
+    for (std::size_t w = 0; w + 4 < this->Waves.size(); w += 5)
+    {
+      GerstnerWave wave;
+      wave.amplitude = this->Waves[w];
+      wave.wavelength = this->Waves[w + 1];
+      wave.direction = this->Waves[w + 2];
+      wave.steepness = this->Waves[w + 3];
+      wave.phase = this->Waves[w + 4];
+      p.waves.push_back(wave);
+    }
+  }
+  else
+  {
+    p.waves = seaStatePreset(this->SeaState == 1 ? SeaState::Calm : this->SeaState == 2 ? SeaState::Swell : SeaState::Storm,
+      this->WindDirection);
+  }
+  p.depth = this->WaterDepth > 0.0 ? this->WaterDepth : kDeepWater;
+  p.maxSteepness = this->MaxSteepness;
+  p.windDirection = this->WindDirection;
+  p.windLean = this->WindLean;
+  p.breakingDepthRatio = this->BreakingDepthRatio;
+  p.breakingStretch = this->BreakingStretch;
+  p.breakingLean = this->BreakingLean;
+  p.breakingShift = this->BreakingShift;
+
+  std::shared_ptr<Bathymetry> floor;
+  double region[4] = { 0, 1, 0, 1 };
+  if (!this->BathymetryArray.empty())
+  {
+    if (!elevation)
+    {
+      this->LastError = "BathymetryArray '" + this->BathymetryArray + "' is not a point array of the input";
+    }
+    else
+    {
+      // The input surface with each point lifted to its floor elevation is the terrain.
+      std::vector<float> points(3 * static_cast<std::size_t>(surface->GetNumberOfPoints()));
+      for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+      {
+        double x[3];
+        surface->GetPoint(i, x);
+        points[3 * i] = static_cast<float>(x[0]);
+        points[3 * i + 1] = static_cast<float>(x[1]);
+        points[3 * i + 2] = static_cast<float>(elevation->GetComponent(i, 0));
+      }
+      std::vector<std::uint32_t> triangles;
+      vtkCellArray* polys = surface->GetPolys();
+      vtkIdType count;
+      const vtkIdType* ids;
+      for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+      {
+        for (vtkIdType k = 1; k + 1 < count; ++k) // fan: the input is a flat, convex-celled surface
+        {
+          triangles.insert(triangles.end(), { static_cast<std::uint32_t>(ids[0]), static_cast<std::uint32_t>(ids[k]),
+                                              static_cast<std::uint32_t>(ids[k + 1]) });
+        }
+      }
+      try
+      {
+        floor = std::make_shared<Bathymetry>(
+          Bathymetry::fromTriangles(points, triangles, this->BathymetryResolution, this->BathymetryResolution, this->SeaLevel));
+        floor->bounds(region);
+      }
+      catch (const std::exception& e)
+      {
+        this->LastError = e.what();
+      }
+    }
+  }
+  const std::size_t limit = floor ? kMaxFloorWaves : kMaxGpuWaves;
+  if (p.waves.size() > limit)
+  {
+    this->LastError = "the GPU draws the first " + std::to_string(limit) + " of " + std::to_string(p.waves.size()) + " waves";
+    p.waves.resize(limit);
+  }
+  try
+  {
+    this->Internal->Model = std::make_unique<GerstnerOcean>(p, floor, floor ? region : nullptr);
+  }
+  catch (const std::exception& e)
+  {
+    this->LastError = e.what();
+    p.waves.clear();
+    floor.reset();
+    this->Internal->Model = std::make_unique<GerstnerOcean>(p);
+  }
+  if (!this->LastError.empty())
+  {
+    vtkWarningMacro("Gerstner Ocean: " << this->LastError);
+  }
+
+  // Float textures for the floor and the phase fields (read with texelFetch, so exact).
+  this->Internal->HasFloor = static_cast<bool>(floor);
+  if (floor)
+  {
+    const std::vector<float>& e = floor->elevation();
+    this->Property->SetTexture("oceanFloorTex", parafluid::vtk::makeDataTexture(e.data(), floor->nodesX(), floor->nodesY(), 1));
+    const auto& fields = this->Internal->Model->phaseFields();
+    for (std::size_t w = 0; w < static_cast<std::size_t>(kMaxFloorWaves); ++w)
+    {
+      const std::string name = "oceanPhase" + std::to_string(w);
+      std::vector<float> texels;
+      int ns = 1, nt = 1;
+      if (w < fields.size())
+      {
+        ns = fields[w].samplesAlong(), nt = fields[w].samplesAcross();
+        texels.resize(3 * static_cast<std::size_t>(ns) * nt);
+        for (std::size_t k = 0; k < static_cast<std::size_t>(ns) * nt; ++k)
+        {
+          texels[3 * k] = static_cast<float>(fields[w].phases()[k]);
+          texels[3 * k + 1] = fields[w].wavenumbers()[k];
+          texels[3 * k + 2] = fields[w].phasesAcross()[k];
+        }
+      }
+      else
+      {
+        texels.assign(3, 0.0f); // unused slot: the sampler still needs a texture
+      }
+      this->Property->SetTexture(name.c_str(), parafluid::vtk::makeDataTexture(texels.data(), ns, nt, 3));
+    }
+  }
+  else
+  {
+    this->Property->RemoveTexture("oceanFloorTex");
+    for (int w = 0; w < kMaxFloorWaves; ++w)
+    {
+      this->Property->RemoveTexture(("oceanPhase" + std::to_string(w)).c_str());
+    }
+  }
+
+  // Environment cube map: all six images or none.
+  std::string cubeKey;
+  int given = 0;
+  for (const std::string& f : this->EnvironmentImages)
+  {
+    cubeKey += f + "\n";
+    given += f.empty() ? 0 : 1;
+  }
+  if (cubeKey != this->Internal->CubeMapKey)
+  {
+    this->Internal->CubeMapKey = cubeKey;
+    this->Internal->CubeMap = nullptr;
+    if (given == 6)
+    {
+      std::array<std::string, 6> files;
+      std::copy(this->EnvironmentImages, this->EnvironmentImages + 6, files.begin());
+      std::string error;
+      this->Internal->CubeMap = parafluid::vtk::loadCubeMap(files, error);
+      if (!this->Internal->CubeMap)
+      {
+        vtkErrorMacro("Gerstner Ocean: " << error);
+      }
+    }
+    else if (given > 0)
+    {
+      vtkWarningMacro("Gerstner Ocean: EnvironmentImages needs all six faces; using the procedural sky");
+    }
+    if (this->Internal->CubeMap)
+    {
+      this->Property->SetTexture("oceanEnvironment", this->Internal->CubeMap);
+    }
+    else
+    {
+      this->Property->RemoveTexture("oceanEnvironment");
+    }
+  }
+  this->Internal->HasCubeMap = static_cast<bool>(this->Internal->CubeMap);
+}
+
+void vtkPFGerstnerOceanRepresentation::UpdateShaders()
+{
+  std::string defines;
+  if (this->Internal->HasFloor)
+  {
+    defines += "#define OCEAN_FLOOR\n";
+  }
+  if (this->Internal->HasCubeMap)
+  {
+    defines += "#define OCEAN_CUBEMAP\n";
+  }
+  const std::string key = "built\n" + defines;
+  if (key == this->Internal->ShaderKey)
+  {
+    return;
+  }
+  this->Internal->ShaderKey = key;
+  vtkShaderProperty* shaders = this->Actor->GetShaderProperty();
+  shaders->ClearAllShaderReplacements();
+  std::string vertexSamplers;
+  if (this->Internal->HasFloor)
+  {
+    vertexSamplers += "uniform sampler2D oceanFloorTex;\n";
+    for (int w = 0; w < kMaxFloorWaves; ++w)
+    {
+      vertexSamplers += "uniform sampler2D oceanPhase" + std::to_string(w) + ";\n";
+    }
+  }
+  shaders->AddVertexShaderReplacement("//VTK::PositionVC::Dec", true,
+    "//VTK::PositionVC::Dec\n" + defines + vertexSamplers + GerstnerOceanWaves +
+      "out vec3 oceanRestVSOutput;\nout vec3 oceanWorldVSOutput;\nout vec3 oceanEyeVSOutput;\n",
+    false);
+  shaders->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true,
+    "  vec3 oceanOffset, oceanDx, oceanDy;\n"
+    "  float oceanJ, oceanFoam, oceanH;\n"
+    // VTK may shift and scale the coordinates it uploads (vertexMC); the camera's view-to-world
+    // matrix, set every render, recovers world coordinates, in which the waves are defined.
+    "  mat4 oceanMCWC = oceanVCWC * MCVCMatrix;\n"
+    "  vec4 oceanRest = oceanMCWC * vertexMC;\n"
+    "  oceanEvaluate(oceanRest.xy, oceanOffset, oceanDx, oceanDy, oceanJ, oceanFoam, oceanH);\n"
+    "  vec4 oceanVertex = vertexMC + vec4(inverse(mat3(oceanMCWC)) * oceanOffset, 0.0);\n"
+    "  oceanRestVSOutput = oceanRest.xyz;\n"
+    "  oceanWorldVSOutput = (oceanMCWC * oceanVertex).xyz;\n"
+    "  oceanEyeVSOutput = (oceanVCWC * vec4(0.0, 0.0, 0.0, 1.0)).xyz;\n"
+    "  vertexVCVSOutput = MCVCMatrix * oceanVertex;\n"
+    "  gl_Position = MCDCMatrix * oceanVertex;\n",
+    false);
+  // Fragment: declarations after the texture samplers VTK declares (TMap), then the shading.
+  shaders->AddFragmentShaderReplacement("//VTK::PositionVC::Dec", true,
+    "//VTK::PositionVC::Dec\n" + defines +
+      "in vec3 oceanRestVSOutput;\nin vec3 oceanWorldVSOutput;\nin vec3 oceanEyeVSOutput;\n",
+    false);
+  shaders->AddFragmentShaderReplacement(
+    "//VTK::Clip::Dec", true, std::string(GerstnerOceanWaves) + GerstnerOceanShading + "//VTK::Clip::Dec\n", false);
+  shaders->AddFragmentShaderReplacement("//VTK::Light::Impl", true,
+    "  vec3 oceanOffset, oceanDx, oceanDy;\n"
+    "  float oceanJ, oceanFoam, oceanH;\n"
+    "  oceanEvaluate(oceanRestVSOutput.xy, oceanOffset, oceanDx, oceanDy, oceanJ, oceanFoam, oceanH);\n"
+    "  vec3 oceanColor = oceanShadingMode == 1 ? oceanSolidColor\n"
+    "    : oceanShadingMode == 2 ? 0.5 + 0.5 * normalize(cross(vec3(1.0 + oceanDx.x, oceanDx.y, oceanDx.z), vec3(oceanDy.x, 1.0 + oceanDy.y, oceanDy.z)))\n"
+    "    : oceanShade(oceanWorldVSOutput, oceanEyeVSOutput, oceanRestVSOutput.xy, oceanDx, oceanDy, oceanFoam, oceanH);\n"
+    "  gl_FragData[0] = vec4(oceanColor, opacity);\n",
+    false);
+  // Textures are the shader's data, not colours to multiply in.
+  shaders->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, "", false);
+}
+
+void vtkPFGerstnerOceanRepresentation::UpdateUniforms(double time)
+{
+  const auto* model = this->Internal->Model.get();
+  if (!model)
+  {
+    return;
+  }
+  const auto& waves = model->effectiveWaves();
+  const int count = static_cast<int>(std::min<std::size_t>(waves.size(), kMaxGpuWaves));
+  float amplitude[kMaxGpuWaves] = {}, steepness[kMaxGpuWaves] = {}, phaseNow[kMaxGpuWaves] = {};
+  float lean[kMaxGpuWaves] = {}, dirX[kMaxGpuWaves] = {}, dirY[kMaxGpuWaves] = {}, uniformK[kMaxGpuWaves] = {};
+  for (int i = 0; i < count; ++i)
+  {
+    amplitude[i] = static_cast<float>(waves[i].amplitude);
+    steepness[i] = static_cast<float>(waves[i].steepness);
+    // phase - omega t, reduced in double precision so float keeps full accuracy on the GPU.
+    phaseNow[i] = static_cast<float>(std::remainder(waves[i].phase - model->angularFrequencies()[i] * time, 2.0 * kPi));
+    lean[i] = static_cast<float>(model->leans()[i]);
+    dirX[i] = static_cast<float>(model->directionX(i));
+    dirY[i] = static_cast<float>(model->directionY(i));
+    uniformK[i] = static_cast<float>(model->uniformWavenumbers()[i]);
+  }
+  const double sunElevation = this->SunElevation * kPi / 180.0, sunAzimuth = this->SunAzimuth * kPi / 180.0;
+  const float sun[3] = { static_cast<float>(std::cos(sunElevation) * std::cos(sunAzimuth)),
+    static_cast<float>(std::cos(sunElevation) * std::sin(sunAzimuth)), static_cast<float>(std::sin(sunElevation)) };
+  // Auto exposure: the mean radiance of water seen at typical angles (about 10 % reflection of a
+  // sky at 30 degrees elevation, the rest the lit body colour) mapped to 18 % grey.
+  this->EffectiveExposure = this->Exposure;
+  if (this->AutoExposure)
+  {
+    double sky[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      sky[c] = this->HorizonColor[c] + (this->ZenithColor[c] - this->HorizonColor[c]) * std::pow(0.5, 0.45);
+    }
+    const double lit = (0.35 + 0.65 * std::max(std::sin(sunElevation), 0.0)) * this->SunIntensity;
+    const double body = luminance(this->DeepColor) * lit;
+    const double mean = 0.9 * body + 0.1 * luminance(sky) * (this->Internal->HasCubeMap ? this->EnvironmentScale : 1.0);
+    this->EffectiveExposure = mean > 0.0 ? -std::log(1.0 - 0.18) / mean : this->Exposure;
+  }
+
+  vtkNew<vtkMatrix4x4> viewToWorld;
+  if (auto* view = vtkPVRenderView::SafeDownCast(this->GetView()))
+  {
+    vtkMatrix4x4::Invert(view->GetActiveCamera()->GetModelViewTransformMatrix(), viewToWorld);
+  }
+  viewToWorld->Transpose(); // vtkUniforms uploads row by row; GLSL reads columns
+
+  this->Actor->GetShaderProperty()->GetVertexCustomUniforms()->SetUniformMatrix("oceanVCWC", viewToWorld);
+  for (vtkUniforms* u : { this->Actor->GetShaderProperty()->GetVertexCustomUniforms(),
+         this->Actor->GetShaderProperty()->GetFragmentCustomUniforms() })
+  {
+    u->SetUniformi("oceanWaveCount", count);
+    u->SetUniform1fv("oceanAmplitude", kMaxGpuWaves, amplitude);
+    u->SetUniform1fv("oceanSteepness", kMaxGpuWaves, steepness);
+    u->SetUniform1fv("oceanPhaseNow", kMaxGpuWaves, phaseNow);
+    u->SetUniform1fv("oceanLean", kMaxGpuWaves, lean);
+    u->SetUniform1fv("oceanDirX", kMaxGpuWaves, dirX);
+    u->SetUniform1fv("oceanDirY", kMaxGpuWaves, dirY);
+    u->SetUniform1fv("oceanUniformK", kMaxGpuWaves, uniformK);
+    const auto& p = model->parameters();
+    u->SetUniformf("oceanDepth", std::isinf(p.depth) ? -1.0f : static_cast<float>(p.depth));
+    u->SetUniformf("oceanMaxSteepness", static_cast<float>(p.maxSteepness));
+    u->SetUniformf("oceanMinDepth", static_cast<float>(p.minDepth));
+    u->SetUniformf("oceanBreakRatio", static_cast<float>(p.breakingDepthRatio));
+    u->SetUniformf("oceanBreakStretch", static_cast<float>(p.breakingStretch));
+    u->SetUniformf("oceanBreakLean", static_cast<float>(p.breakingLean));
+    u->SetUniformf("oceanBreakShift", static_cast<float>(p.breakingShift));
+    u->SetUniformf("oceanSeaLevel", static_cast<float>(this->SeaLevel));
+    if (const auto* floor = model->bathymetry())
+    {
+      double origin[2], spacing[2];
+      floor->grid(origin, spacing);
+      const float o[2] = { static_cast<float>(origin[0]), static_cast<float>(origin[1]) };
+      const float s[2] = { static_cast<float>(spacing[0]), static_cast<float>(spacing[1]) };
+      const float n[2] = { static_cast<float>(floor->nodesX()), static_cast<float>(floor->nodesY()) };
+      u->SetUniform2f("oceanFloorOrigin", o);
+      u->SetUniform2f("oceanFloorSpacing", s);
+      u->SetUniform2f("oceanFloorSize", n);
+      float s0[kMaxFloorWaves] = {}, t0[kMaxFloorWaves] = {}, st[kMaxFloorWaves] = {}, ns[kMaxFloorWaves] = {},
+            nt[kMaxFloorWaves] = {};
+      const auto& fields = model->phaseFields();
+      for (std::size_t w = 0; w < fields.size() && w < static_cast<std::size_t>(kMaxFloorWaves); ++w)
+      {
+        double a, b, c;
+        fields[w].grid(a, b, c);
+        s0[w] = static_cast<float>(a), t0[w] = static_cast<float>(b), st[w] = static_cast<float>(c);
+        ns[w] = static_cast<float>(fields[w].samplesAlong()), nt[w] = static_cast<float>(fields[w].samplesAcross());
+      }
+      u->SetUniform1fv("oceanGridS0", kMaxFloorWaves, s0);
+      u->SetUniform1fv("oceanGridT0", kMaxFloorWaves, t0);
+      u->SetUniform1fv("oceanGridStep", kMaxFloorWaves, st);
+      u->SetUniform1fv("oceanGridNS", kMaxFloorWaves, ns);
+      u->SetUniform1fv("oceanGridNT", kMaxFloorWaves, nt);
+    }
+  }
+  vtkUniforms* f = this->Actor->GetShaderProperty()->GetFragmentCustomUniforms();
+  f->SetUniformi("oceanShadingMode", this->ShadingMode);
+  f->SetUniform3f("oceanSolidColor", this->SolidColor);
+  f->SetUniform3f("oceanDeepColor", this->DeepColor);
+  f->SetUniform3f("oceanShallowColor", this->ShallowColor);
+  f->SetUniformf("oceanColorDepth", static_cast<float>(std::max(this->ColorDepth, 1e-3)));
+  f->SetUniform3f("oceanFoamColor", this->FoamColor);
+  f->SetUniformf("oceanFoamAmount", static_cast<float>(this->FoamAmount));
+  f->SetUniform3f("oceanSunDirection", sun);
+  f->SetUniform3f("oceanSunColor", this->SunColor);
+  f->SetUniformf("oceanSunIntensity", static_cast<float>(this->SunIntensity));
+  f->SetUniformf("oceanShininess", static_cast<float>(this->Shininess));
+  f->SetUniform3f("oceanHorizonColor", this->HorizonColor);
+  f->SetUniform3f("oceanZenithColor", this->ZenithColor);
+  f->SetUniformf("oceanEnvironmentScale", static_cast<float>(this->EnvironmentScale));
+  f->SetUniformf("oceanRippleScale", static_cast<float>(std::max(this->RippleScale, 1e-3)));
+  f->SetUniformf("oceanRippleStrength", static_cast<float>(this->RippleStrength));
+  f->SetUniformf("oceanRippleTime", static_cast<float>(std::fmod(time * this->RippleSpeed, 1.0e4)));
+  f->SetUniformf("oceanRippleFade", static_cast<float>(std::max(this->RippleFade, 1e-3)));
+  f->SetUniformf("oceanExposure", static_cast<float>(this->EffectiveExposure));
+}
+
+void vtkPFGerstnerOceanRepresentation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SeaState: " << this->SeaState << "\n";
+  os << indent << "BathymetryArray: " << this->BathymetryArray << "\n";
+  os << indent << "ShadingMode: " << this->ShadingMode << "\n";
+}

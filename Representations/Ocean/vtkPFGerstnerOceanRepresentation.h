@@ -1,0 +1,147 @@
+/**
+ * @class vtkPFGerstnerOceanRepresentation
+ * @brief Renders a flat surface (a Plane, a grid) as a moving ocean, on the GPU.
+ *
+ * A surface representation whose vertex shader displaces every vertex with the Gerstner wave
+ * model of parafluid::ocean::GerstnerOcean (same parameters as the Gerstner Ocean source; the
+ * GLSL in GerstnerOceanWaves.glsl mirrors the C++), at the view's time. The fragment shader
+ * re-evaluates the waves' derivatives per pixel for the normal, adds capillary ripples from a
+ * procedurally generated, tileable normal map (two scrolling samples at unrelated scales),
+ * reflects the environment (a cube map from six images, or a procedural sky with a sun) with
+ * Schlick's Fresnel term (R0 = 0.02), colours the water from shallow to deep by depth, adds sun
+ * specular and foam, and tone-maps the linear HDR result with a fixed or automatic exposure.
+ *
+ * The surface should lie at the sea's rest height. With BathymetryArray naming a point array of
+ * floor elevations [m] on the input (for instance from Resample With Dataset on a terrain), waves
+ * shoal, refract and break over it: the floor and each wave's phase field are uploaded as float
+ * textures (up to 8 waves then; 16 in deep or uniform water).
+ */
+#ifndef vtkPFGerstnerOceanRepresentation_h
+#define vtkPFGerstnerOceanRepresentation_h
+
+#include "ParaFluidOceanRepresentationsModule.h"
+#include "vtkGeometryRepresentationWithFaces.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class PARAFLUIDOCEANREPRESENTATIONS_EXPORT vtkPFGerstnerOceanRepresentation : public vtkGeometryRepresentationWithFaces
+{
+public:
+  static vtkPFGerstnerOceanRepresentation* New();
+  vtkTypeMacro(vtkPFGerstnerOceanRepresentation, vtkGeometryRepresentationWithFaces);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  int ProcessViewRequest(vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo) override;
+
+  //@{
+  /// The wave model: as on the Gerstner Ocean source (see vtkPFGerstnerOcean).
+  vtkSetClampMacro(SeaState, int, 0, 3);
+  vtkGetMacro(SeaState, int);
+  void SetWave(int index, double amplitude, double wavelength, double direction, double steepness, double phase);
+  void RemoveAllWaves();
+  vtkSetMacro(WindDirection, double);
+  vtkGetMacro(WindDirection, double);
+  vtkSetMacro(WindLean, double);
+  vtkGetMacro(WindLean, double);
+  vtkSetMacro(WaterDepth, double);
+  vtkGetMacro(WaterDepth, double);
+  vtkSetMacro(MaxSteepness, double);
+  vtkGetMacro(MaxSteepness, double);
+  vtkSetMacro(BreakingDepthRatio, double);
+  vtkSetMacro(BreakingStretch, double);
+  vtkSetMacro(BreakingLean, double);
+  vtkSetMacro(BreakingShift, double);
+  vtkSetMacro(SeaLevel, double);
+  vtkGetMacro(SeaLevel, double);
+  /// Point array of floor elevations [m] on the input; empty: no bathymetry.
+  void SetBathymetryArray(const char* name);
+  vtkSetClampMacro(BathymetryResolution, int, 2, 4096);
+  //@}
+
+  //@{
+  /// Shading. ShadingMode 0: realistic; 1: one solid colour (SolidColor), for checking shapes;
+  /// 2: the wave normal as a colour (0.5 + 0.5 n).
+  vtkSetClampMacro(ShadingMode, int, 0, 2);
+  vtkSetVector3Macro(SolidColor, double);
+  vtkSetVector3Macro(DeepColor, double);
+  vtkSetVector3Macro(ShallowColor, double);
+  /// Metres of water over which the colour goes from shallow to deep.
+  vtkSetMacro(ColorDepth, double);
+  vtkSetVector3Macro(FoamColor, double);
+  vtkSetMacro(FoamAmount, double);
+  /// Sun elevation and azimuth [degrees], colour and intensity (linear radiance).
+  vtkSetMacro(SunElevation, double);
+  vtkSetMacro(SunAzimuth, double);
+  vtkSetVector3Macro(SunColor, double);
+  vtkSetMacro(SunIntensity, double);
+  vtkSetMacro(Shininess, double);
+  /// Procedural sky (when no environment images are given).
+  vtkSetVector3Macro(HorizonColor, double);
+  vtkSetVector3Macro(ZenithColor, double);
+  /// Six cube map faces (+X, -X, +Y, -Y, +Z, -Z; +Y of the images is world +Z), all or none.
+  void SetEnvironmentImage(int face, const char* file);
+  vtkSetMacro(EnvironmentScale, double);
+  /// Capillary ripples: metres per tile of the normal map, strength (0 off), drift speed, and the
+  /// distance beyond which they fade out.
+  vtkSetMacro(RippleScale, double);
+  vtkSetMacro(RippleStrength, double);
+  vtkSetMacro(RippleSpeed, double);
+  vtkSetMacro(RippleFade, double);
+  /// Exposure of the tone mapping; with AutoExposure, chosen so the average water pixel maps to
+  /// mid-grey (18 % linear) instead.
+  vtkSetMacro(Exposure, double);
+  vtkSetMacro(AutoExposure, bool);
+  /// The exposure used by the last render (the automatic one when AutoExposure is on).
+  double GetEffectiveExposure() const { return this->EffectiveExposure; }
+  //@}
+
+  /// Waves the GPU draws after clamping, and why a setting could not be used ("" when fine).
+  const char* GetLastError() const { return this->LastError.c_str(); }
+
+protected:
+  vtkPFGerstnerOceanRepresentation();
+  ~vtkPFGerstnerOceanRepresentation() override;
+
+private:
+  vtkPFGerstnerOceanRepresentation(const vtkPFGerstnerOceanRepresentation&) = delete;
+  void operator=(const vtkPFGerstnerOceanRepresentation&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+
+  /// Rebuilds the model (and the bathymetry textures) when parameters or the data changed.
+  void UpdateModel(vtkDataObject* delivered);
+  void UpdateShaders();
+  void UpdateUniforms(double time);
+
+  int SeaState = 2;
+  std::vector<double> Waves;
+  double WindDirection = 0.0, WindLean = 0.2, WaterDepth = 0.0, MaxSteepness = 0.9;
+  double BreakingDepthRatio = 0.78, BreakingStretch = 0.6, BreakingLean = 0.6, BreakingShift = 0.8;
+  double SeaLevel = 0.0;
+  std::string BathymetryArray;
+  int BathymetryResolution = 256;
+  int ShadingMode = 0;
+  double SolidColor[3] = { 1.0, 1.0, 1.0 };
+  double DeepColor[3] = { 0.004, 0.016, 0.045 };
+  double ShallowColor[3] = { 0.02, 0.20, 0.20 };
+  double ColorDepth = 4.0;
+  double FoamColor[3] = { 0.9, 0.92, 0.95 };
+  double FoamAmount = 1.0;
+  double SunElevation = 35.0, SunAzimuth = 200.0;
+  double SunColor[3] = { 1.0, 0.95, 0.85 };
+  double SunIntensity = 1.0, Shininess = 400.0;
+  double HorizonColor[3] = { 0.65, 0.75, 0.85 };
+  double ZenithColor[3] = { 0.12, 0.28, 0.60 };
+  std::string EnvironmentImages[6];
+  double EnvironmentScale = 1.0;
+  double RippleScale = 4.0, RippleStrength = 0.35, RippleSpeed = 1.0, RippleFade = 300.0;
+  double Exposure = 1.5;
+  bool AutoExposure = false;
+  double EffectiveExposure = 1.5;
+  std::string LastError;
+};
+
+#endif
