@@ -27,7 +27,10 @@ vtkStandardNewMacro(vtkPFGerstnerOcean);
 
 vtkPFGerstnerOcean::vtkPFGerstnerOcean()
 {
-  this->SetNumberOfInputPorts(1);
+  // The bathymetry comes on port 1; port 0 is never connected. pvpython's simple module gives a new
+  // proxy the active source as its port-0 input, which would silently turn whatever was selected
+  // into a sea floor.
+  this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(1);
 }
 
@@ -60,10 +63,22 @@ void vtkPFGerstnerOcean::RemoveAllWaves()
   }
 }
 
-int vtkPFGerstnerOcean::FillInputPortInformation(int, vtkInformation* info)
+void vtkPFGerstnerOcean::SetBathymetryConnection(vtkAlgorithmOutput* output)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
-  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  this->SetInputConnection(1, output);
+}
+
+int vtkPFGerstnerOcean::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+    info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  }
+  else
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+  }
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
 }
@@ -141,7 +156,7 @@ int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inpu
   p.breakingShift = this->BreakingShift;
 
   std::shared_ptr<Bathymetry> floor;
-  vtkDataObject* floorData = this->GetNumberOfInputConnections(0) > 0 ? vtkDataObject::GetData(inputVector[0], 0) : nullptr;
+  vtkDataObject* floorData = this->GetNumberOfInputConnections(1) > 0 ? vtkDataObject::GetData(inputVector[1], 0) : nullptr;
   if (floorData)
   {
     std::string error;

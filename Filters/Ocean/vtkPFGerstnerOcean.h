@@ -4,7 +4,8 @@
  *
  * A grid of rest points on the sea level is displaced by parafluid::ocean::GerstnerOcean (the
  * same model the Gerstner Ocean representation runs on the GPU). Waves come from a sea-state
- * preset or from the wave list. An optional input, Bathymetry, gives the sea floor: a 2D image
+ * preset or from the wave list. An optional input on port 1 (SetBathymetryConnection; port 0
+ * is never used), Bathymetry, gives the sea floor: a 2D image
  * whose point scalars are the floor elevation [m], or a terrain surface (rasterised at
  * BathymetryResolution); over it waves shoal, refract and break. Without it the water has the
  * uniform WaterDepth (0: deep water).
@@ -27,6 +28,9 @@ public:
   static vtkPFGerstnerOcean* New();
   vtkTypeMacro(vtkPFGerstnerOcean, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The sea floor (port 1): a 2D image of floor elevations or a terrain surface.
+  void SetBathymetryConnection(vtkAlgorithmOutput* output);
 
   enum SeaStates
   {

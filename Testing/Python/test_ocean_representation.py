@@ -1,0 +1,117 @@
+"""The Gerstner Ocean representation displaces a flat plane exactly as the Gerstner Ocean source
+displaces its grid: both drawn white on black from the same grazing camera at the same time must
+give the same image (up to a few silhouette pixels) and the same depth buffer."""
+import numpy as np
+from paraview.simple import *
+from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+from vtkmodules.util.numpy_support import vtk_to_numpy
+import pftest
+
+pftest.load(globals())
+
+SIZE = [480, 320]
+TIME = 3.3
+view = None
+
+
+def new_view():
+    global view
+    view = CreateRenderView()
+    view.ViewSize = SIZE
+    view.OrientationAxesVisibility = 0
+    view.Background = [0.0, 0.0, 0.0]
+    view.UseColorPaletteForBackground = 0
+
+
+def set_time(t):
+    # The time keeper drives every view's time (and resets it when sources come and go).
+    GetTimeKeeper().Time = t
+    view.ViewTime = t
+
+
+def capture(kind):
+    Render(view)
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(view.GetRenderWindow())
+    grab.ReadFrontBufferOff()
+    if kind == "depth":
+        grab.SetInputBufferTypeToZBuffer()
+    grab.Update()
+    image = grab.GetOutput()
+    array = vtk_to_numpy(image.GetPointData().GetScalars()).astype(np.float64)
+    array = array.reshape(SIZE[1], SIZE[0], -1)
+    if kind == "depth":
+        # Depth buffer to distance along the view direction [m], with this render's clipping range
+        # (it follows the visible bounds, which differ between the two).
+        # Cleared depth (1, the far plane) stays NaN: the orientation-axes corner clears depth under
+        # its viewport even when the axes are hidden.
+        near, far = view.GetActiveCamera().GetClippingRange()
+        array = np.where(array < 1.0, near * far / (far - array * (far - near)), np.nan)
+    return array
+
+
+def place_camera():
+    Render(view)  # the first render of a view resets its camera; place it afterwards
+    view.CameraPosition = [100.0, -15.0, 9.0]
+    view.CameraFocalPoint = [100.0, 80.0, 0.0]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
+    view.CameraViewAngle = 40.0
+    view.CenterOfRotation = [100.0, 80.0, 0.0]
+
+
+for state in ["Storm", "Swell"]:
+    new_view()
+    set_time(TIME)
+    source = GerstnerOcean(SeaState=state, WindDirection=60.0, Origin=[0.0, 0.0], Size=[200.0, 200.0],
+                           Resolution=[401, 401])
+    shown = Show(source, view)
+    shown.ColorArrayName = [None, ""]
+    shown.AmbientColor = [1.0, 1.0, 1.0]
+    shown.DiffuseColor = [1.0, 1.0, 1.0]
+    shown.Ambient = 1.0
+    shown.Diffuse = 0.0
+    shown.Specular = 0.0
+    shown.Interpolation = "Flat"
+    place_camera()
+    source_rgb, source_depth = capture("rgb"), capture("depth")
+    Hide(source, view)
+
+    plane = Plane(Origin=[0.0, 0.0, 0.0], Point1=[200.0, 0.0, 0.0], Point2=[0.0, 200.0, 0.0],
+                  XResolution=400, YResolution=400)
+    ocean = Show(plane, view)
+    ocean.SetRepresentationType("Gerstner Ocean")
+    ocean.ColorArrayName = [None, ""]
+    ocean.OceanSeaState = state
+    ocean.OceanWindDirection = 60.0
+    ocean.OceanShadingMode = "Solid colour"
+    ocean.OceanSolidColor = [1.0, 1.0, 1.0]
+    place_camera()
+    ocean_rgb, ocean_depth = capture("rgb"), capture("depth")
+    Hide(plane, view)
+
+    water = source_rgb[..., 0] > 127
+    pftest.check(0.3 < water.mean() < 0.95, "%s: the sea fills %.0f %% of the image" % (state, 100 * water.mean()))
+    differing = np.mean(np.abs(source_rgb[..., 0] - ocean_rgb[..., 0]) > 127)
+    both = water & (ocean_rgb[..., 0] > 127) & np.isfinite(source_depth[..., 0]) & np.isfinite(ocean_depth[..., 0])
+    depth_error = np.abs(source_depth[..., 0] - ocean_depth[..., 0])[both]
+    off = np.mean(depth_error > 0.01)
+    print("%s: %.4f %% of pixels differ in colour; depth |difference| median %.2e m, 95th percentile %.2e m, "
+          "%.3f %% of water pixels off by more than 1 cm"
+          % (state, 100 * differing, np.median(depth_error), np.percentile(depth_error, 95), 100 * off))
+    # Thresholds: silhouette pixels where float (GPU) and double (CPU) round differently.
+    pftest.check(differing < 0.002, "%s: %.3f %% of pixels differ between source and representation" % (state, 100 * differing))
+    # Depth: at grazing angles every crest hides the water behind it, and a sub-pixel difference
+    # in where a crest's edge falls swaps crest and background in a pixel (metres apart).
+    pftest.check(np.median(depth_error) < 0.002, "%s: median depth difference %g m" % (state, np.median(depth_error)))
+    pftest.check(off < 0.02, "%s: %.2f %% of pixels are more than 1 cm apart in depth" % (state, 100 * off))
+
+    last = (state, plane, ocean_depth, both, np.median(depth_error))
+
+# The comparison can tell waves apart: half a second later the depths have moved far more.
+state, plane, ocean_depth, both, agreement = last
+Show(plane, view)
+set_time(TIME + 0.5)
+later = capture("depth")
+moved = np.nanmedian(np.abs(later[..., 0] - ocean_depth[..., 0])[both])
+pftest.check(moved > 20 * agreement, "%s: 0.5 s later the depth moved by only %g m" % (state, moved))
+print("ocean representation: ok")
