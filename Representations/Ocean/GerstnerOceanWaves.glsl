@@ -3,9 +3,19 @@
 // parafluid::ocean::GerstnerOcean::evaluate (Filters/Core/GerstnerOcean.cxx) line for line; a
 // pvpython test renders both and compares images and depth buffers. Uniforms (oceanAmplitude,
 // ...) are declared by VTK from the representation's custom uniforms; OCEAN_FLOOR is defined
-// when a bathymetry is bound (oceanFloorTex: elevation; oceanPhase0..7: phase, wavenumber and
+// when a bathymetry is bound, OCEAN_DEEP in deep water without one (oceanFloorTex: elevation; oceanPhase0..7: phase, wavenumber and
 // cross-wise phase derivative of each wave on its own grid along the wave's direction).
 //=========================================================================
+
+// sin and cos of theta0 - delta, delta in [0, 0.5] (the wind's phase shift): as shiftPhase in C++.
+void oceanShiftPhase(float s0, float c0, float delta, out float s, out float c)
+{
+  float d2 = delta * delta;
+  float sd = delta * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0 * (1.0 - d2 / 42.0)));
+  float cd = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0 * (1.0 - d2 / 30.0 * (1.0 - d2 / 56.0)));
+  s = s0 * cd - c0 * sd;
+  c = c0 * cd + s0 * sd;
+}
 
 float oceanSmoothstep(float lo, float hi, float v)
 {
@@ -82,10 +92,33 @@ void oceanEvaluate(vec2 p, out vec3 offset, out vec3 dx, out vec3 dy, out float 
   float h = oceanDepth;
   bool deep = oceanDepth <= 0.0;
 #endif
-  if (deep || h > oceanMinDepth)
+#ifdef OCEAN_DEEP
+  {
+    // Deep water in one pass (no shore factors, no breaking, no tilt; the steepness clamp already
+    // holds the summed steepness under MaxSteepness): what most frames draw, and the vertex
+    // shader's cost in software rendering.
+    for (int i = 0; i < oceanWaveCount; ++i)
+    {
+      float A = oceanAmplitude[i], Q = oceanSteepness[i], k = oceanUniformK[i];
+      vec2 d = vec2(oceanDirX[i], oceanDirY[i]);
+      vec2 g = k * d;
+      float theta0 = g.x * p.x + g.y * p.y + oceanPhaseNow[i];
+      float s0 = sin(theta0), c0 = cos(theta0);
+      float S, C;
+      oceanShiftPhase(s0, c0, 0.5 * oceanLean[i] * (1.0 + s0), S, C);
+      float along = Q * A * C, up = A * S;
+      float dAlong = -Q * A * S, dUp = A * C;
+      offset += vec3(d * along, up);
+      vec2 gc = (1.0 - 0.5 * oceanLean[i] * c0) * g;
+      dx += vec3(d * dAlong, dUp) * gc.x;
+      dy += vec3(d * dAlong, dUp) * gc.y;
+    }
+  }
+#else
+  if (h > oceanMinDepth)
   {
     // Pass 1: phases and the shore factors, and the summed horizontal steepness.
-    float theta[16], cosTheta0[16], kLocal[16], gxs[16], gys[16], dirx[16], diry[16], sx[16], sz[16], decay[16];
+    float sinTheta[16], cosTheta[16], cosTheta0[16], kLocal[16], gxs[16], gys[16], dirx[16], diry[16], sx[16], sz[16], decay[16];
     float horizontal = 0.0;
     for (int i = 0; i < oceanWaveCount; ++i)
     {
@@ -108,7 +141,7 @@ void oceanEvaluate(vec2 p, out vec3 offset, out vec3 dx, out vec3 dy, out float 
       float theta0 = phi + oceanPhaseNow[i];
       float s0 = sin(theta0);
       cosTheta0[i] = cos(theta0);
-      theta[i] = theta0 - 0.5 * oceanLean[i] * (1.0 + s0);
+      oceanShiftPhase(s0, cosTheta0[i], 0.5 * oceanLean[i] * (1.0 + s0), sinTheta[i], cosTheta[i]);
       decay[i] = deep ? 0.0 : exp(-k * h);
       sx[i] = 1.0 / (1.0 - decay[i]);
       sz[i] = 1.0 - decay[i];
@@ -120,7 +153,7 @@ void oceanEvaluate(vec2 p, out vec3 offset, out vec3 dx, out vec3 dy, out float 
     {
       float A = oceanAmplitude[i], Q = oceanSteepness[i];
       float sxl = sx[i] * limit, szl = sz[i];
-      float S = sin(theta[i]), C = cos(theta[i]);
+      float S = sinTheta[i], C = cosTheta[i];
       float P = max(S, 0.0), dP = S > 0.0 ? C : 0.0;
       float b = deep ? 0.0 : oceanSmoothstep(0.7 * oceanBreakRatio, oceanBreakRatio, 2.0 * A * szl / h);
       breakingCrest = max(breakingCrest, b * P);
@@ -143,6 +176,7 @@ void oceanEvaluate(vec2 p, out vec3 offset, out vec3 dx, out vec3 dy, out float 
       dy += vec3(dirx[i] * dAlong * gy, diry[i] * dAlong * gy, dUp * gy);
     }
   }
+#endif
   jacobian = (1.0 + dx.x) * (1.0 + dy.y) - dx.y * dy.x;
   foam = clamp(max(breakingCrest, (0.6 - jacobian) / 0.6), 0.0, 1.0);
   depth = deep ? 1.0e30 : max(h, 0.0);

@@ -370,6 +370,12 @@ void vtkPFGerstnerOceanRepresentation::UpdateShaders()
   {
     defines += "#define OCEAN_CUBEMAP\n";
   }
+  if (!this->Internal->HasFloor && !(this->WaterDepth > 0.0))
+  {
+    // Deep water compiles to a single pass over the waves: software renderers run both sides of
+    // a branch, so the general path would cost even where it is not taken.
+    defines += "#define OCEAN_DEEP\n";
+  }
   const std::string key = "built\n" + defines;
   if (key == this->Internal->ShaderKey)
   {
@@ -389,34 +395,45 @@ void vtkPFGerstnerOceanRepresentation::UpdateShaders()
   }
   shaders->AddVertexShaderReplacement("//VTK::PositionVC::Dec", true,
     "//VTK::PositionVC::Dec\n" + defines + vertexSamplers + GerstnerOceanWaves +
-      "out vec3 oceanRestVSOutput;\nout vec3 oceanWorldVSOutput;\nout vec3 oceanEyeVSOutput;\n",
+      "out vec3 oceanRestVSOutput;\nout vec3 oceanWorldVSOutput;\nout vec3 oceanEyeVSOutput;\n"
+      "out vec3 oceanDxVSOutput;\nout vec3 oceanDyVSOutput;\nout vec2 oceanFoamDepthVSOutput;\n",
     false);
   shaders->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true,
     "  vec3 oceanOffset, oceanDx, oceanDy;\n"
     "  float oceanJ, oceanFoam, oceanH;\n"
     // VTK may shift and scale the coordinates it uploads (vertexMC); the camera's view-to-world
     // matrix, set every render, recovers world coordinates, in which the waves are defined.
-    "  mat4 oceanMCWC = oceanVCWC * MCVCMatrix;\n"
-    "  vec4 oceanRest = oceanMCWC * vertexMC;\n"
+    // The shift and scale are per axis, so world = MC * scale + shift with scale the diagonal of
+    // VCWC * MCVC: cheaper per vertex than forming and inverting that matrix.
+    "  vec4 oceanRest = oceanVCWC * (MCVCMatrix * vertexMC);\n"
+    "  vec3 oceanScale = vec3(dot(vec4(oceanVCWC[0][0], oceanVCWC[1][0], oceanVCWC[2][0], oceanVCWC[3][0]), MCVCMatrix[0]),\n"
+    "    dot(vec4(oceanVCWC[0][1], oceanVCWC[1][1], oceanVCWC[2][1], oceanVCWC[3][1]), MCVCMatrix[1]),\n"
+    "    dot(vec4(oceanVCWC[0][2], oceanVCWC[1][2], oceanVCWC[2][2], oceanVCWC[3][2]), MCVCMatrix[2]));\n"
     "  oceanEvaluate(oceanRest.xy, oceanOffset, oceanDx, oceanDy, oceanJ, oceanFoam, oceanH);\n"
-    "  vec4 oceanVertex = vertexMC + vec4(inverse(mat3(oceanMCWC)) * oceanOffset, 0.0);\n"
+    "  vec4 oceanVertex = vertexMC + vec4(oceanOffset / oceanScale, 0.0);\n"
     "  oceanRestVSOutput = oceanRest.xyz;\n"
-    "  oceanWorldVSOutput = (oceanMCWC * oceanVertex).xyz;\n"
+    "  oceanWorldVSOutput = oceanRest.xyz + oceanOffset;\n"
     "  oceanEyeVSOutput = (oceanVCWC * vec4(0.0, 0.0, 0.0, 1.0)).xyz;\n"
+    "  oceanDxVSOutput = oceanDx;\n"
+    "  oceanDyVSOutput = oceanDy;\n"
+    "  oceanFoamDepthVSOutput = vec2(oceanFoam, min(oceanH, 1.0e6));\n"
     "  vertexVCVSOutput = MCVCMatrix * oceanVertex;\n"
     "  gl_Position = MCDCMatrix * oceanVertex;\n",
     false);
-  // Fragment: declarations after the texture samplers VTK declares (TMap), then the shading.
+  // Fragment: the waves' derivatives come interpolated from the vertices (evaluating eight waves
+  // per pixel cost 3x the frame time in software rendering, for no visible gain at a few vertices
+  // per metre); the normal is built from them per pixel. Declarations go after the texture
+  // samplers VTK declares (TMap).
   shaders->AddFragmentShaderReplacement("//VTK::PositionVC::Dec", true,
     "//VTK::PositionVC::Dec\n" + defines +
-      "in vec3 oceanRestVSOutput;\nin vec3 oceanWorldVSOutput;\nin vec3 oceanEyeVSOutput;\n",
+      "in vec3 oceanRestVSOutput;\nin vec3 oceanWorldVSOutput;\nin vec3 oceanEyeVSOutput;\n"
+      "in vec3 oceanDxVSOutput;\nin vec3 oceanDyVSOutput;\nin vec2 oceanFoamDepthVSOutput;\n",
     false);
   shaders->AddFragmentShaderReplacement(
-    "//VTK::Clip::Dec", true, std::string(GerstnerOceanWaves) + GerstnerOceanShading + "//VTK::Clip::Dec\n", false);
+    "//VTK::Clip::Dec", true, std::string(GerstnerOceanShading) + "//VTK::Clip::Dec\n", false);
   shaders->AddFragmentShaderReplacement("//VTK::Light::Impl", true,
-    "  vec3 oceanOffset, oceanDx, oceanDy;\n"
-    "  float oceanJ, oceanFoam, oceanH;\n"
-    "  oceanEvaluate(oceanRestVSOutput.xy, oceanOffset, oceanDx, oceanDy, oceanJ, oceanFoam, oceanH);\n"
+    "  vec3 oceanDx = oceanDxVSOutput, oceanDy = oceanDyVSOutput;\n"
+    "  float oceanFoam = oceanFoamDepthVSOutput.x, oceanH = oceanFoamDepthVSOutput.y;\n"
     "  vec3 oceanColor = oceanShadingMode == 1 ? oceanSolidColor\n"
     "    : oceanShadingMode == 2 ? 0.5 + 0.5 * normalize(cross(vec3(1.0 + oceanDx.x, oceanDx.y, oceanDx.z), vec3(oceanDy.x, 1.0 + oceanDy.y, oceanDy.z)))\n"
     "    : oceanShade(oceanWorldVSOutput, oceanEyeVSOutput, oceanRestVSOutput.xy, oceanDx, oceanDy, oceanFoam, oceanH);\n"
