@@ -24,9 +24,16 @@ float oceanSmoothstep(float lo, float hi, float v)
 }
 
 #ifdef OCEAN_FLOOR
+// Data textures hold 24-bit fixed point in their RGB bytes (see makeFixedPointTexture).
+float oceanDecode(vec4 texel, float lowest, float span)
+{
+  vec3 b = floor(texel.rgb * 255.0 + 0.5);
+  return lowest + (b.r * 65536.0 + b.g * 256.0 + b.b) * (span / 16777215.0);
+}
+
 float oceanElevation(int i, int j)
 {
-  return texelFetch(oceanFloorTex, ivec2(i, j), 0).r;
+  return oceanDecode(texelFetch(oceanFloorTex, ivec2(i, j), 0), oceanFloorRange.x, oceanFloorRange.y);
 }
 
 // Depth below sea level at p and its gradient (bilinear, clamped at the grid's edges).
@@ -44,17 +51,25 @@ float oceanFloorDepth(vec2 p, out vec2 slope)
   return oceanSeaLevel - e;
 }
 
-vec3 oceanPhaseTexel(int w, ivec2 ij)
+vec4 oceanPhaseFetch(int w, ivec2 ij)
 {
   // Samplers cannot be indexed by a loop variable in GLSL 1.50.
-  if (w == 0) return texelFetch(oceanPhase0, ij, 0).rgb;
-  if (w == 1) return texelFetch(oceanPhase1, ij, 0).rgb;
-  if (w == 2) return texelFetch(oceanPhase2, ij, 0).rgb;
-  if (w == 3) return texelFetch(oceanPhase3, ij, 0).rgb;
-  if (w == 4) return texelFetch(oceanPhase4, ij, 0).rgb;
-  if (w == 5) return texelFetch(oceanPhase5, ij, 0).rgb;
-  if (w == 6) return texelFetch(oceanPhase6, ij, 0).rgb;
-  return texelFetch(oceanPhase7, ij, 0).rgb;
+  if (w == 0) return texelFetch(oceanPhase0, ij, 0);
+  if (w == 1) return texelFetch(oceanPhase1, ij, 0);
+  if (w == 2) return texelFetch(oceanPhase2, ij, 0);
+  if (w == 3) return texelFetch(oceanPhase3, ij, 0);
+  if (w == 4) return texelFetch(oceanPhase4, ij, 0);
+  if (w == 5) return texelFetch(oceanPhase5, ij, 0);
+  if (w == 6) return texelFetch(oceanPhase6, ij, 0);
+  return texelFetch(oceanPhase7, ij, 0);
+}
+
+// (phase, wavenumber, phase derivative across) of wave w at sample (i, j): three texels.
+vec3 oceanPhaseTexel(int w, ivec2 ij)
+{
+  return vec3(oceanDecode(oceanPhaseFetch(w, ivec2(3 * ij.x, ij.y)), oceanPhaseLo[w], oceanPhaseSpan[w]),
+    oceanDecode(oceanPhaseFetch(w, ivec2(3 * ij.x + 1, ij.y)), oceanKLo[w], oceanKSpan[w]),
+    oceanDecode(oceanPhaseFetch(w, ivec2(3 * ij.x + 2, ij.y)), oceanAcrossLo[w], oceanAcrossSpan[w]));
 }
 
 // Phase, local wavenumber and wave vector of wave w at p (WavePhaseField::sample).

@@ -2,6 +2,7 @@
 
 #include "GerstnerOceanShading.h"
 #include "GerstnerOceanWaves.h"
+#include "vtkPFOceanExposure.h"
 #include "vtkPFOceanTextures.h"
 
 #include "parafluid/Bathymetry.h"
@@ -24,6 +25,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
+#include "vtkRenderer.h"
 #include "vtkShaderProperty.h"
 #include "vtkTexture.h"
 #include "vtkUniforms.h"
@@ -37,11 +39,6 @@ namespace
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxGpuWaves = 16;   // in deep or uniform water
 constexpr int kMaxFloorWaves = 8;  // over a bathymetry (one phase texture each)
-
-float luminance(const double c[3])
-{
-  return static_cast<float>(0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]);
-}
 }
 
 struct vtkPFGerstnerOceanRepresentation::Internals
@@ -54,6 +51,11 @@ struct vtkPFGerstnerOceanRepresentation::Internals
   std::string CubeMapKey;
   vtkSmartPointer<vtkTexture> Ripples;
   vtkSmartPointer<vtkTexture> CubeMap;
+  // Decoding ranges of the fixed-point data textures: floor (lowest, span); per wave, for phase,
+  // wavenumber and phase derivative across: (lowest, span) each.
+  double FloorRange[2] = { 0.0, 1.0 };
+  std::vector<double> PhaseRanges;
+  double EnvironmentMean[3] = { 0.0, 0.0, 0.0 };
 };
 
 vtkStandardNewMacro(vtkPFGerstnerOceanRepresentation);
@@ -286,29 +288,36 @@ void vtkPFGerstnerOceanRepresentation::UpdateModel(vtkDataObject* delivered)
   if (floor)
   {
     const std::vector<float>& e = floor->elevation();
-    this->Property->SetTexture("oceanFloorTex", parafluid::vtk::makeDataTexture(e.data(), floor->nodesX(), floor->nodesY(), 1));
+    const std::vector<double> elevation(e.begin(), e.end());
+    std::vector<double> range;
+    this->Property->SetTexture("oceanFloorTex",
+      parafluid::vtk::makeFixedPointTexture(elevation.data(), floor->nodesX(), floor->nodesY(), 1, range));
+    this->Internal->FloorRange[0] = range[0];
+    this->Internal->FloorRange[1] = range[1];
     const auto& fields = this->Internal->Model->phaseFields();
+    this->Internal->PhaseRanges.assign(6 * kMaxFloorWaves, 0.0);
     for (std::size_t w = 0; w < static_cast<std::size_t>(kMaxFloorWaves); ++w)
     {
       const std::string name = "oceanPhase" + std::to_string(w);
-      std::vector<float> texels;
+      std::vector<double> samples;
       int ns = 1, nt = 1;
       if (w < fields.size())
       {
         ns = fields[w].samplesAlong(), nt = fields[w].samplesAcross();
-        texels.resize(3 * static_cast<std::size_t>(ns) * nt);
+        samples.resize(3 * static_cast<std::size_t>(ns) * nt);
         for (std::size_t k = 0; k < static_cast<std::size_t>(ns) * nt; ++k)
         {
-          texels[3 * k] = static_cast<float>(fields[w].phases()[k]);
-          texels[3 * k + 1] = fields[w].wavenumbers()[k];
-          texels[3 * k + 2] = fields[w].phasesAcross()[k];
+          samples[3 * k] = fields[w].phases()[k];
+          samples[3 * k + 1] = fields[w].wavenumbers()[k];
+          samples[3 * k + 2] = fields[w].phasesAcross()[k];
         }
       }
       else
       {
-        texels.assign(3, 0.0f); // unused slot: the sampler still needs a texture
+        samples.assign(3, 0.0); // unused slot: the sampler still needs a texture
       }
-      this->Property->SetTexture(name.c_str(), parafluid::vtk::makeDataTexture(texels.data(), ns, nt, 3));
+      this->Property->SetTexture(name.c_str(), parafluid::vtk::makeFixedPointTexture(samples.data(), ns, nt, 3, range));
+      std::copy(range.begin(), range.end(), this->Internal->PhaseRanges.begin() + 6 * w);
     }
   }
   else
@@ -337,7 +346,7 @@ void vtkPFGerstnerOceanRepresentation::UpdateModel(vtkDataObject* delivered)
       std::array<std::string, 6> files;
       std::copy(this->EnvironmentImages, this->EnvironmentImages + 6, files.begin());
       std::string error;
-      this->Internal->CubeMap = parafluid::vtk::loadCubeMap(files, error);
+      this->Internal->CubeMap = parafluid::vtk::loadCubeMap(files, error, this->Internal->EnvironmentMean);
       if (!this->Internal->CubeMap)
       {
         vtkErrorMacro("Gerstner Ocean: " << error);
@@ -468,20 +477,50 @@ void vtkPFGerstnerOceanRepresentation::UpdateUniforms(double time)
   const double sunElevation = this->SunElevation * kPi / 180.0, sunAzimuth = this->SunAzimuth * kPi / 180.0;
   const float sun[3] = { static_cast<float>(std::cos(sunElevation) * std::cos(sunAzimuth)),
     static_cast<float>(std::cos(sunElevation) * std::sin(sunAzimuth)), static_cast<float>(std::sin(sunElevation)) };
-  // Auto exposure: the mean radiance of water seen at typical angles (about 10 % reflection of a
-  // sky at 30 degrees elevation, the rest the lit body colour) mapped to 18 % grey.
+  // Auto exposure: the mean luminance of the water as this camera sees it (flat sea, same shading
+  // model) mapped to 18 % grey by the tone curve 1 - exp(-L e).
   this->EffectiveExposure = this->Exposure;
-  if (this->AutoExposure)
+  auto* renderView = vtkPVRenderView::SafeDownCast(this->GetView());
+  if (this->AutoExposure && renderView)
   {
-    double sky[3];
+    parafluid::vtk::OceanExposureScene scene;
+    vtkCamera* camera = renderView->GetActiveCamera();
+    camera->GetPosition(scene.eye);
+    camera->GetFocalPoint(scene.focal);
+    camera->GetViewUp(scene.up);
+    scene.viewAngle = camera->GetViewAngle();
+    double aspect[2] = { 1.0, 1.0 };
+    renderView->GetRenderer()->GetAspect(aspect);
+    scene.aspect = aspect[0] / std::max(aspect[1], 1e-9);
+    scene.seaLevel = this->SeaLevel;
     for (int c = 0; c < 3; ++c)
     {
-      sky[c] = this->HorizonColor[c] + (this->ZenithColor[c] - this->HorizonColor[c]) * std::pow(0.5, 0.45);
+      scene.sun[c] = sun[c];
+      scene.sunColor[c] = this->SunColor[c];
+      scene.horizon[c] = this->HorizonColor[c];
+      scene.zenith[c] = this->ZenithColor[c];
+      scene.environmentMean[c] = this->Internal->EnvironmentMean[c] * this->EnvironmentScale;
+      scene.deepColor[c] = this->DeepColor[c];
+      scene.shallowColor[c] = this->ShallowColor[c];
     }
-    const double lit = (0.35 + 0.65 * std::max(std::sin(sunElevation), 0.0)) * this->SunIntensity;
-    const double body = luminance(this->DeepColor) * lit;
-    const double mean = 0.9 * body + 0.1 * luminance(sky) * (this->Internal->HasCubeMap ? this->EnvironmentScale : 1.0);
-    this->EffectiveExposure = mean > 0.0 ? -std::log(1.0 - 0.18) / mean : this->Exposure;
+    scene.sunIntensity = this->SunIntensity;
+    scene.shininess = this->Shininess;
+    scene.hasEnvironment = this->Internal->HasCubeMap;
+    scene.colorDepth = std::max(this->ColorDepth, 1e-3);
+    if (const auto* floor = model->bathymetry())
+    {
+      scene.depth = [floor](double x, double y) { return floor->depth(x, y); };
+    }
+    else if (this->WaterDepth > 0.0)
+    {
+      const double depth = this->WaterDepth;
+      scene.depth = [depth](double, double) { return depth; };
+    }
+    const double mean = parafluid::vtk::meanWaterLuminance(scene);
+    if (mean > 0.0)
+    {
+      this->EffectiveExposure = -std::log(1.0 - 0.18) / mean;
+    }
   }
 
   vtkNew<vtkMatrix4x4> viewToWorld;
@@ -537,6 +576,20 @@ void vtkPFGerstnerOceanRepresentation::UpdateUniforms(double time)
       u->SetUniform1fv("oceanGridStep", kMaxFloorWaves, st);
       u->SetUniform1fv("oceanGridNS", kMaxFloorWaves, ns);
       u->SetUniform1fv("oceanGridNT", kMaxFloorWaves, nt);
+      const float floorRange[2] = { static_cast<float>(this->Internal->FloorRange[0]),
+        static_cast<float>(this->Internal->FloorRange[1]) };
+      u->SetUniform2f("oceanFloorRange", floorRange);
+      const char* names[6] = { "oceanPhaseLo", "oceanPhaseSpan", "oceanKLo", "oceanKSpan", "oceanAcrossLo",
+        "oceanAcrossSpan" };
+      for (int r = 0; r < 6; ++r)
+      {
+        float values[kMaxFloorWaves];
+        for (int w = 0; w < kMaxFloorWaves; ++w)
+        {
+          values[w] = static_cast<float>(this->Internal->PhaseRanges[6 * w + r]);
+        }
+        u->SetUniform1fv(names[r], kMaxFloorWaves, values);
+      }
     }
   }
   vtkUniforms* f = this->Actor->GetShaderProperty()->GetFragmentCustomUniforms();

@@ -1,5 +1,6 @@
 #include "vtkPFOceanTextures.h"
 
+#include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkImageFlip.h"
@@ -10,7 +11,9 @@
 #include "vtkTexture.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -94,26 +97,56 @@ vtkSmartPointer<vtkTexture> makeRippleTexture(int size, unsigned seed)
   return texture;
 }
 
-vtkSmartPointer<vtkTexture> makeDataTexture(const float* values, int nx, int ny, int components)
+vtkSmartPointer<vtkTexture> makeFixedPointTexture(
+  const double* values, int nx, int ny, int components, std::vector<double>& ranges)
 {
+  const std::size_t samples = static_cast<std::size_t>(nx) * ny;
+  ranges.assign(2 * static_cast<std::size_t>(components), 0.0);
+  for (int c = 0; c < components; ++c)
+  {
+    double lo = values[c], hi = values[c];
+    for (std::size_t k = 0; k < samples; ++k)
+    {
+      lo = std::min(lo, values[k * components + c]);
+      hi = std::max(hi, values[k * components + c]);
+    }
+    ranges[2 * c] = lo;
+    ranges[2 * c + 1] = std::max(hi - lo, 1e-30);
+  }
+  constexpr double top = 16777215.0; // 2^24 - 1
   vtkNew<vtkImageData> image;
-  image->SetDimensions(nx, ny, 1);
-  vtkNew<vtkFloatArray> data;
-  data->SetNumberOfComponents(components);
-  data->SetNumberOfTuples(static_cast<vtkIdType>(nx) * ny);
-  std::copy(values, values + static_cast<std::size_t>(nx) * ny * components, data->GetPointer(0));
-  image->GetPointData()->SetScalars(data);
+  image->SetDimensions(nx * components, ny, 1);
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(static_cast<vtkIdType>(samples) * components);
+  unsigned char* bytes = rgb->GetPointer(0);
+  for (std::size_t k = 0; k < samples; ++k)
+  {
+    for (int c = 0; c < components; ++c)
+    {
+      const double unit = (values[k * components + c] - ranges[2 * c]) / ranges[2 * c + 1];
+      const auto code = static_cast<std::uint32_t>(std::lround(std::clamp(unit, 0.0, 1.0) * top));
+      unsigned char* texel = bytes + 3 * (k * components + c);
+      texel[0] = static_cast<unsigned char>(code >> 16);
+      texel[1] = static_cast<unsigned char>((code >> 8) & 0xff);
+      texel[2] = static_cast<unsigned char>(code & 0xff);
+    }
+  }
+  image->GetPointData()->SetScalars(rgb);
   vtkNew<vtkTexture> texture;
   texture->SetInputData(image);
   texture->SetColorModeToDirectScalars();
   texture->InterpolateOff();
+  texture->MipmapOff();
   texture->RepeatOff();
   texture->EdgeClampOn();
   return texture;
 }
 
-vtkSmartPointer<vtkTexture> loadCubeMap(const std::array<std::string, 6>& files, std::string& error)
+vtkSmartPointer<vtkTexture> loadCubeMap(const std::array<std::string, 6>& files, std::string& error, double mean[3])
 {
+  double sum[3] = { 0.0, 0.0, 0.0 };
+  double count = 0.0;
   vtkNew<vtkTexture> cube;
   cube->CubeMapOn();
   cube->InterpolateOn();
@@ -136,7 +169,26 @@ vtkSmartPointer<vtkTexture> loadCubeMap(const std::array<std::string, 6>& files,
     flip->SetInputConnection(reader->GetOutputPort());
     flip->SetFilteredAxis(1);
     flip->Update();
+    vtkDataArray* scalars = flip->GetOutput()->GetPointData()->GetScalars();
+    if (!scalars || scalars->GetNumberOfComponents() < 3)
+    {
+      error = std::string("EnvironmentImages: the ") + faces[f] + " face '" + files[f] + "' is not an RGB image";
+      return nullptr;
+    }
+    const double scale = scalars->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+    for (vtkIdType t = 0; t < scalars->GetNumberOfTuples(); ++t)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        sum[c] += scale * scalars->GetComponent(t, c);
+      }
+    }
+    count += static_cast<double>(scalars->GetNumberOfTuples());
     cube->SetInputDataObject(f, flip->GetOutput());
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    mean[c] = count > 0.0 ? sum[c] / count : 0.0;
   }
   return cube;
 }

@@ -5,8 +5,8 @@
    against the same plane drawn by the plain Surface representation (the ratio is the cost of the
    displacement and water shading).
 Usage: PARAFLUID_PLUGIN=build/lib/paraview-5.11/plugins/ParaFluid/ParaFluid.so \\
-       scripts/with-xvfb.sh pvpython Testing/Benchmarks/ocean_benchmark.py [frames]
-Writes ocean_benchmark.csv in the working directory."""
+       scripts/with-xvfb.sh pvpython Testing/Benchmarks/ocean_benchmark.py [frames] [csv]
+Writes the figures to csv (default build/ocean_benchmark.csv)."""
 import os
 import statistics
 import sys
@@ -50,7 +50,7 @@ def frame_time(kind):
     shown.SetRepresentationType(kind)
     if kind == "Gerstner Ocean":
         shown.OceanSeaState = "Storm"
-        shown.OceanShadingMode = os.environ.get("PF_MODE", "Realistic")
+
     Render(view)
     times = []
     for k in range(frames):
@@ -66,7 +66,8 @@ ocean = frame_time("Gerstner Ocean")
 print("frame, 512 x 512 plane at 1280 x 720: Surface %.1f ms, Gerstner Ocean %.1f ms, ratio %.2f"
       % (surface, ocean, ocean / surface))
 rows += [("surface_frame_ms", surface), ("ocean_frame_ms", ocean), ("ratio", ocean / surface)]
-with open("ocean_benchmark.csv", "w") as f:
+csv = sys.argv[2] if len(sys.argv) > 2 else os.path.join("build", "ocean_benchmark.csv")
+with open(csv, "w") as f:
     f.write("measure,value\n")
     for name, value in rows:
         f.write("%s,%g\n" % (name, value))

@@ -81,3 +81,41 @@ def check(condition, message):
     if not condition:
         print("FAILED: " + message, file=sys.stderr)
         raise SystemExit(1)
+
+
+def compare_with_baseline(png, name, threshold=10.0):
+    """Compares the image `png` with Testing/Baselines/<name> by VTK's vtkImageDifference.
+    Threshold: the thresholded error (VTK's regression-test measure; 10 is its default), which
+    tolerates anti-aliasing and driver noise but not things in other places or other colours.
+    With PARAFLUID_UPDATE_BASELINE set, the image becomes the new baseline instead."""
+    import shutil
+    from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
+    from vtkmodules.vtkImagingCore import vtkImageDifference
+
+    baseline = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Baselines", name)
+    if os.environ.get("PARAFLUID_UPDATE_BASELINE"):
+        shutil.copyfile(png, baseline)
+        print("baseline updated:", baseline)
+
+    def read(path):
+        reader = vtkPNGReader()
+        reader.SetFileName(path)
+        reader.Update()
+        return reader.GetOutput()
+
+    test, base = read(png), read(baseline)
+    check(test.GetDimensions() == base.GetDimensions(),
+          "%s: image size %s != baseline %s" % (name, test.GetDimensions(), base.GetDimensions()))
+    diff = vtkImageDifference()
+    diff.SetInputData(test)
+    diff.SetImageData(base)
+    diff.Update()
+    error = diff.GetThresholdedError()
+    print("%s: thresholded error %.3f (threshold %.1f)" % (name, error, threshold))
+    if error > threshold:
+        writer = vtkPNGWriter()
+        writer.SetFileName(os.path.splitext(png)[0] + "-difference.png")
+        writer.SetInputConnection(diff.GetOutputPort())
+        writer.Write()
+        print("test image and difference kept in", os.path.dirname(png))
+    check(error <= threshold, "%s: render differs from the baseline" % name)
