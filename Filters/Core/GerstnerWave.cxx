@@ -75,4 +75,25 @@ std::vector<GerstnerWave> seaStatePreset(SeaState state, double windDirection)
   }
   return waves;
 }
+
+std::vector<GerstnerWave> chooseWaves(int seaState, const std::vector<double>& list, double windDirection)
+{
+  if (seaState != 0)
+  {
+    const SeaState state = seaState == 1 ? SeaState::Calm : seaState == 2 ? SeaState::Swell : SeaState::Storm;
+    return seaStatePreset(state, windDirection);
+  }
+  std::vector<GerstnerWave> waves;
+  for (std::size_t w = 0; w + 4 < list.size(); w += 5)
+  {
+    GerstnerWave wave;
+    wave.amplitude = list[w];
+    wave.wavelength = list[w + 1];
+    wave.direction = list[w + 2];
+    wave.steepness = list[w + 3];
+    wave.phase = list[w + 4];
+    waves.push_back(wave);
+  }
+  return waves;
+}
 } // namespace parafluid::ocean

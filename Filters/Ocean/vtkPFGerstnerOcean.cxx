@@ -121,30 +121,10 @@ int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inpu
   }
 
   OceanParameters p;
-  if (this->SeaState == CUSTOM)
+  p.waves = chooseWaves(this->SeaState, this->Waves, this->WindDirection);
+  if (this->SeaState == CUSTOM && p.waves.empty())
   {
-    for (std::size_t w = 0; w + 4 < this->Waves.size(); w += 5)
-    {
-      GerstnerWave wave;
-      wave.amplitude = this->Waves[w];
-      wave.wavelength = this->Waves[w + 1];
-      wave.direction = this->Waves[w + 2];
-      wave.steepness = this->Waves[w + 3];
-      wave.phase = this->Waves[w + 4];
-      p.waves.push_back(wave);
-    }
-    if (p.waves.empty())
-    {
-      vtkWarningMacro("Sea State is Custom but the wave list is empty: the sea is flat");
-    }
-  }
-  else
-  {
-    using parafluid::ocean::SeaState;
-    const SeaState state = this->SeaState == CALM ? SeaState::Calm
-      : this->SeaState == SWELL                   ? SeaState::Swell
-                                                  : SeaState::Storm;
-    p.waves = seaStatePreset(state, this->WindDirection);
+    vtkWarningMacro("Sea State is Custom but the wave list is empty: the sea is flat");
   }
   p.depth = this->WaterDepth > 0.0 ? this->WaterDepth : kDeepWater;
   p.maxSteepness = this->MaxSteepness;

@@ -190,24 +190,7 @@ void vtkPFGerstnerOceanRepresentation::UpdateModel(vtkDataObject* delivered)
   this->LastError.clear();
 
   OceanParameters p;
-  if (this->SeaState == 0)
-  {
-    for (std::size_t w = 0; w + 4 < this->Waves.size(); w += 5)
-    {
-      GerstnerWave wave;
-      wave.amplitude = this->Waves[w];
-      wave.wavelength = this->Waves[w + 1];
-      wave.direction = this->Waves[w + 2];
-      wave.steepness = this->Waves[w + 3];
-      wave.phase = this->Waves[w + 4];
-      p.waves.push_back(wave);
-    }
-  }
-  else
-  {
-    p.waves = seaStatePreset(this->SeaState == 1 ? SeaState::Calm : this->SeaState == 2 ? SeaState::Swell : SeaState::Storm,
-      this->WindDirection);
-  }
+  p.waves = chooseWaves(this->SeaState, this->Waves, this->WindDirection);
   p.depth = this->WaterDepth > 0.0 ? this->WaterDepth : kDeepWater;
   p.maxSteepness = this->MaxSteepness;
   p.windDirection = this->WindDirection;

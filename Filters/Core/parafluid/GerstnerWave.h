@@ -30,4 +30,9 @@ enum class SeaState
 /// Eight waves around a peak wavelength, directions spread about `windDirection` [degrees];
 /// the summed Q k A stays below 0.5 (storm), so presets never fold in deep water.
 std::vector<GerstnerWave> seaStatePreset(SeaState state, double windDirection);
+
+/// The waves a Gerstner Ocean source or representation draws: `seaState` 0 takes the wave list
+/// (five numbers per wave: amplitude, wavelength, direction, steepness, phase; a trailing partial
+/// wave is ignored), 1..3 the Calm, Swell and Storm presets about `windDirection`.
+std::vector<GerstnerWave> chooseWaves(int seaState, const std::vector<double>& list, double windDirection);
 } // namespace parafluid::ocean
