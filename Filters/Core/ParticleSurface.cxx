@@ -1,0 +1,170 @@
+#include "parafluid/ParticleSurface.h"
+
+#include "parafluid/SparseMarchingCubes.h"
+#include "parafluid/TaubinSmoothing.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace parafluid::surface
+{
+namespace
+{
+double secondsSince(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+} // namespace
+
+std::string validate(const ParticleSurfaceParameters& p)
+{
+  std::ostringstream why;
+  if (!(p.particleSpacing > 0.0) || !std::isfinite(p.particleSpacing))
+  {
+    why << "ParticleSpacing must be a positive length (got " << p.particleSpacing << " m)";
+  }
+  else if (!(p.cellSize >= 0.05 && p.cellSize <= 10.0))
+  {
+    why << "CellSize must be between 0.05 and 10 particle spacings (got " << p.cellSize << ")";
+  }
+  else if (!(p.kernelRadius >= 1.0 && p.kernelRadius <= 10.0))
+  {
+    why << "KernelRadius must be between 1 and 10 particle spacings (got " << p.kernelRadius << ")";
+  }
+  else if (!(p.isoValue > 0.0 && p.isoValue < 1.0))
+  {
+    why << "IsoValue must lie between 0 and 1, exclusive (got " << p.isoValue
+        << "); 0.5 is the edge of the particles' volume";
+  }
+  else if (p.smoothingIterations < 0 || p.smoothingIterations > 1000)
+  {
+    why << "Smoothing must be between 0 and 1000 iterations (got " << p.smoothingIterations << ")";
+  }
+  return why.str();
+}
+
+SurfaceMesh ParticleSurface::extract(const float* xyz, std::size_t n, const ParticleSurfaceParameters& p, const Progress& progress)
+{
+  const std::string problem = validate(p);
+  if (!problem.empty())
+  {
+    throw std::invalid_argument(problem);
+  }
+  this->Statistics = ParticleSurfaceStatistics();
+  const double d = p.particleSpacing;
+  auto t0 = std::chrono::steady_clock::now();
+  this->Field.build(xyz, n, p.cellSize * d, p.kernelRadius * d, d * d * d);
+  this->Statistics.fieldSeconds = secondsSince(t0);
+  this->Statistics.allocatedBlocks = this->Field.blockCount();
+  if (n == 0 || (progress && !progress(0.6)))
+  {
+    return SurfaceMesh();
+  }
+  t0 = std::chrono::steady_clock::now();
+  MarchingCubesStatistics mc;
+  SurfaceMesh mesh = sparseMarchingCubes(this->Field, static_cast<float>(p.isoValue), p.computeNormals, &mc);
+  this->Statistics.meshSeconds = secondsSince(t0);
+  this->Statistics.surfaceBlocks = mc.surfaceBlocks;
+  this->Statistics.workingBytes = this->Field.bytes() + mc.bytes;
+  if (progress && !progress(0.85))
+  {
+    return SurfaceMesh();
+  }
+  t0 = std::chrono::steady_clock::now();
+  taubinSmooth(mesh.points, mesh.triangles, p.smoothingIterations);
+  this->Statistics.smoothSeconds = secondsSince(t0);
+  if (p.smoothingIterations > 0)
+  {
+    // Neighbour lists (two uint32 per triangle corner, then unique) and the second point buffer.
+    const std::size_t smoothing = mesh.triangles.size() * 2 * sizeof(std::uint32_t) + mesh.points.size() * sizeof(float) +
+      (mesh.vertexCount() + 1) * sizeof(std::uint32_t);
+    this->Statistics.workingBytes = std::max(this->Statistics.workingBytes, this->Field.bytes() + smoothing);
+  }
+  if (progress)
+  {
+    progress(1.0);
+  }
+  return mesh;
+}
+
+std::vector<float> ParticleSurface::interpolate(const SurfaceMesh& mesh, const float* values, int components) const
+{
+  const std::size_t nv = mesh.vertexCount();
+  std::vector<float> out(nv * static_cast<std::size_t>(components), 0.0f);
+  if (components <= 0 || this->Field.blockCount() == 0)
+  {
+    return out;
+  }
+  const double c = this->Field.cellSize();
+  const double r = this->Field.kernelRadius();
+  const double r2 = r * r;
+  const double blockEdge = SparseDensityField::BlockPoints * c;
+  const double* origin = this->Field.origin();
+  const int reach = this->Field.blockReach();
+  const auto& sortedXYZ = this->Field.sortedPositions();
+  const auto& sortedIndex = this->Field.sortedIndex();
+  const long long count = static_cast<long long>(nv);
+#pragma omp parallel
+  {
+    std::vector<double> sum(static_cast<std::size_t>(components));
+#pragma omp for schedule(dynamic, 256)
+    for (long long v = 0; v < count; ++v)
+    {
+      const double x[3] = { mesh.points[3 * v], mesh.points[3 * v + 1], mesh.points[3 * v + 2] };
+      int bc[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        bc[a] = static_cast<int>(std::floor((x[a] - origin[a]) / blockEdge));
+      }
+      std::fill(sum.begin(), sum.end(), 0.0);
+      double weight = 0.0;
+      for (int dz = -reach; dz <= reach; ++dz)
+      {
+        for (int dy = -reach; dy <= reach; ++dy)
+        {
+          for (int dx = -reach; dx <= reach; ++dx)
+          {
+            const std::int64_t nb = this->Field.findBlock(bc[0] + dx, bc[1] + dy, bc[2] + dz);
+            if (nb < 0)
+            {
+              continue;
+            }
+            for (std::uint32_t k = this->Field.particleBegin(nb); k < this->Field.particleEnd(nb); ++k)
+            {
+              const double ex = sortedXYZ[3 * k] - x[0], ey = sortedXYZ[3 * k + 1] - x[1], ez = sortedXYZ[3 * k + 2] - x[2];
+              const double s2 = ex * ex + ey * ey + ez * ez;
+              if (s2 >= r2)
+              {
+                continue;
+              }
+              const double t = r2 - s2;
+              const double w = t * t * t; // poly6, unnormalised: the normalisation cancels
+              weight += w;
+              const float* value = values + static_cast<std::size_t>(sortedIndex[k]) * components;
+              for (int comp = 0; comp < components; ++comp)
+              {
+                sum[comp] += w * value[comp];
+              }
+            }
+          }
+        }
+      }
+      if (weight > 0.0)
+      {
+        for (int comp = 0; comp < components; ++comp)
+        {
+          out[static_cast<std::size_t>(v) * components + comp] = static_cast<float>(sum[comp] / weight);
+        }
+      }
+    }
+  }
+  return out;
+}
+
+void ParticleSurface::release()
+{
+  this->Field = SparseDensityField();
+}
+} // namespace parafluid::surface

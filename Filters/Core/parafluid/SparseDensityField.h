@@ -1,0 +1,85 @@
+#pragma once
+// The particles' covered-volume fraction, sampled on a grid only where it can be non-zero.
+//
+//   phi(x) = V * sum_j W(|x - x_j|, r),  W = poly6 with support radius r, V = particle volume d^3,
+//
+// so phi is about 1 inside a uniformly filled region and falls to 0 at distance r beyond its last
+// particles; phi = 1/2 sits on the edge of the volume the particles stand for (N * d^3 in all).
+// The grid is cut into blocks of 8^3 points. A block holds values only when one of its points is
+// within r + sqrt(3) * cell of some particle, so cells further than that from every particle are
+// never allocated or visited, and a point of a missing block and all its neighbours have phi = 0.
+// Blocks are found through a hash table; all loops run over blocks in a fixed order, so the values
+// are the same for any number of threads.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace parafluid::surface
+{
+class SparseDensityField
+{
+public:
+  static constexpr int BlockPoints = 8; // grid points per block edge
+  static constexpr int BlockSize = BlockPoints * BlockPoints * BlockPoints;
+
+  /// Samples phi for n particles (x, y, z interleaved) on a grid of spacing `cellSize` [m] with
+  /// kernel support `kernelRadius` [m] and particle volume `particleVolume` [m^3]. Throws
+  /// std::invalid_argument for non-positive sizes, non-finite coordinates, or a bounding box too
+  /// large to index (more than 2^21 blocks along an axis).
+  void build(const float* xyz, std::size_t n, double cellSize, double kernelRadius, double particleVolume);
+
+  std::size_t blockCount() const { return this->Keys.size(); }
+  /// Block coordinates (in blocks) of block b; its point (i, j, k) is at
+  /// origin + cellSize * (8 * block + (i, j, k)).
+  void blockCoordinates(std::size_t b, int c[3]) const;
+  /// Index of the block at block coordinates c, or -1 when it holds no values (phi = 0 there).
+  std::int64_t findBlock(int bx, int by, int bz) const;
+  /// The block's 512 values, x fastest.
+  const float* values(std::size_t b) const { return this->Values.data() + b * BlockSize; }
+  /// Smallest and largest value in block b.
+  float minimum(std::size_t b) const { return this->Minimum[b]; }
+  float maximum(std::size_t b) const { return this->Maximum[b]; }
+
+  const double* origin() const { return this->Origin; }
+  double cellSize() const { return this->CellSize; }
+  double kernelRadius() const { return this->KernelRadius; }
+  double particleVolume() const { return this->ParticleVolume; }
+
+  /// Particles sorted by block: original index and position of sorted slot k; the particles of
+  /// block b are slots [particleBegin(b), particleEnd(b)).
+  const std::vector<std::uint32_t>& sortedIndex() const { return this->SortedIndex; }
+  const std::vector<float>& sortedPositions() const { return this->SortedXYZ; }
+  std::uint32_t particleBegin(std::size_t b) const { return this->ParticleBegin[b]; }
+  std::uint32_t particleEnd(std::size_t b) const { return this->ParticleBegin[b + 1]; }
+  /// How far (in blocks) a particle's kernel reaches: blocks within this many of a point's block
+  /// hold every particle that can contribute to it.
+  int blockReach() const { return this->BlockReach; }
+
+  /// Bytes held (values, block tables, sorted particles).
+  std::size_t bytes() const;
+
+  /// phi's normalisation: phi = scale * sum_j (rho^2 - s^2)^3 with s, rho in cells.
+  static double kernelScale(double cellSize, double kernelRadius, double particleVolume);
+
+private:
+  void sortParticles(const float* xyz, std::size_t n);
+  void allocateBlocks();
+  void sampleBlocks();
+  void buildHash();
+  std::uint64_t key(int bx, int by, int bz) const
+  {
+    return (static_cast<std::uint64_t>(bz) << 42) | (static_cast<std::uint64_t>(by) << 21) | static_cast<std::uint64_t>(bx);
+  }
+
+  double Origin[3] = { 0, 0, 0 };
+  double CellSize = 1, KernelRadius = 1, ParticleVolume = 1;
+  int BlockReach = 1;
+  std::vector<std::uint64_t> Keys;          // sorted block keys of the allocated blocks
+  std::vector<std::uint32_t> ParticleBegin; // Keys.size() + 1 entries
+  std::vector<float> Values, Minimum, Maximum;
+  std::vector<std::uint64_t> HashKeys;
+  std::vector<std::uint32_t> HashSlots;
+  std::vector<std::uint32_t> SortedIndex;
+  std::vector<float> SortedXYZ;
+};
+} // namespace parafluid::surface
