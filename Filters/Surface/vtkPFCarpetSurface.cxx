@@ -1,0 +1,166 @@
+#include "vtkPFCarpetSurface.h"
+
+#include "vtkPFBathymetry.h"
+#include "vtkPFParticleArrays.h"
+#include "vtkPFSurfaceMeshOutput.h"
+
+#include "parafluid/Bathymetry.h"
+#include "parafluid/CarpetSurface.h"
+
+#include "vtkDataObject.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+vtkStandardNewMacro(vtkPFCarpetSurface);
+
+vtkPFCarpetSurface::vtkPFCarpetSurface()
+  : Carpet(new parafluid::surface::CarpetSurface)
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+vtkPFCarpetSurface::~vtkPFCarpetSurface() = default;
+
+int vtkPFCarpetSurface::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+int vtkPFCarpetSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* local = vtkPointSet::GetData(inputVector[0]);
+  vtkDataObject* terrainData = inputVector[1]->GetNumberOfInformationObjects() > 0
+    ? inputVector[1]->GetInformationObject(0)->Get(vtkDataObject::DATA_OBJECT())
+    : nullptr;
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!local)
+  {
+    vtkErrorMacro("Carpet Surface: the input is not a point set (particles)");
+    return 0;
+  }
+  if (!(this->FallAcceleration >= 0.0) || !(this->MinDepth >= 0.0))
+  {
+    vtkErrorMacro("Carpet Surface: FallAcceleration and MinDepth must be zero or positive");
+    return 0;
+  }
+  bool buildsHere = true;
+  vtkSmartPointer<vtkDataObject> gathered = parafluid::vtk::gatherToFirstProcess(local, buildsHere);
+  if (!buildsHere)
+  {
+    output->Initialize();
+    return 1;
+  }
+  vtkPointSet* input = vtkPointSet::SafeDownCast(gathered);
+  const vtkIdType n = input ? input->GetNumberOfPoints() : 0;
+  const double time = local->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP())
+    ? local->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
+    : 0.0;
+
+  // The state continues only forward in time, under unchanged properties and terrain.
+  const vtkMTimeType settings = std::max(this->GetMTime(), terrainData ? terrainData->GetMTime() : 0);
+  const bool continues = this->HasState && settings == this->StateTime && time >= this->LastTime;
+  try
+  {
+    if (!continues)
+    {
+      const int r = this->Resolution;
+      std::vector<float> ground(static_cast<std::size_t>(r) * r);
+      double bounds[6] = { 0, 0, 0, 0, 0, 0 };
+      if (terrainData)
+      {
+        std::string error;
+        auto terrain = vtkPFBathymetryFrom(terrainData, 0.0, std::max(r, 64), error);
+        if (!terrain)
+        {
+          vtkErrorMacro("Carpet Surface: Terrain: " << error);
+          return 0;
+        }
+        double b[4];
+        terrain->bounds(b);
+        std::copy(b, b + 4, bounds);
+        for (int j = 0; j < r; ++j)
+        {
+          for (int i = 0; i < r; ++i)
+          {
+            const double x = b[0] + (i + 0.5) * (b[1] - b[0]) / r, y = b[2] + (j + 0.5) * (b[3] - b[2]) / r;
+            // Depth below sea level 0 is minus the ground height.
+            ground[static_cast<std::size_t>(j) * r + i] = static_cast<float>(-terrain->depth(x, y));
+          }
+        }
+      }
+      else
+      {
+        vtkDataArray* domain =
+          vtkArrayDownCast<vtkDataArray>(local->GetFieldData() ? local->GetFieldData()->GetAbstractArray("domain_bounds") : nullptr);
+        if (domain && domain->GetNumberOfValues() == 6)
+        {
+          for (int k = 0; k < 6; ++k)
+          {
+            bounds[k] = domain->GetComponent(k / domain->GetNumberOfComponents(), k % domain->GetNumberOfComponents());
+          }
+        }
+        else if (n > 0)
+        {
+          input->GetBounds(bounds);
+        }
+        else
+        {
+          output->Initialize();
+          return 1; // no particles and nothing to lay a grid on
+        }
+        std::fill(ground.begin(), ground.end(), static_cast<float>(bounds[4]));
+      }
+      if (!(bounds[1] > bounds[0]) || !(bounds[3] > bounds[2]))
+      {
+        vtkErrorMacro("Carpet Surface: the domain has no extent in x or y (" << bounds[0] << ".." << bounds[1] << ", "
+                                                                            << bounds[2] << ".." << bounds[3] << ")");
+        return 0;
+      }
+      this->Carpet->setGrid(bounds[0], bounds[2], bounds[1], bounds[3], r, std::move(ground));
+      this->LastTime = time;
+    }
+    std::vector<float> positionStorage;
+    const float* xyz = n > 0 ? parafluid::vtk::positionsAsFloat(input, positionStorage) : nullptr;
+    this->Carpet->advance(xyz, static_cast<std::size_t>(n), time - this->LastTime, this->FallAcceleration, this->MinDepth);
+    this->LastTime = time;
+    this->StateTime = settings;
+    this->HasState = true;
+  }
+  catch (const std::exception& e)
+  {
+    this->HasState = false;
+    vtkErrorMacro("Carpet Surface: " << e.what());
+    return 0;
+  }
+  std::vector<float> depth;
+  std::size_t visited = 0;
+  const parafluid::surface::SurfaceMesh mesh = this->Carpet->mesh(&depth, &visited);
+  parafluid::vtk::meshToPolyData(mesh, output);
+  output->GetPointData()->AddArray(parafluid::vtk::floatArray("depth", 1, depth));
+  output->GetPointData()->SetActiveScalars("depth");
+  this->WetCells = static_cast<vtkIdType>(this->Carpet->wetCells());
+  this->VisitedNodes = static_cast<vtkIdType>(visited);
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
+  return 1;
+}
+
+void vtkPFCarpetSurface::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Resolution: " << this->Resolution << "\n";
+  os << indent << "FallAcceleration: " << this->FallAcceleration << "\n";
+  os << indent << "MinDepth: " << this->MinDepth << "\n";
+}

@@ -1,0 +1,149 @@
+#include "vtkPFParticleSurface.h"
+
+#include "vtkPFParticleArrays.h"
+#include "vtkPFSurfaceMeshOutput.h"
+
+#include "parafluid/ParticleSurface.h"
+
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+
+#include <stdexcept>
+
+vtkStandardNewMacro(vtkPFParticleSurface);
+
+vtkPFParticleSurface::vtkPFParticleSurface() = default;
+vtkPFParticleSurface::~vtkPFParticleSurface() = default;
+
+void vtkPFParticleSurface::AddArrayToInterpolate(const char* name)
+{
+  if (name && *name)
+  {
+    this->ArraysToInterpolate.emplace_back(name);
+    this->Modified();
+  }
+}
+
+void vtkPFParticleSurface::ClearArraysToInterpolate()
+{
+  if (!this->ArraysToInterpolate.empty())
+  {
+    this->ArraysToInterpolate.clear();
+    this->Modified();
+  }
+}
+
+int vtkPFParticleSurface::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+int vtkPFParticleSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* local = vtkPointSet::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!local)
+  {
+    vtkErrorMacro("Particle Surface: the input is not a point set (particles)");
+    return 0;
+  }
+  bool buildsHere = true;
+  vtkSmartPointer<vtkDataObject> gathered = parafluid::vtk::gatherToFirstProcess(local, buildsHere);
+  if (!buildsHere)
+  {
+    output->Initialize();
+    return 1;
+  }
+  vtkPointSet* input = vtkPointSet::SafeDownCast(gathered);
+  parafluid::surface::ParticleSurfaceParameters p;
+  p.particleSpacing = this->ParticleSpacing > 0.0
+    ? this->ParticleSpacing
+    : parafluid::vtk::fieldValue(local->GetFieldData(), "particle_spacing", 0.0);
+  p.cellSize = this->CellSize;
+  p.kernelRadius = this->KernelRadius;
+  p.isoValue = this->IsoValue;
+  p.smoothingIterations = this->Smoothing;
+  p.computeNormals = this->ComputeNormals;
+  if (!(p.particleSpacing > 0.0))
+  {
+    vtkErrorMacro("Particle Surface: set ParticleSpacing (the distance between neighbouring particles, metres); the "
+                  "input has no particle_spacing field data to take it from");
+    return 0;
+  }
+  const std::string problem = parafluid::surface::validate(p);
+  if (!problem.empty())
+  {
+    vtkErrorMacro("Particle Surface: " << problem);
+    return 0;
+  }
+  // The arrays to interpolate, checked before the long part.
+  std::vector<vtkDataArray*> arrays;
+  for (const std::string& name : this->ArraysToInterpolate)
+  {
+    vtkDataArray* array = input ? input->GetPointData()->GetArray(name.c_str()) : nullptr;
+    if (!array && input && input->GetNumberOfPoints() > 0)
+    {
+      vtkErrorMacro("Particle Surface: the particles have no numeric point array '" << name << "' to interpolate");
+      return 0;
+    }
+    if (array)
+    {
+      arrays.push_back(array);
+    }
+  }
+  std::vector<float> positionStorage;
+  const vtkIdType n = input ? input->GetNumberOfPoints() : 0;
+  const float* xyz = n > 0 ? parafluid::vtk::positionsAsFloat(input, positionStorage) : nullptr;
+  parafluid::surface::ParticleSurface surface;
+  parafluid::surface::SurfaceMesh mesh;
+  try
+  {
+    mesh = surface.extract(xyz, static_cast<std::size_t>(n), p, [this](double fraction) {
+      this->UpdateProgress(0.9 * fraction);
+      return this->GetAbortExecute() == 0;
+    });
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("Particle Surface: " << e.what());
+    return 0;
+  }
+  parafluid::vtk::meshToPolyData(mesh, output);
+  for (vtkDataArray* array : arrays)
+  {
+    const int components = array->GetNumberOfComponents();
+    std::vector<float> values(static_cast<std::size_t>(n) * components);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      for (int c = 0; c < components; ++c)
+      {
+        values[static_cast<std::size_t>(i) * components + c] = static_cast<float>(array->GetComponent(i, c));
+      }
+    }
+    output->GetPointData()->AddArray(
+      parafluid::vtk::floatArray(array->GetName(), components, surface.interpolate(mesh, values.data(), components)));
+  }
+  const auto& stats = surface.statistics();
+  this->AllocatedBlocks = static_cast<vtkIdType>(stats.allocatedBlocks);
+  this->SurfaceBlocks = static_cast<vtkIdType>(stats.surfaceBlocks);
+  this->WorkingBytes = static_cast<vtkIdType>(stats.workingBytes);
+  if (input)
+  {
+    output->GetFieldData()->PassData(input->GetFieldData());
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkPFParticleSurface::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ParticleSpacing: " << this->ParticleSpacing << "\n";
+  os << indent << "CellSize: " << this->CellSize << "\n";
+  os << indent << "KernelRadius: " << this->KernelRadius << "\n";
+  os << indent << "IsoValue: " << this->IsoValue << "\n";
+  os << indent << "Smoothing: " << this->Smoothing << "\n";
+  os << indent << "ComputeNormals: " << this->ComputeNormals << "\n";
+}
