@@ -3,6 +3,7 @@
 #include "parafluid/SparseMarchingCubes.h"
 #include "parafluid/TaubinSmoothing.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -55,7 +56,7 @@ SurfaceMesh ParticleSurface::extract(const float* xyz, std::size_t n, const Part
   this->Statistics = ParticleSurfaceStatistics();
   const double d = p.particleSpacing;
   auto t0 = std::chrono::steady_clock::now();
-  this->Field.build(xyz, n, p.cellSize * d, p.kernelRadius * d, d * d * d);
+  this->Field.build(xyz, n, p.cellSize * d, p.kernelRadius * d, d * d * d, p.isoValue);
   this->Statistics.fieldSeconds = secondsSince(t0);
   this->Statistics.allocatedBlocks = this->Field.blockCount();
   if (n == 0 || (progress && !progress(0.6)))
@@ -67,7 +68,7 @@ SurfaceMesh ParticleSurface::extract(const float* xyz, std::size_t n, const Part
   SurfaceMesh mesh = sparseMarchingCubes(this->Field, static_cast<float>(p.isoValue), p.computeNormals, &mc);
   this->Statistics.meshSeconds = secondsSince(t0);
   this->Statistics.surfaceBlocks = mc.surfaceBlocks;
-  this->Statistics.workingBytes = this->Field.bytes() + mc.bytes;
+  this->Statistics.workingBytes = std::max(this->Field.sortPeakBytes(), this->Field.bytes() + mc.bytes);
   if (progress && !progress(0.85))
   {
     return SurfaceMesh();
@@ -97,10 +98,11 @@ std::vector<float> ParticleSurface::interpolate(const SurfaceMesh& mesh, const f
   {
     return out;
   }
+  // Distances in cells, as the field keeps the particles.
   const double c = this->Field.cellSize();
-  const double r = this->Field.kernelRadius();
+  const double r = this->Field.kernelRadius() / c;
   const double r2 = r * r;
-  const double blockEdge = SparseDensityField::BlockPoints * c;
+  const double blockEdge = SparseDensityField::BlockPoints;
   const double* origin = this->Field.origin();
   const int reach = this->Field.blockReach();
   const auto& sortedXYZ = this->Field.sortedPositions();
@@ -112,11 +114,12 @@ std::vector<float> ParticleSurface::interpolate(const SurfaceMesh& mesh, const f
 #pragma omp for schedule(dynamic, 256)
     for (long long v = 0; v < count; ++v)
     {
-      const double x[3] = { mesh.points[3 * v], mesh.points[3 * v + 1], mesh.points[3 * v + 2] };
+      const double x[3] = { (mesh.points[3 * v] - origin[0]) / c, (mesh.points[3 * v + 1] - origin[1]) / c,
+        (mesh.points[3 * v + 2] - origin[2]) / c };
       int bc[3];
       for (int a = 0; a < 3; ++a)
       {
-        bc[a] = static_cast<int>(std::floor((x[a] - origin[a]) / blockEdge));
+        bc[a] = static_cast<int>(std::floor(x[a] / blockEdge));
       }
       std::fill(sum.begin(), sum.end(), 0.0);
       double weight = 0.0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <omp.h>
 #include <stdexcept>
 #include <string>
 #ifdef __GLIBCXX__
@@ -64,7 +65,8 @@ double SparseDensityField::kernelScale(double cellSize, double kernelRadius, dou
   return particleVolume * 315.0 / (64.0 * Pi * std::pow(rho, 9) * cellSize * cellSize * cellSize);
 }
 
-void SparseDensityField::build(const float* xyz, std::size_t n, double cellSize, double kernelRadius, double particleVolume)
+void SparseDensityField::build(
+  const float* xyz, std::size_t n, double cellSize, double kernelRadius, double particleVolume, double isoValue)
 {
   if (!(cellSize > 0.0) || !(kernelRadius > 0.0) || !(particleVolume > 0.0) || !std::isfinite(cellSize) ||
     !std::isfinite(kernelRadius) || !std::isfinite(particleVolume))
@@ -81,7 +83,8 @@ void SparseDensityField::build(const float* xyz, std::size_t n, double cellSize,
   this->BlockReach = std::max(1, static_cast<int>(std::ceil(kernelRadius / (B * cellSize))));
   this->Keys.clear();
   this->ParticleBegin.assign(1, 0);
-  this->Values.clear();
+  this->Stored.clear();
+  this->Storage.clear();
   this->Minimum.clear();
   this->Maximum.clear();
   this->SortedIndex.clear();
@@ -95,7 +98,7 @@ void SparseDensityField::build(const float* xyz, std::size_t n, double cellSize,
   this->sortParticles(xyz, n);
   this->allocateBlocks();
   this->buildHash();
-  this->sampleBlocks();
+  this->sampleBlocks(static_cast<float>(isoValue));
 }
 
 void SparseDensityField::sortParticles(const float* xyz, std::size_t n)
@@ -144,6 +147,7 @@ void SparseDensityField::sortParticles(const float* xyz, std::size_t n)
     keyed[i] = { this->key(c[0], c[1], c[2]), static_cast<std::uint32_t>(i) };
   }
   sortRange(keyed.begin(), keyed.end());
+  this->SortPeakBytes = n * (sizeof(KeyedParticle) + sizeof(std::uint32_t) + 3 * sizeof(float));
   this->SortedIndex.resize(n);
   this->SortedXYZ.resize(3 * n);
 #pragma omp parallel for
@@ -153,7 +157,8 @@ void SparseDensityField::sortParticles(const float* xyz, std::size_t n)
     this->SortedIndex[k] = i;
     for (int a = 0; a < 3; ++a)
     {
-      this->SortedXYZ[3 * k + a] = xyz[3 * static_cast<std::size_t>(i) + a];
+      this->SortedXYZ[3 * k + a] =
+        static_cast<float>((xyz[3 * static_cast<std::size_t>(i) + a] - this->Origin[a]) / this->CellSize);
     }
   }
   // The occupied blocks, in key order, as (key, first sorted slot); kept in Keys/ParticleBegin
@@ -200,8 +205,8 @@ void SparseDensityField::allocateBlocks()
     std::size_t cells = 1;
     for (int a = 0; a < 3; ++a)
     {
-      const double low = (lo[a] - this->Origin[a] - reach) / c;
-      const double high = (hi[a] - this->Origin[a] + reach) / c;
+      const double low = lo[a] - reach / c;
+      const double high = hi[a] + reach / c;
       const int b0 = std::max(0, static_cast<int>(std::ceil((low - (B - 1)) / B)));
       const int b1 = static_cast<int>(std::floor(high / B));
       range[6 * o + 2 * a] = b0;
@@ -357,80 +362,146 @@ inline void splatParticle(float* acc, const float l[3], float rho, float rho2)
 }
 } // namespace
 
-void SparseDensityField::sampleBlocks()
+void SparseDensityField::splatBlock(std::size_t b, float* acc) const
 {
-  const std::size_t nBlocks = this->Keys.size();
-  this->Values.assign(nBlocks * BlockSize, 0.0f);
-  this->Minimum.assign(nBlocks, 0.0f);
-  this->Maximum.assign(nBlocks, 0.0f);
   const float rho = static_cast<float>(this->KernelRadius / this->CellSize);
   const float rho2 = rho * rho;
-  const float scale = static_cast<float>(kernelScale(this->CellSize, this->KernelRadius, this->ParticleVolume));
-  const double inverseCell = 1.0 / this->CellSize;
+  const float upper = static_cast<float>(B - 1) + rho;
   const int reach = this->BlockReach;
-  // Particle positions in cells from the origin, in sorted order (float is exact enough: the
-  // grid is limited to 2^24 cells along an axis).
-  const std::size_t n = this->SortedIndex.size();
-  std::vector<float> cells(3 * n);
-  const long long particles = static_cast<long long>(n);
-#pragma omp parallel for
-  for (long long k = 0; k < particles; ++k)
+  int bc[3];
+  unpack(this->Keys[b], bc);
+  std::fill(acc, acc + BlockSize, 0.0f);
+  // The block's first point, in cells from the origin.
+  const float base[3] = { static_cast<float>(B * bc[0]), static_cast<float>(B * bc[1]), static_cast<float>(B * bc[2]) };
+  const float* cells = this->SortedXYZ.data();
+  for (int dz = -reach; dz <= reach; ++dz)
   {
-    for (int a = 0; a < 3; ++a)
+    for (int dy = -reach; dy <= reach; ++dy)
     {
-      cells[3 * k + a] = static_cast<float>((this->SortedXYZ[3 * k + a] - this->Origin[a]) * inverseCell);
+      for (int dx = -reach; dx <= reach; ++dx)
+      {
+        const std::int64_t nb = this->findBlock(bc[0] + dx, bc[1] + dy, bc[2] + dz);
+        if (nb < 0)
+        {
+          continue;
+        }
+        const std::uint32_t end = this->ParticleBegin[nb + 1];
+        for (std::uint32_t k = this->ParticleBegin[nb]; k < end; ++k)
+        {
+          const float l[3] = { cells[3 * k] - base[0], cells[3 * k + 1] - base[1], cells[3 * k + 2] - base[2] };
+          if (l[0] < -rho || l[1] < -rho || l[2] < -rho || l[0] > upper || l[1] > upper || l[2] > upper)
+          {
+            continue;
+          }
+          splatParticle(acc, l, rho, rho2);
+        }
+      }
     }
   }
-  const float upper = static_cast<float>(B - 1) + rho;
+  const float scale = static_cast<float>(kernelScale(this->CellSize, this->KernelRadius, this->ParticleVolume));
+  for (int p = 0; p < BlockSize; ++p)
+  {
+    acc[p] *= scale;
+  }
+}
+
+void SparseDensityField::sampleBlocks(float iso)
+{
+  const std::size_t nBlocks = this->Keys.size();
+  this->Stored.assign(nBlocks, nullptr);
+  this->Storage.clear();
+  this->Minimum.assign(nBlocks, 0.0f);
+  this->Maximum.assign(nBlocks, 0.0f);
   const long long count = static_cast<long long>(nBlocks);
-#pragma omp parallel for schedule(dynamic, 16)
+  // Pass 1: every block's range; only blocks the surface passes through keep their values.
+  std::vector<std::vector<std::unique_ptr<float[]>>> kept(static_cast<std::size_t>(omp_get_max_threads()));
+#pragma omp parallel
+  {
+    std::unique_ptr<float[]> scratch(new float[BlockSize]);
+    auto& mine = kept[static_cast<std::size_t>(omp_get_thread_num())];
+#pragma omp for schedule(dynamic, 16)
+    for (long long b = 0; b < count; ++b)
+    {
+      this->splatBlock(static_cast<std::size_t>(b), scratch.get());
+      const auto range = std::minmax_element(scratch.get(), scratch.get() + BlockSize);
+      this->Minimum[b] = *range.first;
+      this->Maximum[b] = *range.second;
+      if (*range.first <= iso && *range.second > iso)
+      {
+        this->Stored[b] = scratch.get();
+        mine.push_back(std::move(scratch));
+        scratch.reset(new float[BlockSize]);
+      }
+    }
+  }
+  for (auto& list : kept)
+  {
+    for (auto& block : list)
+    {
+      this->Storage.push_back(std::move(block));
+    }
+  }
+  // Pass 2: marching cubes also reads the blocks around every block it polygonises (a uniform
+  // block whose upper neighbour lies on the other side included): recompute and keep those.
+  std::vector<char> needed(nBlocks, 0);
+  auto side = [&](std::int64_t b) { return b < 0 ? 0 : (this->Maximum[b] <= iso ? 0 : (this->Minimum[b] > iso ? 1 : 2)); };
+#pragma omp parallel for schedule(dynamic, 64)
   for (long long b = 0; b < count; ++b)
   {
     int bc[3];
     unpack(this->Keys[b], bc);
-    float* acc = this->Values.data() + static_cast<std::size_t>(b) * BlockSize;
-    // The block's first point, in cells from the origin.
-    const float base[3] = { static_cast<float>(B * bc[0]), static_cast<float>(B * bc[1]), static_cast<float>(B * bc[2]) };
-    for (int dz = -reach; dz <= reach; ++dz)
+    bool crosses = side(b) == 2;
+    for (int n = 1; n < 8 && !crosses; ++n)
     {
-      for (int dy = -reach; dy <= reach; ++dy)
+      crosses = side(this->findBlock(bc[0] + (n & 1), bc[1] + ((n >> 1) & 1), bc[2] + ((n >> 2) & 1))) != side(b);
+    }
+    if (!crosses)
+    {
+      continue;
+    }
+    for (int dz = -1; dz <= 1; ++dz)
+    {
+      for (int dy = -1; dy <= 1; ++dy)
       {
-        for (int dx = -reach; dx <= reach; ++dx)
+        for (int dx = -1; dx <= 1; ++dx)
         {
           const std::int64_t nb = this->findBlock(bc[0] + dx, bc[1] + dy, bc[2] + dz);
-          if (nb < 0)
+          if (nb >= 0 && !this->Stored[nb])
           {
-            continue;
-          }
-          const std::uint32_t end = this->ParticleBegin[nb + 1];
-          for (std::uint32_t k = this->ParticleBegin[nb]; k < end; ++k)
-          {
-            const float l[3] = { cells[3 * k] - base[0], cells[3 * k + 1] - base[1], cells[3 * k + 2] - base[2] };
-            if (l[0] < -rho || l[1] < -rho || l[2] < -rho || l[0] > upper || l[1] > upper || l[2] > upper)
-            {
-              continue;
-            }
-            splatParticle(acc, l, rho, rho2);
+            needed[nb] = 1; // benign race: every writer writes 1
           }
         }
       }
     }
-    float lo = std::numeric_limits<float>::max(), hi = -lo;
-    for (int p = 0; p < BlockSize; ++p)
+  }
+  std::vector<std::uint32_t> recompute;
+  for (std::size_t b = 0; b < nBlocks; ++b)
+  {
+    if (needed[b])
     {
-      acc[p] *= scale;
-      lo = std::min(lo, acc[p]);
-      hi = std::max(hi, acc[p]);
+      recompute.push_back(static_cast<std::uint32_t>(b));
     }
-    this->Minimum[b] = lo;
-    this->Maximum[b] = hi;
+  }
+  const std::size_t first = this->Storage.size();
+  for (std::size_t k = 0; k < recompute.size(); ++k)
+  {
+    this->Storage.emplace_back(new float[BlockSize]);
+  }
+  const long long extra = static_cast<long long>(recompute.size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (long long k = 0; k < extra; ++k)
+  {
+    float* values = this->Storage[first + static_cast<std::size_t>(k)].get();
+    this->splatBlock(recompute[k], values);
+    this->Stored[recompute[k]] = values;
   }
 }
 
 std::size_t SparseDensityField::bytes() const
 {
   return this->Keys.capacity() * sizeof(std::uint64_t) + this->ParticleBegin.capacity() * sizeof(std::uint32_t) +
-    (this->Values.capacity() + this->Minimum.capacity() + this->Maximum.capacity()) * sizeof(float) +
+    this->Storage.size() * BlockSize * sizeof(float) + this->Storage.capacity() * sizeof(void*) +
+    this->Stored.capacity() * sizeof(float*) + (this->Minimum.capacity() + this->Maximum.capacity()) * sizeof(float) +
     this->HashKeys.capacity() * sizeof(std::uint64_t) + this->HashSlots.capacity() * sizeof(std::uint32_t) +
     this->SortedIndex.capacity() * sizeof(std::uint32_t) + this->SortedXYZ.capacity() * sizeof(float);
 }

@@ -35,6 +35,7 @@ void gatherPadded(const SparseDensityField& field, std::size_t b, float* out)
   int bc[3];
   field.blockCoordinates(b, bc);
   const float* neighbours[27];
+  float fill[27];
   for (int dz = -1; dz <= 1; ++dz)
   {
     for (int dy = -1; dy <= 1; ++dy)
@@ -42,7 +43,11 @@ void gatherPadded(const SparseDensityField& field, std::size_t b, float* out)
       for (int dx = -1; dx <= 1; ++dx)
       {
         const std::int64_t nb = field.findBlock(bc[0] + dx, bc[1] + dy, bc[2] + dz);
-        neighbours[(dz + 1) * 9 + (dy + 1) * 3 + (dx + 1)] = nb < 0 ? nullptr : field.values(static_cast<std::size_t>(nb));
+        const int slot = (dz + 1) * 9 + (dy + 1) * 3 + (dx + 1);
+        neighbours[slot] = nb < 0 ? nullptr : field.values(static_cast<std::size_t>(nb));
+        // A block without values lies wholly on one side (the field never reads one beside the
+        // surface); its smallest value stands in. A missing block is zero.
+        fill[slot] = nb < 0 ? 0.0f : field.minimum(static_cast<std::size_t>(nb));
       }
     }
   }
@@ -59,7 +64,7 @@ void gatherPadded(const SparseDensityField& field, std::size_t b, float* out)
         const int ox = i < 0 ? -1 : (i >= B ? 1 : 0);
         const int lx = i - ox * B;
         const float* block = neighbours[(oz + 1) * 9 + (oy + 1) * 3 + (ox + 1)];
-        out[padded(i, j, k)] = block ? block[(lz * B + ly) * B + lx] : 0.0f;
+        out[padded(i, j, k)] = block ? block[(lz * B + ly) * B + lx] : fill[(oz + 1) * 9 + (oy + 1) * 3 + (ox + 1)];
       }
     }
   }

@@ -9,9 +9,12 @@
 // within r + sqrt(3) * cell of some particle, so cells further than that from every particle are
 // never allocated or visited, and a point of a missing block and all its neighbours have phi = 0.
 // Blocks are found through a hash table; all loops run over blocks in a fixed order, so the values
-// are the same for any number of threads.
+// are the same for any number of threads. Values are kept only where marching cubes reads them:
+// blocks the iso surface passes through and the blocks around them. Every other block keeps just
+// its smallest and largest value (it lies wholly inside or wholly outside).
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace parafluid::surface
@@ -26,7 +29,8 @@ public:
   /// kernel support `kernelRadius` [m] and particle volume `particleVolume` [m^3]. Throws
   /// std::invalid_argument for non-positive sizes, non-finite coordinates, or a bounding box too
   /// large to index (more than 2^21 blocks along an axis).
-  void build(const float* xyz, std::size_t n, double cellSize, double kernelRadius, double particleVolume);
+  void build(const float* xyz, std::size_t n, double cellSize, double kernelRadius, double particleVolume,
+    double isoValue);
 
   std::size_t blockCount() const { return this->Keys.size(); }
   /// Block coordinates (in blocks) of block b; its point (i, j, k) is at
@@ -34,8 +38,9 @@ public:
   void blockCoordinates(std::size_t b, int c[3]) const;
   /// Index of the block at block coordinates c, or -1 when it holds no values (phi = 0 there).
   std::int64_t findBlock(int bx, int by, int bz) const;
-  /// The block's 512 values, x fastest.
-  const float* values(std::size_t b) const { return this->Values.data() + b * BlockSize; }
+  /// The block's 512 values, x fastest; null for a block that lies wholly on one side of the iso
+  /// value and borders no block the surface passes through.
+  const float* values(std::size_t b) const { return this->Stored[b]; }
   /// Smallest and largest value in block b.
   float minimum(std::size_t b) const { return this->Minimum[b]; }
   float maximum(std::size_t b) const { return this->Maximum[b]; }
@@ -45,7 +50,8 @@ public:
   double kernelRadius() const { return this->KernelRadius; }
   double particleVolume() const { return this->ParticleVolume; }
 
-  /// Particles sorted by block: original index and position of sorted slot k; the particles of
+  /// Particles sorted by block: original index and position (in cells from the origin, x, y, z)
+  /// of sorted slot k; the particles of
   /// block b are slots [particleBegin(b), particleEnd(b)).
   const std::vector<std::uint32_t>& sortedIndex() const { return this->SortedIndex; }
   const std::vector<float>& sortedPositions() const { return this->SortedXYZ; }
@@ -55,8 +61,10 @@ public:
   /// hold every particle that can contribute to it.
   int blockReach() const { return this->BlockReach; }
 
-  /// Bytes held (values, block tables, sorted particles).
+  /// Bytes held (values, block tables, sorted particles), and the most held at once while the
+  /// particles were being sorted.
   std::size_t bytes() const;
+  std::size_t sortPeakBytes() const { return this->SortPeakBytes; }
 
   /// phi's normalisation: phi = scale * sum_j (rho^2 - s^2)^3 with s, rho in cells.
   static double kernelScale(double cellSize, double kernelRadius, double particleVolume);
@@ -64,7 +72,8 @@ public:
 private:
   void sortParticles(const float* xyz, std::size_t n);
   void allocateBlocks();
-  void sampleBlocks();
+  void sampleBlocks(float iso);
+  void splatBlock(std::size_t b, float* values) const;
   void buildHash();
   std::uint64_t key(int bx, int by, int bz) const
   {
@@ -74,12 +83,15 @@ private:
   double Origin[3] = { 0, 0, 0 };
   double CellSize = 1, KernelRadius = 1, ParticleVolume = 1;
   int BlockReach = 1;
+  std::size_t SortPeakBytes = 0;
   std::vector<std::uint64_t> Keys;          // sorted block keys of the allocated blocks
   std::vector<std::uint32_t> ParticleBegin; // Keys.size() + 1 entries
-  std::vector<float> Values, Minimum, Maximum;
+  std::vector<const float*> Stored;              // per block: its values or null
+  std::vector<std::unique_ptr<float[]>> Storage; // the kept blocks' values
+  std::vector<float> Minimum, Maximum;
   std::vector<std::uint64_t> HashKeys;
   std::vector<std::uint32_t> HashSlots;
   std::vector<std::uint32_t> SortedIndex;
-  std::vector<float> SortedXYZ;
+  std::vector<float> SortedXYZ; // in cells from the origin
 };
 } // namespace parafluid::surface
