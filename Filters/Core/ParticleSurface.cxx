@@ -65,7 +65,7 @@ SurfaceMesh ParticleSurface::extract(const float* xyz, std::size_t n, const Part
   }
   t0 = std::chrono::steady_clock::now();
   MarchingCubesStatistics mc;
-  SurfaceMesh mesh = sparseMarchingCubes(this->Field, static_cast<float>(p.isoValue), p.computeNormals, &mc);
+  SurfaceMesh mesh = sparseMarchingCubes(this->Field, p.computeNormals, &mc);
   this->Statistics.meshSeconds = secondsSince(t0);
   this->Statistics.surfaceBlocks = mc.surfaceBlocks;
   this->Statistics.workingBytes = std::max(this->Field.sortPeakBytes(), this->Field.bytes() + mc.bytes);

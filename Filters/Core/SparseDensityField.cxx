@@ -85,6 +85,7 @@ void SparseDensityField::build(
   this->ParticleBegin.assign(1, 0);
   this->Stored.clear();
   this->Storage.clear();
+  this->SurfaceBlock.clear();
   this->Minimum.clear();
   this->Maximum.clear();
   this->SortedIndex.clear();
@@ -98,6 +99,7 @@ void SparseDensityField::build(
   this->sortParticles(xyz, n);
   this->allocateBlocks();
   this->buildHash();
+  this->IsoValue = isoValue;
   this->sampleBlocks(static_cast<float>(isoValue));
 }
 
@@ -441,13 +443,16 @@ void SparseDensityField::sampleBlocks(float iso)
       this->Storage.push_back(std::move(block));
     }
   }
-  // Pass 2: marching cubes also reads the blocks around every block it polygonises (a uniform
-  // block whose upper neighbour lies on the other side included): recompute and keep those.
+  // Pass 2: mark the blocks marching cubes polygonises; it also reads the blocks around each of
+  // them, so recompute and keep those.
   std::vector<char> needed(nBlocks, 0);
   auto side = [&](std::int64_t b) { return b < 0 ? 0 : (this->Maximum[b] <= iso ? 0 : (this->Minimum[b] > iso ? 1 : 2)); };
+  this->SurfaceBlock.assign(nBlocks, 0);
 #pragma omp parallel for schedule(dynamic, 64)
   for (long long b = 0; b < count; ++b)
   {
+    // Its own points are mixed, or a block above it (whose points its upper cells use) lies on
+    // another side; a missing block is outside.
     int bc[3];
     unpack(this->Keys[b], bc);
     bool crosses = side(b) == 2;
@@ -455,6 +460,7 @@ void SparseDensityField::sampleBlocks(float iso)
     {
       crosses = side(this->findBlock(bc[0] + (n & 1), bc[1] + ((n >> 1) & 1), bc[2] + ((n >> 2) & 1))) != side(b);
     }
+    this->SurfaceBlock[b] = crosses ? 1 : 0;
     if (!crosses)
     {
       continue;
@@ -501,7 +507,7 @@ std::size_t SparseDensityField::bytes() const
 {
   return this->Keys.capacity() * sizeof(std::uint64_t) + this->ParticleBegin.capacity() * sizeof(std::uint32_t) +
     this->Storage.size() * BlockSize * sizeof(float) + this->Storage.capacity() * sizeof(void*) +
-    this->Stored.capacity() * sizeof(float*) + (this->Minimum.capacity() + this->Maximum.capacity()) * sizeof(float) +
+    this->Stored.capacity() * sizeof(float*) + this->SurfaceBlock.capacity() + (this->Minimum.capacity() + this->Maximum.capacity()) * sizeof(float) +
     this->HashKeys.capacity() * sizeof(std::uint64_t) + this->HashSlots.capacity() * sizeof(std::uint32_t) +
     this->SortedIndex.capacity() * sizeof(std::uint32_t) + this->SortedXYZ.capacity() * sizeof(float);
 }

@@ -17,12 +17,6 @@ constexpr int BlockSize = SparseDensityField::BlockSize;
 constexpr int P = B + 3;
 constexpr std::uint16_t NoVertex = 0xFFFF;
 
-enum Side : std::uint8_t
-{
-  Outside = 0,
-  Inside = 1,
-  Mixed = 2
-};
 
 int padded(int i, int j, int k)
 {
@@ -87,37 +81,20 @@ const int Step[3] = { 1, P, P * P };
 
 } // namespace
 
-SurfaceMesh sparseMarchingCubes(const SparseDensityField& field, float iso, bool normals, MarchingCubesStatistics* statistics)
+SurfaceMesh sparseMarchingCubes(const SparseDensityField& field, bool normals, MarchingCubesStatistics* statistics)
 {
+  const float iso = static_cast<float>(field.isoValue());
   if (!(iso > 0.0f) || !std::isfinite(iso))
   {
     throw std::invalid_argument("the iso value must be positive (phi is zero far from the particles)");
   }
   const auto& cases = marchingCubesCases();
   const std::size_t nBlocks = field.blockCount();
-  const long long count = static_cast<long long>(nBlocks);
-  std::vector<std::uint8_t> side(nBlocks);
-#pragma omp parallel for
-  for (long long b = 0; b < count; ++b)
-  {
-    side[b] = field.maximum(b) <= iso ? Side::Outside : (field.minimum(b) > iso ? Side::Inside : Side::Mixed);
-  }
-  // A block's cells can meet the surface when its own points are mixed, or when a block above it
-  // (whose points its upper cells use) is on another side; a missing block is outside.
   std::vector<std::int32_t> surfaceIndex(nBlocks, -1);
   std::vector<std::uint32_t> surfaceBlocks;
   for (std::size_t b = 0; b < nBlocks; ++b)
   {
-    bool crosses = side[b] == Mixed;
-    int bc[3];
-    field.blockCoordinates(b, bc);
-    for (int n = 1; n < 8 && !crosses; ++n)
-    {
-      const std::int64_t nb = field.findBlock(bc[0] + (n & 1), bc[1] + ((n >> 1) & 1), bc[2] + ((n >> 2) & 1));
-      const std::uint8_t s = nb < 0 ? std::uint8_t(Side::Outside) : side[nb];
-      crosses = s != side[b];
-    }
-    if (crosses)
+    if (field.surfaceBlock(b))
     {
       surfaceIndex[b] = static_cast<std::int32_t>(surfaceBlocks.size());
       surfaceBlocks.push_back(static_cast<std::uint32_t>(b));
@@ -291,7 +268,7 @@ SurfaceMesh sparseMarchingCubes(const SparseDensityField& field, float iso, bool
   if (statistics)
   {
     statistics->surfaceBlocks = nSurface;
-    statistics->bytes = side.capacity() + surfaceIndex.capacity() * sizeof(std::int32_t) +
+    statistics->bytes = surfaceIndex.capacity() * sizeof(std::int32_t) +
       surfaceBlocks.capacity() * sizeof(std::uint32_t) + (vertexStart.capacity() + triangleStart.capacity()) * sizeof(std::size_t) +
       edgeVertex.capacity() * sizeof(std::uint16_t);
   }

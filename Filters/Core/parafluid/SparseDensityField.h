@@ -41,6 +41,12 @@ public:
   /// The block's 512 values, x fastest; null for a block that lies wholly on one side of the iso
   /// value and borders no block the surface passes through.
   const float* values(std::size_t b) const { return this->Stored[b]; }
+  /// Whether the iso surface can pass through block b's cells (its own points are on both sides,
+  /// or a block above it, whose points its upper cells use, is on another side). Marching cubes
+  /// polygonises exactly these blocks; they and their neighbours hold values.
+  bool surfaceBlock(std::size_t b) const { return this->SurfaceBlock[b] != 0; }
+  /// The iso value the field was built for.
+  double isoValue() const { return this->IsoValue; }
   /// Smallest and largest value in block b.
   float minimum(std::size_t b) const { return this->Minimum[b]; }
   float maximum(std::size_t b) const { return this->Maximum[b]; }
@@ -84,6 +90,8 @@ private:
   double CellSize = 1, KernelRadius = 1, ParticleVolume = 1;
   int BlockReach = 1;
   std::size_t SortPeakBytes = 0;
+  double IsoValue = 0.5;
+  std::vector<char> SurfaceBlock;
   std::vector<std::uint64_t> Keys;          // sorted block keys of the allocated blocks
   std::vector<std::uint32_t> ParticleBegin; // Keys.size() + 1 entries
   std::vector<const float*> Stored;              // per block: its values or null

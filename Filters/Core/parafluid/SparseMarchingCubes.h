@@ -17,9 +17,8 @@ struct MarchingCubesStatistics
   std::size_t bytes = 0;         // working memory beyond the field and the output mesh
 };
 
-/// The surface phi = isoValue (0 < isoValue), oriented so normals point to lower phi (out of the
+/// The surface phi = field.isoValue() (> 0), oriented so normals point to lower phi (out of the
 /// fluid). Vertex normals are -grad phi (central differences, interpolated along the edge) when
 /// `normals` is set.
-SurfaceMesh sparseMarchingCubes(const SparseDensityField& field, float isoValue, bool normals,
-  MarchingCubesStatistics* statistics = nullptr);
+SurfaceMesh sparseMarchingCubes(const SparseDensityField& field, bool normals, MarchingCubesStatistics* statistics = nullptr);
 } // namespace parafluid::surface
