@@ -69,6 +69,8 @@ SurfaceMesh ParticleSurface::extract(const float* xyz, std::size_t n, const Part
   this->Statistics.meshSeconds = secondsSince(t0);
   this->Statistics.surfaceBlocks = mc.surfaceBlocks;
   this->Statistics.workingBytes = std::max(this->Field.sortPeakBytes(), this->Field.bytes() + mc.bytes);
+  // From here on only the particles are read (interpolate(), meanLevelSetDistance()).
+  this->Field.releaseValues();
   if (progress && !progress(0.85))
   {
     return SurfaceMesh();
@@ -102,10 +104,7 @@ std::vector<float> ParticleSurface::interpolate(const SurfaceMesh& mesh, const f
   const double c = this->Field.cellSize();
   const double r = this->Field.kernelRadius() / c;
   const double r2 = r * r;
-  const double blockEdge = SparseDensityField::BlockPoints;
   const double* origin = this->Field.origin();
-  const int reach = this->Field.blockReach();
-  const auto& sortedXYZ = this->Field.sortedPositions();
   const auto& sortedIndex = this->Field.sortedIndex();
   const long long count = static_cast<long long>(nv);
 #pragma omp parallel
@@ -116,44 +115,18 @@ std::vector<float> ParticleSurface::interpolate(const SurfaceMesh& mesh, const f
     {
       const double x[3] = { (mesh.points[3 * v] - origin[0]) / c, (mesh.points[3 * v + 1] - origin[1]) / c,
         (mesh.points[3 * v + 2] - origin[2]) / c };
-      int bc[3];
-      for (int a = 0; a < 3; ++a)
-      {
-        bc[a] = static_cast<int>(std::floor(x[a] / blockEdge));
-      }
       std::fill(sum.begin(), sum.end(), 0.0);
       double weight = 0.0;
-      for (int dz = -reach; dz <= reach; ++dz)
-      {
-        for (int dy = -reach; dy <= reach; ++dy)
+      this->Field.forEachParticleNear(x, [&](std::uint32_t k, double, double, double, double s2) {
+        const double t = r2 - s2;
+        const double w = t * t * t; // poly6, unnormalised: the normalisation cancels
+        weight += w;
+        const float* value = values + static_cast<std::size_t>(sortedIndex[k]) * components;
+        for (int comp = 0; comp < components; ++comp)
         {
-          for (int dx = -reach; dx <= reach; ++dx)
-          {
-            const std::int64_t nb = this->Field.findBlock(bc[0] + dx, bc[1] + dy, bc[2] + dz);
-            if (nb < 0)
-            {
-              continue;
-            }
-            for (std::uint32_t k = this->Field.particleBegin(nb); k < this->Field.particleEnd(nb); ++k)
-            {
-              const double ex = sortedXYZ[3 * k] - x[0], ey = sortedXYZ[3 * k + 1] - x[1], ez = sortedXYZ[3 * k + 2] - x[2];
-              const double s2 = ex * ex + ey * ey + ez * ez;
-              if (s2 >= r2)
-              {
-                continue;
-              }
-              const double t = r2 - s2;
-              const double w = t * t * t; // poly6, unnormalised: the normalisation cancels
-              weight += w;
-              const float* value = values + static_cast<std::size_t>(sortedIndex[k]) * components;
-              for (int comp = 0; comp < components; ++comp)
-              {
-                sum[comp] += w * value[comp];
-              }
-            }
-          }
+          sum[comp] += w * value[comp];
         }
-      }
+      });
       if (weight > 0.0)
       {
         for (int comp = 0; comp < components; ++comp)
@@ -164,6 +137,31 @@ std::vector<float> ParticleSurface::interpolate(const SurfaceMesh& mesh, const f
     }
   }
   return out;
+}
+
+double ParticleSurface::meanLevelSetDistance(const SurfaceMesh& mesh, std::size_t samples) const
+{
+  const std::size_t nv = mesh.vertexCount();
+  if (nv == 0 || samples == 0 || this->Field.blockCount() == 0)
+  {
+    return 0.0;
+  }
+  const std::size_t stride = std::max<std::size_t>(1, nv / samples);
+  const long long count = static_cast<long long>((nv + stride - 1) / stride);
+  const double iso = this->Field.isoValue();
+  double total = 0.0;
+#pragma omp parallel for reduction(+ : total) schedule(dynamic, 64)
+  for (long long i = 0; i < count; ++i)
+  {
+    const std::size_t v = static_cast<std::size_t>(i) * stride;
+    const double p[3] = { mesh.points[3 * v], mesh.points[3 * v + 1], mesh.points[3 * v + 2] };
+    double g[3];
+    const double phi = this->Field.evaluate(p, g);
+    const double slope = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    // First order in the distance, which is a small fraction of a cell here.
+    total += slope > 0.0 ? std::abs(phi - iso) / slope : 0.0;
+  }
+  return total / static_cast<double>(count);
 }
 
 void ParticleSurface::release()

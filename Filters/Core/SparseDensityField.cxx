@@ -65,6 +65,28 @@ double SparseDensityField::kernelScale(double cellSize, double kernelRadius, dou
   return particleVolume * 315.0 / (64.0 * Pi * std::pow(rho, 9) * cellSize * cellSize * cellSize);
 }
 
+double SparseDensityField::evaluate(const double p[3], double gradient[3]) const
+{
+  const double c = this->CellSize;
+  const double x[3] = { (p[0] - this->Origin[0]) / c, (p[1] - this->Origin[1]) / c, (p[2] - this->Origin[2]) / c };
+  const double rho = this->KernelRadius / c;
+  double sum = 0.0, g[3] = { 0.0, 0.0, 0.0 };
+  this->forEachParticleNear(x, [&](std::uint32_t, double ex, double ey, double ez, double s2) {
+    const double t = rho * rho - s2;
+    sum += t * t * t;
+    // d/dx (rho^2 - |x_j - x|^2)^3 = 6 t^2 (x_j - x)
+    g[0] += 6.0 * t * t * ex;
+    g[1] += 6.0 * t * t * ey;
+    g[2] += 6.0 * t * t * ez;
+  });
+  const double scale = kernelScale(c, this->KernelRadius, this->ParticleVolume);
+  for (int a = 0; a < 3; ++a)
+  {
+    gradient[a] = scale * g[a] / c;
+  }
+  return scale * sum;
+}
+
 void SparseDensityField::build(
   const float* xyz, std::size_t n, double cellSize, double kernelRadius, double particleVolume, double isoValue)
 {
@@ -369,37 +391,24 @@ void SparseDensityField::splatBlock(std::size_t b, float* acc) const
   const float rho = static_cast<float>(this->KernelRadius / this->CellSize);
   const float rho2 = rho * rho;
   const float upper = static_cast<float>(B - 1) + rho;
-  const int reach = this->BlockReach;
   int bc[3];
   unpack(this->Keys[b], bc);
   std::fill(acc, acc + BlockSize, 0.0f);
   // The block's first point, in cells from the origin.
   const float base[3] = { static_cast<float>(B * bc[0]), static_cast<float>(B * bc[1]), static_cast<float>(B * bc[2]) };
   const float* cells = this->SortedXYZ.data();
-  for (int dz = -reach; dz <= reach; ++dz)
-  {
-    for (int dy = -reach; dy <= reach; ++dy)
+  this->forEachBlockAround(bc, [&](std::int64_t nb) {
+    const std::uint32_t end = this->ParticleBegin[nb + 1];
+    for (std::uint32_t k = this->ParticleBegin[nb]; k < end; ++k)
     {
-      for (int dx = -reach; dx <= reach; ++dx)
+      const float l[3] = { cells[3 * k] - base[0], cells[3 * k + 1] - base[1], cells[3 * k + 2] - base[2] };
+      if (l[0] < -rho || l[1] < -rho || l[2] < -rho || l[0] > upper || l[1] > upper || l[2] > upper)
       {
-        const std::int64_t nb = this->findBlock(bc[0] + dx, bc[1] + dy, bc[2] + dz);
-        if (nb < 0)
-        {
-          continue;
-        }
-        const std::uint32_t end = this->ParticleBegin[nb + 1];
-        for (std::uint32_t k = this->ParticleBegin[nb]; k < end; ++k)
-        {
-          const float l[3] = { cells[3 * k] - base[0], cells[3 * k + 1] - base[1], cells[3 * k + 2] - base[2] };
-          if (l[0] < -rho || l[1] < -rho || l[2] < -rho || l[0] > upper || l[1] > upper || l[2] > upper)
-          {
-            continue;
-          }
-          splatParticle(acc, l, rho, rho2);
-        }
+        continue;
       }
+      splatParticle(acc, l, rho, rho2);
     }
-  }
+  });
   const float scale = static_cast<float>(kernelScale(this->CellSize, this->KernelRadius, this->ParticleVolume));
   for (int p = 0; p < BlockSize; ++p)
   {
@@ -501,6 +510,12 @@ void SparseDensityField::sampleBlocks(float iso)
     this->splatBlock(recompute[k], values);
     this->Stored[recompute[k]] = values;
   }
+}
+
+void SparseDensityField::releaseValues()
+{
+  std::vector<std::unique_ptr<float[]>>().swap(this->Storage);
+  std::vector<const float*>(this->Keys.size(), nullptr).swap(this->Stored);
 }
 
 std::size_t SparseDensityField::bytes() const

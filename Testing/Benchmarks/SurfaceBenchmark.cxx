@@ -3,6 +3,7 @@
 // (R = 25 d) for time against error; and the carpet against marching cubes on one shallow flow.
 #include "parafluid/CarpetSurface.h"
 #include "parafluid/ParticleSurface.h"
+#include "SurfaceScenes.h"
 
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -14,34 +15,9 @@
 namespace
 {
 using namespace parafluid::surface;
-
-// n particles in all: 95 % on the block's lattice, 5 % scattered in a slab as high again above it.
-std::vector<float> damBreakWithSplash(std::size_t n, double& d)
-{
-  const std::size_t inBlock = static_cast<std::size_t>(0.95 * n);
-  const int side = static_cast<int>(std::lround(std::cbrt(inBlock / 2.0)));
-  d = 0.0064 * 100.0 / side; // 1M particles: d = 0.0064 m as in the issue (a = 0.51 m)
-  const double a = side * d;
-  std::vector<float> xyz;
-  xyz.reserve(3 * n);
-  for (int k = 0; k < 2 * side; ++k)
-  {
-    for (int j = 0; j < side; ++j)
-    {
-      for (int i = 0; i < side; ++i)
-      {
-        xyz.insert(xyz.end(), { float((i + 0.5) * d), float((j + 0.5) * d), float((k + 0.5) * d) });
-      }
-    }
-  }
-  std::mt19937 rng(42);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  while (xyz.size() < 3 * n)
-  {
-    xyz.insert(xyz.end(), { float(u(rng) * 2 * a), float(u(rng) * a), float(2 * a + u(rng) * 2 * a) });
-  }
-  return xyz;
-}
+using parafluid::benchmarks::damBreakWithSplash;
+using parafluid::benchmarks::jitteredBall;
+using parafluid::benchmarks::meanRadialError;
 
 void BM_ParticleSurface(benchmark::State& state)
 {
@@ -82,22 +58,7 @@ BENCHMARK(BM_ParticleSurface)
 void BM_BallAccuracy(benchmark::State& state)
 {
   const double d = 0.01, radius = 25 * d;
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-0.1 * d, 0.1 * d);
-  std::vector<float> xyz;
-  for (int k = -26; k <= 26; ++k)
-  {
-    for (int j = -26; j <= 26; ++j)
-    {
-      for (int i = -26; i <= 26; ++i)
-      {
-        if ((i * i + j * j + k * k) * d * d <= radius * radius)
-        {
-          xyz.insert(xyz.end(), { float(i * d + u(rng)), float(j * d + u(rng)), float(k * d + u(rng)) });
-        }
-      }
-    }
-  }
+  const std::vector<float> xyz = jitteredBall(d, radius);
   omp_set_num_threads(2);
   ParticleSurfaceParameters p;
   p.particleSpacing = d;
@@ -109,14 +70,9 @@ void BM_BallAccuracy(benchmark::State& state)
   {
     mesh = surface.extract(xyz.data(), xyz.size() / 3, p);
   }
-  double error = 0.0;
-  for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
-  {
-    const double x = mesh.points[3 * v], y = mesh.points[3 * v + 1], z = mesh.points[3 * v + 2];
-    error += std::abs(std::sqrt(x * x + y * y + z * z) - radius);
-  }
   state.counters["particles"] = static_cast<double>(xyz.size() / 3);
-  state.counters["mean_error_d"] = error / mesh.vertexCount() / d;
+  state.counters["mean_error_d"] = meanRadialError(mesh.points.data(), mesh.vertexCount(), radius) / d;
+  state.counters["grid_error_d"] = surface.meanLevelSetDistance(mesh) / d;
   state.counters["vertices"] = static_cast<double>(mesh.vertexCount());
 }
 BENCHMARK(BM_BallAccuracy)

@@ -1,6 +1,7 @@
 """Particle Surface (Marching Cubes) against ParaView's own path on the same particles, in one
 pvpython run: (a) SPH Volume Interpolator (vtkSPHInterpolator, quintic kernel) onto an image of
-the same cell size, then Contour (vtkFlyingEdges3D). Scenes: the jittered ball (R = 25 d, jitter
+the same cell size, then Contour (vtkFlyingEdges3D); (b) OpenVDB's ParticlesToLevelSet, one
+Gaussian pass and volumeToMesh (openvdb_peer.sh, when libopenvdb-dev is installed). Scenes: the jittered ball (R = 25 d, jitter
 0.1 d) for time against error at cells 1, 0.5, 0.25 d, and the dam-break block with 5 % splash.
 
     pvpython Testing/Benchmarks/surface_peers.py [particles_in_dam_break]   (default 1000000)
@@ -9,6 +10,8 @@ Prints a table and writes surface_peers.csv in the current directory. Peer (a)'s
 VTK_SMP_BACKEND_IN_USE=STDThread and VTK_SMP_MAX_THREADS=2 for both cores."""
 import csv
 import os
+import re
+import subprocess
 import resource
 import sys
 import time
@@ -148,6 +151,30 @@ mesh, seconds, grown = ours(xyz, d, 0.5)
 rows.append(("dam break + splash", "ParaFluid", 0.5, len(xyz), seconds, "", "%.0f" % grown))
 mesh, seconds, grown = paraview_path(xyz, d, 0.5)
 rows.append(("dam break + splash", "SPHInterpolator+FlyingEdges", 0.5, len(xyz), seconds, "", "%.0f" % grown))
+
+
+
+def openvdb_rows(n, ball_particles):
+    """Peer (b): the OpenVDB program on the same scenes, when libopenvdb-dev is installed."""
+    if not os.path.exists("/usr/include/openvdb/openvdb.h"):
+        print("OpenVDB peer skipped: install libopenvdb-dev to run it")
+        return []
+    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "openvdb_peer.sh")
+    out = subprocess.run(["bash", script, "2", str(n)], check=True, capture_output=True, text=True).stdout
+    method = "OpenVDB ParticlesToLevelSet+gaussian+volumeToMesh"
+    grown = re.search(r"peak resident size (\d+) MB", out)
+    found = []
+    for line in out.splitlines():
+        f = line.split(",")
+        if f[0] == "ball":
+            found.append(("ball", method, float(f[1]), ball_particles, float(f[4]), float(f[9]), ""))
+        elif f[0].startswith("dam_break_"):
+            found.append(("dam break + splash", method, float(f[1]), int(f[0][len("dam_break_"):]), float(f[4]), "",
+                          grown.group(1) if grown else ""))
+    return found
+
+
+rows += openvdb_rows(n, len(ball(0.01)))
 
 header = ("scene", "method", "cell_d", "particles", "seconds", "mean_error_d", "rss_growth_mb")
 with open("surface_peers.csv", "w", newline="") as f:

@@ -49,6 +49,11 @@ public:
   /// `components` floats per particle; the result holds as many per vertex.
   std::vector<float> interpolate(const SurfaceMesh& mesh, const float* values, int components) const;
 
+  /// Mean distance [m] of `mesh`'s vertices (every k-th, about `samples` of them) from the exact
+  /// iso surface of the last extract()'s field, |phi - iso| / |grad phi| with phi summed over the
+  /// particles: the part of the surface's error that the grid makes (the rest is the field's own).
+  double meanLevelSetDistance(const SurfaceMesh& mesh, std::size_t samples = 2000) const;
+
   const ParticleSurfaceStatistics& statistics() const { return this->Statistics; }
   /// Releases the field (kept after extract() for interpolate()).
   void release();

@@ -12,6 +12,7 @@
 // are the same for any number of threads. Values are kept only where marching cubes reads them:
 // blocks the iso surface passes through and the blocks around them. Every other block keeps just
 // its smallest and largest value (it lies wholly inside or wholly outside).
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -67,6 +68,20 @@ public:
   /// hold every particle that can contribute to it.
   int blockReach() const { return this->BlockReach; }
 
+  /// Calls visit(k, ex, ey, ez, s2) for each sorted slot k whose particle lies within the kernel
+  /// radius of the point x (in cells from the origin), with (ex, ey, ez) = particle - x and s2 its
+  /// squared length, both in cells.
+  template <typename Visit>
+  void forEachParticleNear(const double x[3], Visit&& visit) const;
+
+  /// phi and its gradient [1/m] at world point p, summed exactly over the particles (not read
+  /// from the grid): the field marching cubes approximates.
+  double evaluate(const double p[3], double gradient[3]) const;
+
+  /// Frees the sampled values (values() is null for every block afterwards) but keeps the block
+  /// tables and sorted particles that evaluate() and forEachParticleNear() read.
+  void releaseValues();
+
   /// Bytes held (values, block tables, sorted particles), and the most held at once while the
   /// particles were being sorted.
   std::size_t bytes() const;
@@ -80,6 +95,9 @@ private:
   void allocateBlocks();
   void sampleBlocks(float iso);
   void splatBlock(std::size_t b, float* values) const;
+  /// Calls visit(block index) for each allocated block within blockReach() of block coordinates bc.
+  template <typename Visit>
+  void forEachBlockAround(const int bc[3], Visit&& visit) const;
   void buildHash();
   std::uint64_t key(int bx, int by, int bz) const
   {
@@ -102,4 +120,47 @@ private:
   std::vector<std::uint32_t> SortedIndex;
   std::vector<float> SortedXYZ; // in cells from the origin
 };
+template <typename Visit>
+void SparseDensityField::forEachBlockAround(const int bc[3], Visit&& visit) const
+{
+  const int reach = this->BlockReach;
+  for (int dz = -reach; dz <= reach; ++dz)
+  {
+    for (int dy = -reach; dy <= reach; ++dy)
+    {
+      for (int dx = -reach; dx <= reach; ++dx)
+      {
+        const std::int64_t nb = this->findBlock(bc[0] + dx, bc[1] + dy, bc[2] + dz);
+        if (nb >= 0)
+        {
+          visit(nb);
+        }
+      }
+    }
+  }
+}
+
+template <typename Visit>
+void SparseDensityField::forEachParticleNear(const double x[3], Visit&& visit) const
+{
+  const double rho = this->KernelRadius / this->CellSize;
+  const double rho2 = rho * rho;
+  int bc[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    bc[a] = static_cast<int>(std::floor(x[a] / BlockPoints));
+  }
+  this->forEachBlockAround(bc, [&](std::int64_t nb) {
+    for (std::uint32_t k = this->particleBegin(nb); k < this->particleEnd(nb); ++k)
+    {
+      const double ex = this->SortedXYZ[3 * k] - x[0], ey = this->SortedXYZ[3 * k + 1] - x[1],
+                   ez = this->SortedXYZ[3 * k + 2] - x[2];
+      const double s2 = ex * ex + ey * ey + ez * ez;
+      if (s2 < rho2)
+      {
+        visit(k, ex, ey, ez, s2);
+      }
+    }
+  });
+}
 } // namespace parafluid::surface
