@@ -10,16 +10,73 @@
 #include "vtkSmartPointer.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 
+#include <cstring>
 #include <numeric>
 #include <vector>
 
 namespace parafluid::vtk
 {
+/// The points of a point set as x, y, z floats (a copy only when they are not floats already).
+inline const float* positionsAsFloat(vtkPointSet* input, std::vector<float>& storage)
+{
+  vtkPoints* points = input->GetPoints();
+  const vtkIdType n = input->GetNumberOfPoints();
+  if (!points || n == 0)
+  {
+    return nullptr;
+  }
+  if (auto* floats = vtkFloatArray::SafeDownCast(points->GetData()))
+  {
+    return floats->GetPointer(0);
+  }
+  storage.resize(3 * static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    for (int a = 0; a < 3; ++a)
+    {
+      storage[3 * static_cast<std::size_t>(i) + a] = static_cast<float>(p[a]);
+    }
+  }
+  return storage.data();
+}
+
+inline vtkSmartPointer<vtkFloatArray> floatArray(const char* name, int components, const std::vector<float>& values)
+{
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / components));
+  if (!values.empty())
+  {
+    std::memcpy(array->GetPointer(0), values.data(), values.size() * sizeof(float));
+  }
+  return array;
+}
+
+/// The components of a numeric array as floats (x, y, z, ... per tuple).
+inline std::vector<float> tuplesAsFloat(vtkDataArray* array)
+{
+  const vtkIdType n = array->GetNumberOfTuples();
+  const int components = array->GetNumberOfComponents();
+  std::vector<float> values(static_cast<std::size_t>(n) * components);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < components; ++c)
+    {
+      values[static_cast<std::size_t>(i) * components + c] = static_cast<float>(array->GetComponent(i, c));
+    }
+  }
+  return values;
+}
+
 /// First value of a numeric field-data array, or `fallback` when it is absent.
 inline double fieldValue(vtkFieldData* fieldData, const char* name, double fallback)
 {

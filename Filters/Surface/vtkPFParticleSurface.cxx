@@ -114,14 +114,7 @@ int vtkPFParticleSurface::RequestData(vtkInformation*, vtkInformationVector** in
   for (vtkDataArray* array : arrays)
   {
     const int components = array->GetNumberOfComponents();
-    std::vector<float> values(static_cast<std::size_t>(n) * components);
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      for (int c = 0; c < components; ++c)
-      {
-        values[static_cast<std::size_t>(i) * components + c] = static_cast<float>(array->GetComponent(i, c));
-      }
-    }
+    const std::vector<float> values = parafluid::vtk::tuplesAsFloat(array);
     output->GetPointData()->AddArray(
       parafluid::vtk::floatArray(array->GetName(), components, surface.interpolate(mesh, values.data(), components)));
   }

@@ -1,0 +1,167 @@
+#include "vtkPFFluidFlowLines.h"
+
+#include "vtkPFParticleArrays.h"
+
+#include "parafluid/FlowLines.h"
+
+#include "vtkCellData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkTypeUInt32Array.h"
+
+#include <stdexcept>
+
+vtkStandardNewMacro(vtkPFFluidFlowLines);
+
+vtkPFFluidFlowLines::vtkPFFluidFlowLines()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+vtkPFFluidFlowLines::~vtkPFFluidFlowLines() = default;
+
+void vtkPFFluidFlowLines::SetVelocityArray(const char* name)
+{
+  const std::string value = name ? name : "";
+  if (value != this->VelocityArray)
+  {
+    this->VelocityArray = value;
+    this->Modified();
+  }
+}
+
+int vtkPFFluidFlowLines::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+int vtkPFFluidFlowLines::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* local = vtkPointSet::GetData(inputVector[0]);
+  vtkPointSet* localSeeds = inputVector[1]->GetNumberOfInformationObjects() > 0 ? vtkPointSet::GetData(inputVector[1]) : nullptr;
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  if (!local)
+  {
+    vtkErrorMacro("Fluid Flow Lines: the input is not a point set (particles)");
+    return 0;
+  }
+  bool tracesHere = true;
+  vtkSmartPointer<vtkDataObject> gathered = parafluid::vtk::gatherToFirstProcess(local, tracesHere);
+  vtkSmartPointer<vtkDataObject> gatheredSeeds;
+  if (localSeeds)
+  {
+    bool seedsHere = true;
+    gatheredSeeds = parafluid::vtk::gatherToFirstProcess(localSeeds, seedsHere);
+  }
+  if (!tracesHere)
+  {
+    output->Initialize();
+    return 1;
+  }
+  vtkPointSet* input = vtkPointSet::SafeDownCast(gathered);
+  vtkPointSet* seeds = vtkPointSet::SafeDownCast(gatheredSeeds);
+  const vtkIdType n = input ? input->GetNumberOfPoints() : 0;
+
+  parafluid::npr::FlowLineParameters p;
+  const double d = this->ParticleSpacing > 0.0
+    ? this->ParticleSpacing
+    : parafluid::vtk::fieldValue(local->GetFieldData(), "particle_spacing", 0.0);
+  if (n > 0 && !(d > 0.0))
+  {
+    vtkErrorMacro("Fluid Flow Lines: set ParticleSpacing (the distance between neighbouring particles, metres); the "
+                  "input has no particle_spacing field data to take it from");
+    return 0;
+  }
+  p.kernelRadius = this->KernelRadius * (d > 0.0 ? d : 1.0);
+  p.seedStride = this->SeedStride;
+  p.pointsPerLine = this->PointsPerLine;
+  p.lineDuration = this->LineDuration;
+  p.integrator = this->Integrator == 0 ? parafluid::npr::FlowIntegrator::RK2 : parafluid::npr::FlowIntegrator::RK4;
+  p.maxLines = this->MaxLines > 0 ? static_cast<std::size_t>(this->MaxLines) : 0;
+  const std::string problem = parafluid::npr::validate(p);
+  if (!problem.empty())
+  {
+    vtkErrorMacro("Fluid Flow Lines: " << problem);
+    return 0;
+  }
+  if (n == 0)
+  {
+    output->Initialize();
+    return 1;
+  }
+  vtkDataArray* velocityArray = input->GetPointData()->GetArray(this->VelocityArray.c_str());
+  if (!velocityArray || velocityArray->GetNumberOfComponents() != 3)
+  {
+    vtkErrorMacro("Fluid Flow Lines: the particles have no 3-component point array '" << this->VelocityArray
+                                                                                       << "' (choose it in VelocityArray)");
+    return 0;
+  }
+  std::vector<float> positionStorage, seedStorage;
+  const float* xyz = parafluid::vtk::positionsAsFloat(input, positionStorage);
+  const std::vector<float> velocity = parafluid::vtk::tuplesAsFloat(velocityArray);
+  const float* seedXYZ = seeds && seeds->GetNumberOfPoints() > 0 ? parafluid::vtk::positionsAsFloat(seeds, seedStorage) : nullptr;
+  const std::size_t seedCount = seedXYZ ? static_cast<std::size_t>(seeds->GetNumberOfPoints()) : 0;
+
+  parafluid::npr::FlowLineSet lines;
+  try
+  {
+    lines = parafluid::npr::traceFlowLines(xyz, velocity.data(), static_cast<std::size_t>(n), p, seedXYZ, seedCount,
+      [this](double fraction) {
+        this->UpdateProgress(fraction);
+        return this->GetAbortExecute() == 0;
+      });
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("Fluid Flow Lines: " << e.what());
+    return 0;
+  }
+
+  vtkNew<vtkPoints> points;
+  points->SetData(parafluid::vtk::floatArray("Points", 3, lines.points));
+  output->SetPoints(points);
+  vtkNew<vtkCellArray> polylines;
+  for (std::size_t l = 0; l < lines.lineCount(); ++l)
+  {
+    polylines->InsertNextCell(static_cast<vtkIdType>(lines.offsets[l + 1] - lines.offsets[l]));
+    for (std::uint32_t k = lines.offsets[l]; k < lines.offsets[l + 1]; ++k)
+    {
+      polylines->InsertCellPoint(k);
+    }
+  }
+  output->SetLines(polylines);
+  output->GetPointData()->AddArray(parafluid::vtk::floatArray("speed", 1, lines.speed));
+  output->GetPointData()->AddArray(parafluid::vtk::floatArray("curvature", 1, lines.curvature));
+  output->GetPointData()->SetActiveScalars("speed");
+  output->GetCellData()->AddArray(parafluid::vtk::floatArray("length", 1, lines.length));
+  output->GetCellData()->AddArray(parafluid::vtk::floatArray("turning", 1, lines.turning));
+  vtkNew<vtkTypeUInt32Array> seedIndex;
+  seedIndex->SetName("seed");
+  seedIndex->SetNumberOfTuples(static_cast<vtkIdType>(lines.seed.size()));
+  for (std::size_t l = 0; l < lines.seed.size(); ++l)
+  {
+    seedIndex->SetValue(static_cast<vtkIdType>(l), lines.seed[l]);
+  }
+  output->GetCellData()->AddArray(seedIndex);
+  output->GetFieldData()->PassData(input->GetFieldData());
+  return 1;
+}
+
+void vtkPFFluidFlowLines::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "VelocityArray: " << this->VelocityArray << "\n";
+  os << indent << "ParticleSpacing: " << this->ParticleSpacing << "\n";
+  os << indent << "KernelRadius: " << this->KernelRadius << "\n";
+  os << indent << "SeedStride: " << this->SeedStride << "\n";
+  os << indent << "PointsPerLine: " << this->PointsPerLine << "\n";
+  os << indent << "LineDuration: " << this->LineDuration << "\n";
+  os << indent << "Integrator: " << this->Integrator << "\n";
+  os << indent << "MaxLines: " << this->MaxLines << "\n";
+}

@@ -1,0 +1,148 @@
+#include "vtkPFFoamParticles.h"
+
+#include "vtkPFParticleArrays.h"
+
+#include "parafluid/FoamClassifier.h"
+
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <stdexcept>
+
+vtkStandardNewMacro(vtkPFFoamParticles);
+
+vtkPFFoamParticles::vtkPFFoamParticles()
+  : State(new parafluid::npr::FoamHysteresis)
+  , StateBefore(new parafluid::npr::FoamHysteresis)
+{
+}
+
+vtkPFFoamParticles::~vtkPFFoamParticles() = default;
+
+void vtkPFFoamParticles::SetIdArray(const char* name)
+{
+  const std::string value = name ? name : "";
+  if (value != this->IdArray)
+  {
+    this->IdArray = value;
+    this->Modified();
+  }
+}
+
+int vtkPFFoamParticles::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPointSet* output = vtkPointSet::GetData(outputVector);
+  if (!input || !output)
+  {
+    vtkErrorMacro("Foam Particles: the input is not a point set (particles)");
+    return 0;
+  }
+  output->ShallowCopy(input);
+  const vtkIdType n = input->GetNumberOfPoints();
+  const double d = this->ParticleSpacing > 0.0
+    ? this->ParticleSpacing
+    : parafluid::vtk::fieldValue(input->GetFieldData(), "particle_spacing", 0.0);
+  if (n > 0 && !(d > 0.0))
+  {
+    vtkErrorMacro("Foam Particles: set ParticleSpacing (the distance between neighbouring particles, metres); the "
+                  "input has no particle_spacing field data to take it from");
+    return 0;
+  }
+  parafluid::npr::FoamParameters p;
+  p.kernelRadius = this->KernelRadius * (d > 0.0 ? d : 1.0);
+  p.particleVolume = d > 0.0 ? d * d * d : 1.0;
+  p.crestThreshold = this->CrestThreshold;
+  p.sprayNeighbours = this->SprayNeighbours;
+  const std::string problem = parafluid::npr::validate(p);
+  if (!problem.empty())
+  {
+    vtkErrorMacro("Foam Particles: " << problem);
+    return 0;
+  }
+
+  // Stable ids: the IdArray, else the point index (with a warning: foam then follows slots, not particles).
+  std::vector<std::int64_t> ids(static_cast<std::size_t>(n));
+  vtkDataArray* idArray = input->GetPointData()->GetArray(this->IdArray.c_str());
+  if (n > 0 && !idArray)
+  {
+    vtkWarningMacro("Foam Particles: no point array '" << this->IdArray
+                                                      << "' of particle ids; using point order, so foam follows "
+                                                         "particles only if their order never changes");
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    ids[static_cast<std::size_t>(i)] = idArray ? static_cast<std::int64_t>(idArray->GetComponent(i, 0)) : i;
+  }
+
+  std::vector<float> positionStorage;
+  const float* xyz = n > 0 ? parafluid::vtk::positionsAsFloat(input, positionStorage) : nullptr;
+  parafluid::npr::FoamScores scores;
+  try
+  {
+    scores = parafluid::npr::scoreFoam(xyz, static_cast<std::size_t>(n), p);
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("Foam Particles: " << e.what());
+    return 0;
+  }
+  this->UpdateProgress(0.9);
+
+  // The hysteresis continues forward in time under unchanged settings; the same time again redoes
+  // the last step; anything else starts again.
+  const double time = input->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP())
+    ? input->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
+    : 0.0;
+  const vtkMTimeType settings = this->GetMTime();
+  const bool sameSettings = this->HasState && settings == this->StateSettings;
+  if (sameSettings && time == this->LastTime)
+  {
+    *this->State = *this->StateBefore;
+  }
+  else if (sameSettings && time > this->LastTime)
+  {
+    *this->StateBefore = *this->State;
+  }
+  else
+  {
+    this->State->reset();
+    this->StateBefore->reset();
+  }
+  std::vector<std::uint8_t> foam;
+  this->State->update(ids.data(), scores.candidate.data(), static_cast<std::size_t>(n), this->PersistFrames, foam);
+  this->HasState = true;
+  this->LastTime = time;
+  this->StateSettings = settings;
+
+  vtkNew<vtkUnsignedCharArray> foamArray;
+  foamArray->SetName("foam");
+  foamArray->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    foamArray->SetValue(i, foam[static_cast<std::size_t>(i)]);
+  }
+  output->GetPointData()->AddArray(foamArray);
+  output->GetPointData()->AddArray(parafluid::vtk::floatArray("foam_score", 1, scores.score));
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkPFFoamParticles::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ParticleSpacing: " << this->ParticleSpacing << "\n";
+  os << indent << "KernelRadius: " << this->KernelRadius << "\n";
+  os << indent << "CrestThreshold: " << this->CrestThreshold << "\n";
+  os << indent << "SprayNeighbours: " << this->SprayNeighbours << "\n";
+  os << indent << "PersistFrames: " << this->PersistFrames << "\n";
+  os << indent << "IdArray: " << this->IdArray << "\n";
+}
