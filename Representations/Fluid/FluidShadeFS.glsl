@@ -1,0 +1,141 @@
+//=========================================================================
+// ParaFluid screen-space fluid: the final pass, drawn into the view's framebuffer with the depth
+// test on, so the fluid composites with the opaque scene. Per pixel: eye position from the
+// smoothed depth; normal from the neighbours (the one-sided difference with the smaller depth
+// step at discontinuities); then the display mode's colour, and the surface's window depth.
+// Shading: Schlick's Fresnel with R0 from the index of refraction; reflection of the environment
+// (a cube map when FLUID_CUBEMAP is defined, else the view's background); Blinn-Phong specular from the view's lights; for
+// transparent fluid, the opaque scene behind refracted by normal x thickness and attenuated by
+// Beer-Lambert: transmission exp(-sigma t), sigma = -ln(fluidColor) / attenuationDistance, so a
+// layer attenuationDistance thick tints white light to fluidColor.
+//=========================================================================
+uniform sampler2D thicknessTex;
+uniform sampler2D opaqueColor;
+uniform sampler2D particleColorTex;
+uniform int hasParticleColors;
+uniform float colorMix;
+uniform mat4 VCDCMatrix;
+uniform int displayMode; // 0 opaque, 1 transparent, 2 normals, 3 thickness, 4 particle depth
+uniform vec3 fluidColor;
+uniform float attenuationDistance;
+uniform float refractiveIndex;
+uniform float refractionStrength;
+uniform float shininess;
+uniform float specularStrength;
+uniform float ambient;
+uniform int lightCount;
+uniform vec3 lightDirectionVC[6]; // direction the light travels, eye space
+uniform vec3 lightColor[6];
+#ifdef FLUID_CUBEMAP
+uniform samplerCube environment;
+#endif
+uniform mat3 eyeToCube;
+uniform vec3 backgroundBottom;
+uniform vec3 backgroundTop;
+uniform vec2 depthRange; // particle depth mode: nearest and farthest distance of the fluid
+
+//VTK::Output::Dec
+
+vec3 environmentColor(vec3 dirVC)
+{
+#ifdef FLUID_CUBEMAP
+  return texture(environment, eyeToCube * dirVC).rgb;
+#endif
+  // The view's background is a screen-space gradient: look it up by the direction's height.
+  return mix(backgroundBottom, backgroundTop, clamp(0.5 + 0.5 * dirVC.y, 0.0, 1.0));
+}
+
+// The neighbour difference with the smaller depth step (one-sided at discontinuities).
+vec3 tangent(ivec2 p, vec3 centre, ivec2 step)
+{
+  float dm = fetchDepth(p - step);
+  float dp = fetchDepth(p + step);
+  vec3 m = eyePosition(vec2(p - step) + 0.5, dm);
+  vec3 q = eyePosition(vec2(p + step) + 0.5, dp);
+  bool hasM = dm > 0.0;
+  bool hasP = dp > 0.0;
+  if (hasM && hasP)
+  {
+    return abs(q.z - centre.z) < abs(centre.z - m.z) ? q - centre : centre - m;
+  }
+  if (hasP)
+  {
+    return q - centre;
+  }
+  if (hasM)
+  {
+    return centre - m;
+  }
+  return vec3(step, 0.0);
+}
+
+void main()
+{
+  ivec2 p = targetPixel();
+  float d = fetchDepth(p);
+  if (d <= 0.0)
+  {
+    discard;
+  }
+  vec3 P = eyePosition(vec2(p) + 0.5, d);
+  vec3 N = normalize(cross(tangent(p, P, ivec2(1, 0)), tangent(p, P, ivec2(0, 1))));
+  vec3 V = parallelProjection != 0 ? vec3(0.0, 0.0, 1.0) : normalize(-P);
+  if (dot(N, V) < 0.0)
+  {
+    N = -N;
+  }
+  vec4 clip = VCDCMatrix * vec4(P, 1.0);
+  gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
+
+  float thickness = displayMode == 1 || displayMode == 3 ? texelFetch(thicknessTex, p, 0).r : 0.0;
+  vec3 color;
+  if (displayMode == 2)
+  {
+    color = 0.5 + 0.5 * N;
+  }
+  else if (displayMode == 3)
+  {
+    color = vec3(1.0 - exp(-thickness / attenuationDistance));
+  }
+  else if (displayMode == 4)
+  {
+    color = vec3(1.0 - clamp((d - depthRange.x) / max(depthRange.y - depthRange.x, 1e-12), 0.0, 1.0));
+  }
+  else
+  {
+    vec3 base = fluidColor;
+    if (hasParticleColors != 0)
+    {
+      base = mix(base, texelFetch(particleColorTex, p, 0).rgb, colorMix);
+    }
+    float cosine = max(dot(N, V), 0.0);
+    float r0 = (refractiveIndex - 1.0) / (refractiveIndex + 1.0);
+    r0 *= r0;
+    float fresnel = r0 + (1.0 - r0) * pow(1.0 - cosine, 5.0);
+    vec3 reflected = environmentColor(reflect(-V, N));
+    vec3 diffuse = vec3(ambient);
+    vec3 specular = vec3(0.0);
+    for (int i = 0; i < lightCount; ++i)
+    {
+      vec3 L = -lightDirectionVC[i];
+      diffuse += max(dot(N, L), 0.0) * lightColor[i];
+      vec3 H = normalize(L + V);
+      specular += pow(max(dot(N, H), 0.0), shininess) * lightColor[i];
+    }
+    specular *= specularStrength;
+    if (displayMode == 1)
+    {
+      vec2 offset = N.xy * thickness * refractionStrength / pixelFootprint(d);
+      ivec2 q = clamp(ivec2(vec2(p) + offset), rectMin, rectMax - 1);
+      vec3 behind = texelFetch(opaqueColor, q, 0).rgb;
+      vec3 sigma = -log(max(base, vec3(1e-3))) / attenuationDistance;
+      vec3 transmitted = behind * exp(-sigma * thickness);
+      color = mix(transmitted, reflected, fresnel) + specular;
+    }
+    else
+    {
+      color = base * diffuse * (1.0 - fresnel) + fresnel * reflected + specular;
+    }
+  }
+  gl_FragData[0] = vec4(clamp(color, 0.0, 1.0), 1.0);
+}

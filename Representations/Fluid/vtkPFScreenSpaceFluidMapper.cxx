@@ -1,0 +1,876 @@
+#include "vtkPFScreenSpaceFluidMapper.h"
+
+#include "FluidBilateralFS.h"
+#include "FluidCurvatureFlowFS.h"
+#include "FluidNarrowRangeFS.h"
+#include "FluidScreenCommon.h"
+#include "FluidShadeFS.h"
+#include "FluidSplatFS.h"
+#include "FluidSplatVS.h"
+#include "FluidThicknessBlurFS.h"
+
+#include "vtkCamera.h"
+#include "vtkCollectionIterator.h"
+#include "vtkDataArray.h"
+#include "vtkInformation.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLActor.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLTexture.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
+#include "vtkTexture.h"
+#include "vtkTextureObject.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+vtkStandardNewMacro(vtkPFScreenSpaceFluidMapper);
+
+namespace
+{
+/// A screen-space pass program built once per context from the shared prelude and its body.
+std::unique_ptr<vtkOpenGLQuadHelper> makeQuad(
+  vtkOpenGLRenderWindow* window, const char* body, const char* defines = "")
+{
+  std::string fs = std::string("//VTK::System::Dec\n") + defines + FluidScreenCommon + body;
+  return std::unique_ptr<vtkOpenGLQuadHelper>(new vtkOpenGLQuadHelper(window, nullptr, fs.c_str(), ""));
+}
+
+vtkSmartPointer<vtkTextureObject> makeTarget(vtkOpenGLRenderWindow* window)
+{
+  auto texture = vtkSmartPointer<vtkTextureObject>::New();
+  texture->SetContext(window);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  return texture;
+}
+
+/// Row vector times a VTK "key" matrix (stored transposed for OpenGL): the math product M x.
+std::array<double, 4> transformPoint(vtkMatrix4x4* transposed, const double x[3])
+{
+  std::array<double, 4> out{};
+  for (int c = 0; c < 4; ++c)
+  {
+    out[c] = x[0] * transposed->GetElement(0, c) + x[1] * transposed->GetElement(1, c) +
+      x[2] * transposed->GetElement(2, c) + transposed->GetElement(3, c);
+  }
+  return out;
+}
+}
+
+struct vtkPFScreenSpaceFluidMapper::Internals
+{
+  vtkOpenGLRenderWindow* Context = nullptr;
+  // Particles: xyz + radius (float4) and optional RGBA8 colours, as texture buffers.
+  vtkSmartPointer<vtkOpenGLBufferObject> ParticleBuffer, ColorBuffer;
+  vtkSmartPointer<vtkTextureObject> ParticleTexture, ColorTexture;
+  vtkMTimeType UploadedKey = 0;
+  vtkIdType Count = 0;
+  double MaxRadius = 0.0;
+  bool HasColors = false;
+  double Bounds[6] = { 0, 0, 0, 0, 0, 0 };
+
+  // Screen targets, the size of the viewport.
+  vtkSmartPointer<vtkTextureObject> OpaqueDepth, OpaqueColor, SplatDepth, ParticleColors;
+  std::array<vtkSmartPointer<vtkTextureObject>, 2> Depth, Thickness;
+  int Width = 0, Height = 0;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  // Core profiles draw only with a vertex array bound, even one without attributes.
+  GLuint EmptyVAO = 0;
+  vtkShaderProgram* SplatProgram = nullptr;
+  std::unique_ptr<vtkOpenGLQuadHelper> NarrowRange, Bilateral, Curvature, Blur, Shade, ShadeCube;
+  vtkSmartPointer<vtkTexture> Environment;
+
+  void Release(vtkWindow* window)
+  {
+    for (vtkTextureObject* t : { this->ParticleTexture.Get(), this->ColorTexture.Get(), this->OpaqueDepth.Get(),
+           this->OpaqueColor.Get(), this->SplatDepth.Get(), this->ParticleColors.Get(), this->Depth[0].Get(),
+           this->Depth[1].Get(), this->Thickness[0].Get(), this->Thickness[1].Get() })
+    {
+      if (t)
+      {
+        t->ReleaseGraphicsResources(window);
+      }
+    }
+    if (this->ParticleBuffer)
+    {
+      this->ParticleBuffer->ReleaseGraphicsResources();
+    }
+    if (this->ColorBuffer)
+    {
+      this->ColorBuffer->ReleaseGraphicsResources();
+    }
+    if (this->Framebuffer)
+    {
+      this->Framebuffer->ReleaseGraphicsResources(window);
+    }
+    if (this->EmptyVAO && window)
+    {
+      static_cast<vtkOpenGLRenderWindow*>(window)->MakeCurrent();
+      glDeleteVertexArrays(1, &this->EmptyVAO);
+    }
+    for (auto* quad : { &this->NarrowRange, &this->Bilateral, &this->Curvature, &this->Blur, &this->Shade,
+           &this->ShadeCube })
+    {
+      if (*quad)
+      {
+        (*quad)->ReleaseGraphicsResources(window);
+        quad->reset();
+      }
+    }
+    if (this->Environment)
+    {
+      this->Environment->ReleaseGraphicsResources(window);
+    }
+    this->ParticleBuffer = this->ColorBuffer = nullptr;
+    this->ParticleTexture = this->ColorTexture = this->OpaqueDepth = this->OpaqueColor = nullptr;
+    this->SplatDepth = this->ParticleColors = nullptr;
+    this->Depth = {};
+    this->Thickness = {};
+    this->Framebuffer = nullptr;
+    this->EmptyVAO = 0;
+    this->SplatProgram = nullptr;
+    this->UploadedKey = 0;
+    this->Width = this->Height = 0;
+    this->Context = nullptr;
+  }
+
+  /// (Re)creates the screen targets for a viewport of width x height.
+  void EnsureTargets(vtkOpenGLRenderWindow* window, int width, int height, bool colors)
+  {
+    if (!this->Framebuffer)
+    {
+      this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      this->Framebuffer->SetContext(window);
+      glGenVertexArrays(1, &this->EmptyVAO);
+    }
+    const bool resize = width != this->Width || height != this->Height;
+    auto single = [&](vtkSmartPointer<vtkTextureObject>& t) {
+      if (!t)
+      {
+        t = makeTarget(window);
+        t->SetInternalFormat(GL_R32F);
+        t->SetFormat(GL_RED);
+        t->Allocate2D(width, height, 1, VTK_FLOAT);
+      }
+      else if (resize)
+      {
+        t->Resize(width, height);
+      }
+    };
+    single(this->Depth[0]);
+    single(this->Depth[1]);
+    single(this->Thickness[0]);
+    single(this->Thickness[1]);
+    auto depth = [&](vtkSmartPointer<vtkTextureObject>& t) {
+      if (!t)
+      {
+        t = makeTarget(window);
+        t->AllocateDepth(width, height, vtkTextureObject::Float32);
+      }
+      else if (resize)
+      {
+        t->Resize(width, height);
+      }
+    };
+    depth(this->OpaqueDepth);
+    depth(this->SplatDepth);
+    auto rgba = [&](vtkSmartPointer<vtkTextureObject>& t) {
+      if (!t)
+      {
+        t = makeTarget(window);
+        t->Allocate2D(width, height, 4, VTK_UNSIGNED_CHAR);
+      }
+      else if (resize)
+      {
+        t->Resize(width, height);
+      }
+    };
+    rgba(this->OpaqueColor);
+    if (colors || this->ParticleColors)
+    {
+      rgba(this->ParticleColors);
+    }
+    this->Width = width;
+    this->Height = height;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkPFScreenSpaceFluidMapper::vtkPFScreenSpaceFluidMapper()
+  : Internal(new Internals)
+{
+}
+
+vtkPFScreenSpaceFluidMapper::~vtkPFScreenSpaceFluidMapper() = default;
+
+void vtkPFScreenSpaceFluidMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ParticleRadius: " << this->ParticleRadius << "\n";
+  os << indent << "RadiusArray: " << this->RadiusArray << "\n";
+  os << indent << "SmoothingMethod: " << this->SmoothingMethod << "\n";
+  os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
+  os << indent << "DisplayMode: " << this->DisplayMode << "\n";
+}
+
+int vtkPFScreenSpaceFluidMapper::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+void vtkPFScreenSpaceFluidMapper::SetRadiusArray(const char* name)
+{
+  const std::string value = name ? name : "";
+  if (value != this->RadiusArray)
+  {
+    this->RadiusArray = value;
+    this->Modified();
+  }
+}
+
+void vtkPFScreenSpaceFluidMapper::SetEnvironmentTexture(vtkTexture* texture)
+{
+  if (this->Internal->Environment != texture)
+  {
+    this->Internal->Environment = texture;
+    this->Modified();
+  }
+}
+
+void vtkPFScreenSpaceFluidMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Internal->Release(window);
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+double* vtkPFScreenSpaceFluidMapper::GetBounds()
+{
+  auto* input = vtkPointSet::SafeDownCast(this->GetInputDataObject(0, 0));
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+    return this->Bounds;
+  }
+  input->GetBounds(this->Bounds);
+  // The spheres reach a radius past the centres.
+  double radius = this->ParticleRadius;
+  if (!this->RadiusArray.empty())
+  {
+    if (vtkDataArray* radii = input->GetPointData()->GetArray(this->RadiusArray.c_str()))
+    {
+      radius = std::max(std::abs(radii->GetRange(0)[0]), std::abs(radii->GetRange(0)[1]));
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    this->Bounds[2 * i] -= radius;
+    this->Bounds[2 * i + 1] += radius;
+  }
+  return this->Bounds;
+}
+
+//------------------------------------------------------------------------------
+void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
+{
+  Internals& in = *this->Internal;
+  this->LastPassCount = 0;
+  std::fill(this->LastScreenRect, this->LastScreenRect + 4, 0);
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  auto* input = vtkPointSet::SafeDownCast(this->GetInputDataObject(0, 0));
+  if (!window || !input || input->GetNumberOfPoints() == 0)
+  {
+    return;
+  }
+  if (in.Context && in.Context != window)
+  {
+    in.Release(in.Context);
+  }
+  in.Context = window;
+
+  // --- Particles to the GPU when the data, the radius or the colouring changed.
+  int cellFlag = 0;
+  vtkUnsignedCharArray* colors = this->ScalarVisibility ? this->MapScalars(input, 1.0, cellFlag) : nullptr;
+  if (colors && (cellFlag != 0 || colors->GetNumberOfTuples() != input->GetNumberOfPoints()))
+  {
+    colors = nullptr; // cell colours have no particle to sit on
+  }
+  vtkMTimeType key = std::max(input->GetMTime(), this->GetMTime());
+  if (colors)
+  {
+    key = std::max(key, colors->GetMTime());
+  }
+  if (key != in.UploadedKey || (colors != nullptr) != in.HasColors || !in.ParticleTexture)
+  {
+    const vtkIdType n = input->GetNumberOfPoints();
+    vtkDataArray* radii = this->RadiusArray.empty() ? nullptr : input->GetPointData()->GetArray(this->RadiusArray.c_str());
+    std::vector<float> packed(static_cast<size_t>(4 * n));
+    double maxRadius = 0.0;
+    vtkMath::UninitializeBounds(in.Bounds);
+    double box[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      input->GetPoint(i, x);
+      double r = radii ? radii->GetComponent(i, 0) : this->ParticleRadius;
+      const bool finite = std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]) && std::isfinite(r);
+      if (!finite || r <= 0.0)
+      {
+        r = 0.0; // the vertex shader drops it: a NaN particle must not poison the picture
+      }
+      else
+      {
+        maxRadius = std::max(maxRadius, r);
+        for (int k = 0; k < 3; ++k)
+        {
+          box[2 * k] = std::min(box[2 * k], x[k]);
+          box[2 * k + 1] = std::max(box[2 * k + 1], x[k]);
+        }
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        packed[4 * i + k] = finite ? static_cast<float>(x[k]) : 0.0f;
+      }
+      packed[4 * i + 3] = static_cast<float>(r);
+    }
+    if (maxRadius > 0.0)
+    {
+      std::copy(box, box + 6, in.Bounds);
+    }
+    if (!in.ParticleBuffer)
+    {
+      in.ParticleBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+      in.ParticleBuffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
+      in.ParticleTexture = makeTarget(window);
+    }
+    in.ParticleBuffer->Upload(packed, vtkOpenGLBufferObject::TextureBuffer);
+    in.ParticleTexture->ReleaseGraphicsResources(window);
+    in.ParticleTexture->CreateTextureBuffer(static_cast<unsigned int>(n), 4, VTK_FLOAT, in.ParticleBuffer);
+    in.HasColors = colors != nullptr;
+    if (colors)
+    {
+      if (!in.ColorBuffer)
+      {
+        in.ColorBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+        in.ColorBuffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
+        in.ColorTexture = makeTarget(window);
+      }
+      // MapScalars gives 4 components for RGBA lookup tables and may give fewer otherwise.
+      std::vector<unsigned char> rgba(static_cast<size_t>(4 * n), 255);
+      const int nc = colors->GetNumberOfComponents();
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        const unsigned char* c = colors->GetPointer(nc * i);
+        for (int k = 0; k < 3; ++k)
+        {
+          rgba[4 * i + k] = c[nc >= 3 ? k : 0];
+        }
+      }
+      in.ColorBuffer->Upload(rgba, vtkOpenGLBufferObject::TextureBuffer);
+      in.ColorTexture->ReleaseGraphicsResources(window);
+      in.ColorTexture->CreateTextureBuffer(static_cast<unsigned int>(n), 4, VTK_UNSIGNED_CHAR, in.ColorBuffer);
+    }
+    in.Count = n;
+    in.MaxRadius = maxRadius;
+    in.UploadedKey = key;
+  }
+  if (in.MaxRadius <= 0.0)
+  {
+    return; // nothing finite to draw
+  }
+
+  // --- Camera: the key matrices are stored transposed, ready for SetUniformMatrix.
+  int width = 0, height = 0, originX = 0, originY = 0;
+  renderer->GetTiledSizeAndOrigin(&width, &height, &originX, &originY);
+  if (width <= 0 || height <= 0)
+  {
+    return;
+  }
+  auto* camera = static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera());
+  vtkMatrix4x4 *wcvc = nullptr, *vcdc = nullptr, *wcdc = nullptr;
+  vtkMatrix3x3* normals = nullptr;
+  camera->GetKeyMatrices(renderer, wcvc, normals, vcdc, wcdc);
+  vtkNew<vtkMatrix4x4> mcvc;
+  mcvc->DeepCopy(wcvc);
+  if (actor && !actor->GetIsIdentity())
+  {
+    vtkMatrix4x4* mcwc = nullptr;
+    vtkMatrix3x3* actorNormals = nullptr;
+    static_cast<vtkOpenGLActor*>(actor)->GetKeyMatrices(mcwc, actorNormals);
+    vtkMatrix4x4::Multiply4x4(mcwc, wcvc, mcvc);
+  }
+  const bool parallel = camera->GetParallelProjection() != 0;
+  const double nearDistance = camera->GetClippingRange()[0];
+  float projection[4];
+  projection[0] = static_cast<float>(vcdc->GetElement(0, 0));
+  projection[1] = static_cast<float>(vcdc->GetElement(1, 1));
+  projection[2] = static_cast<float>(vcdc->GetElement(parallel ? 3 : 2, 0));
+  projection[3] = static_cast<float>(vcdc->GetElement(parallel ? 3 : 2, 1));
+
+  // --- Where the fluid is on screen: its bounds (grown by the radius) projected.
+  int rect[4] = { 0, 0, width, height };
+  double nearest = VTK_DOUBLE_MAX, farthest = 0.0;
+  {
+    bool behindEye = false;
+    double lo[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, hi[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const double x[3] = { in.Bounds[(corner & 1) ? 1 : 0] + ((corner & 1) ? in.MaxRadius : -in.MaxRadius),
+        in.Bounds[(corner & 2) ? 3 : 2] + ((corner & 2) ? in.MaxRadius : -in.MaxRadius),
+        in.Bounds[(corner & 4) ? 5 : 4] + ((corner & 4) ? in.MaxRadius : -in.MaxRadius) };
+      const auto eye = transformPoint(mcvc, x);
+      const double distance = -eye[2];
+      nearest = std::min(nearest, distance);
+      farthest = std::max(farthest, distance);
+      if (!parallel && distance <= nearDistance)
+      {
+        behindEye = true;
+        continue;
+      }
+      double e[3] = { eye[0], eye[1], eye[2] };
+      const auto clip = transformPoint(vcdc, e);
+      for (int k = 0; k < 2; ++k)
+      {
+        const double ndc = clip[k] / clip[3];
+        lo[k] = std::min(lo[k], ndc);
+        hi[k] = std::max(hi[k], ndc);
+      }
+    }
+    if (farthest <= nearDistance && !parallel)
+    {
+      return; // all behind the camera
+    }
+    if (!behindEye)
+    {
+      const int margin = this->MaxFilterRadius + 2;
+      const int size[2] = { width, height };
+      for (int k = 0; k < 2; ++k)
+      {
+        const double a = (0.5 * lo[k] + 0.5) * size[k] - margin;
+        const double b = (0.5 * hi[k] + 0.5) * size[k] + margin;
+        rect[k] = static_cast<int>(std::floor(std::max(0.0, std::min(a, double(size[k])))));
+        rect[k + 2] = static_cast<int>(std::ceil(std::max(0.0, std::min(b, double(size[k])))));
+      }
+    }
+    if (rect[2] <= rect[0] || rect[3] <= rect[1])
+    {
+      return; // off screen
+    }
+  }
+  std::copy(rect, rect + 4, this->LastScreenRect);
+  const int rectMin[2] = { rect[0], rect[1] };
+  const int rectMax[2] = { rect[2], rect[3] };
+  const int rectSize[2] = { rect[2] - rect[0], rect[3] - rect[1] };
+
+  const int mode = this->DisplayMode;
+  const bool needThickness = mode == TransparentFluid || mode == Thickness;
+  const bool needOpaqueColor = mode == TransparentFluid;
+  const bool smooth = mode != ParticleDepth && this->SmoothingIterations > 0;
+
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglViewport savedViewport(state);
+  vtkOpenGLState::ScopedglScissor savedScissor(state);
+  vtkOpenGLState::ScopedglEnableDisable savedScissorTest(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+  vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
+  vtkOpenGLState::ScopedglColorMask savedColorMask(state);
+  vtkOpenGLState::ScopedglClearColor savedClearColor(state);
+  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
+
+  in.EnsureTargets(window, width, height, in.HasColors);
+
+  // --- The opaque scene drawn so far: its depth (occlusion) and, for refraction, its colour.
+  // Read from the framebuffer being drawn (the read binding may point elsewhere, e.g. at
+  // ParaView's display buffer).
+  GLint drawFramebuffer = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
+  state->PushReadFramebufferBinding();
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawFramebuffer);
+  // (vtkTextureObject::CopyFromFrameBuffer re-creates the texture at the copied size; the
+  // targets must keep the viewport's size, so copy into the rectangle ourselves.)
+  auto copyRect = [&](vtkTextureObject* target) {
+    target->Bind();
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, rect[0], rect[1], originX + rect[0], originY + rect[1], rectSize[0], rectSize[1]);
+    target->Deactivate();
+  };
+  copyRect(in.OpaqueDepth);
+  if (needOpaqueColor)
+  {
+    copyRect(in.OpaqueColor);
+  }
+  state->PopReadFramebufferBinding();
+
+  state->PushFramebufferBindings();
+  vtkOpenGLFramebufferObject* fbo = in.Framebuffer;
+  fbo->Bind();
+  state->vtkglViewport(0, 0, width, height);
+  state->vtkglEnable(GL_SCISSOR_TEST);
+  state->vtkglScissor(rect[0], rect[1], rectSize[0], rectSize[1]);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+
+  // --- Pass 1 (and 3): sphere splats.
+  if (!in.SplatProgram)
+  {
+    in.SplatProgram = window->GetShaderCache()->ReadyShaderProgram(FluidSplatVS, FluidSplatFS, "");
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(in.SplatProgram);
+  }
+  vtkShaderProgram* splat = in.SplatProgram;
+  if (!splat)
+  {
+    state->PopFramebufferBindings();
+    vtkErrorMacro("The screen-space fluid splat shader did not compile (see the messages above).");
+    return;
+  }
+  in.ParticleTexture->Activate();
+  splat->SetUniformi("particles", in.ParticleTexture->GetTextureUnit());
+  splat->SetUniformi("hasColors", in.HasColors ? 1 : 0);
+  if (in.HasColors)
+  {
+    in.ColorTexture->Activate();
+    splat->SetUniformi("particleColors", in.ColorTexture->GetTextureUnit());
+  }
+  else
+  {
+    // Unused, but a sampler left on unit 0 could alias a different sampler type there.
+    splat->SetUniformi("particleColors", in.ParticleTexture->GetTextureUnit());
+  }
+  in.OpaqueDepth->Activate();
+  splat->SetUniformi("opaqueDepth", in.OpaqueDepth->GetTextureUnit());
+  splat->SetUniformi("useOpaqueDepth", 1);
+  splat->SetUniformMatrix("MCVCMatrix", mcvc);
+  splat->SetUniformMatrix("VCDCMatrix", vcdc);
+  splat->SetUniformi("parallelProjection", parallel ? 1 : 0);
+  splat->SetUniformf("nearDistance", static_cast<float>(nearDistance));
+  glBindVertexArray(in.EmptyVAO);
+  const GLsizei vertices = static_cast<GLsizei>(6 * in.Count);
+
+  fbo->AddColorAttachment(0, in.Depth[0]);
+  if (in.HasColors)
+  {
+    fbo->AddColorAttachment(1, in.ParticleColors);
+  }
+  fbo->AddDepthAttachment(in.SplatDepth);
+  fbo->ActivateDrawBuffers(in.HasColors ? 2 : 1);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglDepthFunc(GL_LESS);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  splat->SetUniformi("thicknessPass", 0);
+  glDrawArrays(GL_TRIANGLES, 0, vertices);
+  ++this->LastPassCount;
+  if (in.HasColors)
+  {
+    fbo->RemoveColorAttachment(1);
+  }
+  fbo->RemoveDepthAttachment();
+  fbo->ActivateDrawBuffers(1);
+
+  if (needThickness)
+  {
+    fbo->AddColorAttachment(0, in.Thickness[0]);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_FALSE);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+    splat->SetUniformi("thicknessPass", 1);
+    glDrawArrays(GL_TRIANGLES, 0, vertices);
+    state->vtkglDisable(GL_BLEND);
+    ++this->LastPassCount;
+  }
+  glBindVertexArray(0);
+  in.ParticleTexture->Deactivate();
+  if (in.HasColors)
+  {
+    in.ColorTexture->Deactivate();
+  }
+  in.OpaqueDepth->Deactivate();
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+
+  auto commonUniforms = [&](vtkShaderProgram* program) {
+    const float viewport[2] = { static_cast<float>(width), static_cast<float>(height) };
+    program->SetUniform2i("rectMin", rectMin);
+    program->SetUniform2i("rectMax", rectMax);
+    program->SetUniform2f("viewportSize", viewport);
+    program->SetUniformi("parallelProjection", parallel ? 1 : 0);
+    program->SetUniform4f("projection", projection);
+  };
+  // One full-screen pass (clipped to the fluid's rectangle) from `source` into `target`.
+  auto filterPass = [&](vtkOpenGLQuadHelper* quad, vtkTextureObject* source, vtkTextureObject* target,
+                      const char* sourceName) {
+    fbo->AddColorAttachment(0, target);
+    source->Activate();
+    quad->Program->SetUniformi(sourceName, source->GetTextureUnit());
+    quad->Render();
+    source->Deactivate();
+    ++this->LastPassCount;
+  };
+
+  // --- Pass 3b: blur the thickness (separable Gaussian).
+  if (needThickness)
+  {
+    if (!in.Blur)
+    {
+      in.Blur = makeQuad(window, FluidThicknessBlurFS);
+    }
+    else
+    {
+      window->GetShaderCache()->ReadyShaderProgram(in.Blur->Program);
+    }
+    vtkShaderProgram* program = in.Blur->Program;
+    commonUniforms(program);
+    program->SetUniformi("radius", std::max(1, this->MaxFilterRadius / 2));
+    const int dx[2] = { 1, 0 }, dy[2] = { 0, 1 };
+    program->SetUniform2i("stepDir", dx);
+    filterPass(in.Blur.get(), in.Thickness[0], in.Thickness[1], "thicknessTex");
+    program->SetUniform2i("stepDir", dy);
+    filterPass(in.Blur.get(), in.Thickness[1], in.Thickness[0], "thicknessTex");
+  }
+
+  // --- Pass 2: smooth the depth.
+  int current = 0;
+  if (smooth)
+  {
+    std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->SmoothingMethod == NarrowRange
+      ? in.NarrowRange
+      : (this->SmoothingMethod == Bilateral ? in.Bilateral : in.Curvature);
+    if (!quad)
+    {
+      quad = makeQuad(window,
+        this->SmoothingMethod == NarrowRange ? FluidNarrowRangeFS
+                                             : (this->SmoothingMethod == Bilateral ? FluidBilateralFS : FluidCurvatureFlowFS));
+    }
+    else
+    {
+      window->GetShaderCache()->ReadyShaderProgram(quad->Program);
+    }
+    vtkShaderProgram* program = quad->Program;
+    commonUniforms(program);
+    // The filters work in the radius of the particles on screen: the largest one is the safe
+    // choice for the band of depths that count as one surface.
+    program->SetUniformf("particleRadius", static_cast<float>(in.MaxRadius));
+    program->SetUniformf("rangeFactor", static_cast<float>(this->DepthRange));
+    if (this->SmoothingMethod == CurvatureFlow)
+    {
+      program->SetUniformf("stepFactor", static_cast<float>(this->CurvatureFlowStep));
+      for (int i = 0; i < this->SmoothingIterations; ++i)
+      {
+        filterPass(quad.get(), in.Depth[current], in.Depth[1 - current], "depthTex");
+        current = 1 - current;
+      }
+    }
+    else
+    {
+      program->SetUniformf("filterSize", static_cast<float>(this->FilterSize));
+      program->SetUniformi("maxRadius", this->MaxFilterRadius);
+      const int dx[2] = { 1, 0 }, dy[2] = { 0, 1 };
+      for (int i = 0; i < this->SmoothingIterations; ++i)
+      {
+        program->SetUniform2i("stepDir", dx);
+        filterPass(quad.get(), in.Depth[0], in.Depth[1], "depthTex");
+        program->SetUniform2i("stepDir", dy);
+        filterPass(quad.get(), in.Depth[1], in.Depth[0], "depthTex");
+      }
+    }
+  }
+  fbo->RemoveColorAttachment(0);
+  state->PopFramebufferBindings();
+
+  // --- Pass 4: shade into the view, with depth so the opaque scene occludes and is occluded.
+  state->vtkglViewport(originX, originY, width, height);
+  state->vtkglScissor(originX + rect[0], originY + rect[1], rectSize[0], rectSize[1]);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LEQUAL);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglDisable(GL_BLEND);
+  // Environment: our cube map, else the renderer's, else the background colours.
+  vtkTexture* environment = in.Environment;
+  float eyeToCube[9];
+  if (!environment && renderer->GetEnvironmentTexture() && renderer->GetEnvironmentTexture()->GetCubeMap())
+  {
+    environment = renderer->GetEnvironmentTexture();
+  }
+  if (environment && !environment->GetCubeMap())
+  {
+    environment = nullptr;
+  }
+  std::unique_ptr<vtkOpenGLQuadHelper>& shadeQuad = environment ? in.ShadeCube : in.Shade;
+  if (!shadeQuad)
+  {
+    shadeQuad = makeQuad(window, FluidShadeFS, environment ? "#define FLUID_CUBEMAP\n" : "");
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(shadeQuad->Program);
+  }
+  vtkShaderProgram* shade = shadeQuad->Program;
+  commonUniforms(shade);
+  shade->SetUniformMatrix("VCDCMatrix", vcdc);
+  shade->SetUniformi("displayMode", mode);
+  shade->SetUniform3f("fluidColor", this->FluidColor);
+  shade->SetUniformf("attenuationDistance", static_cast<float>(this->AttenuationDistance));
+  shade->SetUniformf("refractiveIndex", static_cast<float>(this->RefractiveIndex));
+  shade->SetUniformf("refractionStrength", static_cast<float>(this->RefractionStrength));
+  shade->SetUniformf("shininess", static_cast<float>(this->Shininess));
+  shade->SetUniformf("specularStrength", static_cast<float>(this->SpecularStrength));
+  shade->SetUniformf("ambient", static_cast<float>(this->Ambient));
+  shade->SetUniformf("colorMix", static_cast<float>(this->ColorMix));
+  const float depthRange[2] = { static_cast<float>(std::max(nearest, nearDistance)), static_cast<float>(farthest) };
+  shade->SetUniform2f("depthRange", depthRange);
+
+  vtkMatrix4x4* view = camera->GetViewTransformMatrix();
+  // Lights: directions in eye space (the view matrix's rotation), colour x intensity.
+  {
+    float directions[6][3] = {};
+    float lightColors[6][3] = {};
+    int count = 0;
+    vtkCollectionSimpleIterator it;
+    vtkLightCollection* lights = renderer->GetLights();
+    lights->InitTraversal(it);
+    while (vtkLight* light = lights->GetNextLight(it))
+    {
+      if (!light->GetSwitch() || count == 6)
+      {
+        continue;
+      }
+      double d[3] = { 0.0, 0.0, -1.0 };
+      if (!light->LightTypeIsHeadlight())
+      {
+        double p[3], f[3], w[3];
+        light->GetTransformedPosition(p);
+        light->GetTransformedFocalPoint(f);
+        for (int k = 0; k < 3; ++k)
+        {
+          w[k] = f[k] - p[k];
+        }
+        for (int r = 0; r < 3; ++r)
+        {
+          d[r] = view->GetElement(r, 0) * w[0] + view->GetElement(r, 1) * w[1] + view->GetElement(r, 2) * w[2];
+        }
+        vtkMath::Normalize(d);
+      }
+      const double* c = light->GetDiffuseColor();
+      for (int k = 0; k < 3; ++k)
+      {
+        directions[count][k] = static_cast<float>(d[k]);
+        lightColors[count][k] = static_cast<float>(c[k] * light->GetIntensity());
+      }
+      ++count;
+    }
+    shade->SetUniformi("lightCount", count);
+    shade->SetUniform3fv("lightDirectionVC", 6, directions);
+    shade->SetUniform3fv("lightColor", 6, lightColors);
+
+    // Eye direction -> world (the inverse rotation is the transpose), then world -> cube frame.
+    double cubeAxes[3][3] = { { 1, 0, 0 }, { 0, 0, 1 }, { 0, -1, 0 } }; // ParaFluid's: image +Y = world +Z
+    if (environment && environment == renderer->GetEnvironmentTexture())
+    {
+      const double* up = renderer->GetEnvironmentUp();
+      const double* right = renderer->GetEnvironmentRight();
+      double front[3];
+      vtkMath::Cross(right, up, front);
+      for (int k = 0; k < 3; ++k)
+      {
+        cubeAxes[0][k] = right[k];
+        cubeAxes[1][k] = up[k];
+        cubeAxes[2][k] = front[k];
+      }
+    }
+    // eyeToCube = cubeAxes * R^T; GLSL reads the array column-major, so store its transpose.
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        double v = 0.0;
+        for (int k = 0; k < 3; ++k)
+        {
+          v += cubeAxes[r][k] * view->GetElement(c, k);
+        }
+        eyeToCube[c * 3 + r] = static_cast<float>(v);
+      }
+    }
+    shade->SetUniformMatrix3x3("eyeToCube", eyeToCube);
+    const double* bottom = renderer->GetBackground();
+    const double* top = renderer->GetGradientBackground() ? renderer->GetBackground2() : bottom;
+    shade->SetUniform3f("backgroundBottom", bottom);
+    shade->SetUniform3f("backgroundTop", top);
+    if (environment)
+    {
+      environment->Render(renderer);
+      auto* gl = vtkOpenGLTexture::SafeDownCast(environment);
+      if (gl && gl->GetTextureObject())
+      {
+        shade->SetUniformi("environment", gl->GetTextureUnit());
+      }
+    }
+    in.Depth[current]->Activate();
+    shade->SetUniformi("depthTex", in.Depth[current]->GetTextureUnit());
+    if (needThickness)
+    {
+      in.Thickness[0]->Activate();
+      shade->SetUniformi("thicknessTex", in.Thickness[0]->GetTextureUnit());
+    }
+    if (needOpaqueColor)
+    {
+      in.OpaqueColor->Activate();
+      shade->SetUniformi("opaqueColor", in.OpaqueColor->GetTextureUnit());
+    }
+    shade->SetUniformi("hasParticleColors", in.HasColors ? 1 : 0);
+    if (in.HasColors)
+    {
+      in.ParticleColors->Activate();
+      shade->SetUniformi("particleColorTex", in.ParticleColors->GetTextureUnit());
+    }
+    shadeQuad->Render();
+    ++this->LastPassCount;
+    in.Depth[current]->Deactivate();
+    if (needThickness)
+    {
+      in.Thickness[0]->Deactivate();
+    }
+    if (needOpaqueColor)
+    {
+      in.OpaqueColor->Deactivate();
+    }
+    if (in.HasColors)
+    {
+      in.ParticleColors->Deactivate();
+    }
+    if (environment)
+    {
+      environment->PostRender(renderer);
+    }
+  }
+}

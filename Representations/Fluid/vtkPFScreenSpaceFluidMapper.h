@@ -1,0 +1,154 @@
+/**
+ * @class vtkPFScreenSpaceFluidMapper
+ * @brief Draws particles as a smooth liquid surface in screen space, on the GPU.
+ *
+ * Passes, each a GPU pass over the part of the viewport the fluid covers (its bounds projected,
+ * plus the filter's margin), none run that the settings do not need:
+ *  1. depth splats: every particle an exact ray-traced sphere (constant radius or a point array),
+ *     writing the eye-space distance of the nearest surface (and the particle colour when
+ *     colouring by an array);
+ *  2. smoothing of that depth, SmoothingIterations times: the narrow-range filter (Truong &
+ *     Yuksel 2018) and the bilateral filter as separable pairs of 1D passes, or screen-space
+ *     curvature flow (van der Laan et al. 2009), one pass per step;
+ *  3. thickness (transparent fluid and thickness display only): additive chord lengths, blurred
+ *     by a separable Gaussian;
+ *  4. the shading pass into the view: normals from the smoothed depth, Fresnel reflection of the
+ *     environment, refraction of the opaque scene behind with Beer-Lambert attenuation, specular
+ *     from the renderer's lights, and the surface's depth so it composites with the scene.
+ *
+ * The opaque scene must have been drawn first: use it with vtkPFScreenSpaceFluidActor, which
+ * renders it after all opaque, translucent and volumetric geometry.
+ */
+#ifndef vtkPFScreenSpaceFluidMapper_h
+#define vtkPFScreenSpaceFluidMapper_h
+
+#include "ParaFluidFluidRepresentationsModule.h"
+#include "vtkMapper.h"
+
+#include <memory>
+#include <string>
+
+class vtkTexture;
+
+class PARAFLUIDFLUIDREPRESENTATIONS_EXPORT vtkPFScreenSpaceFluidMapper : public vtkMapper
+{
+public:
+  static vtkPFScreenSpaceFluidMapper* New();
+  vtkTypeMacro(vtkPFScreenSpaceFluidMapper, vtkMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum SmoothingMethods
+  {
+    NarrowRange = 0,
+    Bilateral = 1,
+    CurvatureFlow = 2
+  };
+  enum DisplayModes
+  {
+    OpaqueSurface = 0,
+    TransparentFluid = 1,
+    Normals = 2,
+    Thickness = 3,
+    ParticleDepth = 4
+  };
+
+  //@{
+  /// Particle radius in world units (when RadiusArray is empty or missing).
+  vtkSetClampMacro(ParticleRadius, double, 1e-12, 1e30);
+  vtkGetMacro(ParticleRadius, double);
+  /// Point array holding each particle's radius [world units]; empty: ParticleRadius for all.
+  void SetRadiusArray(const char* name);
+  const char* GetRadiusArray() const { return this->RadiusArray.c_str(); }
+  //@}
+
+  //@{
+  /// Depth smoothing: method, iterations (0: none), filter width in particle radii (narrow-range
+  /// and bilateral; at most MaxFilterRadius pixels each side), the depth band in particle radii
+  /// (narrow-range mu, bilateral sigma, curvature-flow boundary), and the curvature-flow step as
+  /// a fraction of the stable limit's scale (footprint^2; at most 0.45).
+  vtkSetClampMacro(SmoothingMethod, int, 0, 2);
+  vtkGetMacro(SmoothingMethod, int);
+  vtkSetClampMacro(SmoothingIterations, int, 0, 1000);
+  vtkGetMacro(SmoothingIterations, int);
+  vtkSetClampMacro(FilterSize, double, 0.1, 50.0);
+  vtkGetMacro(FilterSize, double);
+  vtkSetClampMacro(MaxFilterRadius, int, 1, 64);
+  vtkGetMacro(MaxFilterRadius, int);
+  vtkSetClampMacro(DepthRange, double, 0.01, 100.0);
+  vtkGetMacro(DepthRange, double);
+  vtkSetClampMacro(CurvatureFlowStep, double, 0.001, 0.45);
+  vtkGetMacro(CurvatureFlowStep, double);
+  //@}
+
+  //@{
+  /// What is drawn: see DisplayModes.
+  vtkSetClampMacro(DisplayMode, int, 0, 4);
+  vtkGetMacro(DisplayMode, int);
+  /// Colour of the fluid (opaque surface), and the tint white light takes through
+  /// AttenuationDistance world units of it (transparent fluid, Beer-Lambert).
+  vtkSetVector3Macro(FluidColor, double);
+  vtkGetVector3Macro(FluidColor, double);
+  vtkSetClampMacro(AttenuationDistance, double, 1e-12, 1e30);
+  vtkGetMacro(AttenuationDistance, double);
+  /// Index of refraction (1.33 for water): sets Schlick's R0.
+  vtkSetClampMacro(RefractiveIndex, double, 1.0, 4.0);
+  vtkGetMacro(RefractiveIndex, double);
+  /// How far the scene behind shifts: world units per unit of normal x thickness.
+  vtkSetClampMacro(RefractionStrength, double, 0.0, 10.0);
+  vtkGetMacro(RefractionStrength, double);
+  vtkSetClampMacro(Shininess, double, 1.0, 10000.0);
+  vtkSetClampMacro(SpecularStrength, double, 0.0, 10.0);
+  vtkSetClampMacro(Ambient, double, 0.0, 1.0);
+  /// Weight of the colour mapped from the scalars (ScalarVisibility) against FluidColor.
+  vtkSetClampMacro(ColorMix, double, 0.0, 1.0);
+  /// A cube map (vtkTexture with CubeMap on) to reflect; without it the renderer's environment
+  /// texture when it has one, else the view's background colours.
+  void SetEnvironmentTexture(vtkTexture* texture);
+  //@}
+
+  void Render(vtkRenderer* renderer, vtkActor* actor) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->vtkMapper::GetBounds(bounds); }
+
+  //@{
+  /// What the last Render did, for tests and benchmarks: GPU passes run (splats, filters,
+  /// shading), and the screen rectangle they covered (x0, y0, x1, y1 in viewport pixels).
+  int GetLastPassCount() const { return this->LastPassCount; }
+  const int* GetLastScreenRect() const { return this->LastScreenRect; }
+  //@}
+
+protected:
+  vtkPFScreenSpaceFluidMapper();
+  ~vtkPFScreenSpaceFluidMapper() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+private:
+  vtkPFScreenSpaceFluidMapper(const vtkPFScreenSpaceFluidMapper&) = delete;
+  void operator=(const vtkPFScreenSpaceFluidMapper&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+
+  double ParticleRadius = 0.01;
+  std::string RadiusArray;
+  int SmoothingMethod = NarrowRange;
+  int SmoothingIterations = 3;
+  double FilterSize = 4.0;
+  int MaxFilterRadius = 12;
+  double DepthRange = 2.0;
+  double CurvatureFlowStep = 0.2;
+  int DisplayMode = TransparentFluid;
+  double FluidColor[3] = { 0.1, 0.45, 0.75 };
+  double AttenuationDistance = 1.0;
+  double RefractiveIndex = 1.33;
+  double RefractionStrength = 0.1;
+  double Shininess = 150.0;
+  double SpecularStrength = 0.8;
+  double Ambient = 0.2;
+  double ColorMix = 0.8;
+  int LastPassCount = 0;
+  int LastScreenRect[4] = { 0, 0, 0, 0 };
+};
+
+#endif
