@@ -4,8 +4,8 @@
 // keeps the large shape. Derivatives are taken over the pixel's world footprint at d (this drops
 // the paper's second-order perspective coupling term). Neighbours that are empty or further
 // than rangeFactor particle radii in depth are boundaries: one-sided first derivatives, no
-// second derivative across them. dt = stepFactor * footprint^2 keeps the explicit step stable
-// (the limit is 1/2 for the 5-point stencil).
+// second derivative across them. The step dt = stepFactor / (1/hx^2 + 1/hy^2) over the footprints
+// hx, hy is stable for stepFactor < 1 (the 5-point stencil's limit for d_t = laplacian(d) / 2).
 //=========================================================================
 uniform float particleRadius;
 uniform float rangeFactor;

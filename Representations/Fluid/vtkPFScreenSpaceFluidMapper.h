@@ -65,7 +65,7 @@ public:
   /// Depth smoothing: method, iterations (0: none), filter width in particle radii (narrow-range
   /// and bilateral; at most MaxFilterRadius pixels each side), the depth band in particle radii
   /// (narrow-range mu, bilateral sigma, curvature-flow boundary), and the curvature-flow step as
-  /// a fraction of the stable limit's scale (footprint^2; at most 0.45).
+  /// a fraction of the explicit scheme's stability limit (below 1).
   vtkSetClampMacro(SmoothingMethod, int, 0, 2);
   vtkGetMacro(SmoothingMethod, int);
   vtkSetClampMacro(SmoothingIterations, int, 0, 1000);
@@ -76,7 +76,7 @@ public:
   vtkGetMacro(MaxFilterRadius, int);
   vtkSetClampMacro(DepthRange, double, 0.01, 100.0);
   vtkGetMacro(DepthRange, double);
-  vtkSetClampMacro(CurvatureFlowStep, double, 0.001, 0.45);
+  vtkSetClampMacro(CurvatureFlowStep, double, 0.001, 0.95);
   vtkGetMacro(CurvatureFlowStep, double);
   //@}
 
@@ -137,7 +137,7 @@ private:
   double FilterSize = 4.0;
   int MaxFilterRadius = 12;
   double DepthRange = 2.0;
-  double CurvatureFlowStep = 0.2;
+  double CurvatureFlowStep = 0.8;
   int DisplayMode = TransparentFluid;
   double FluidColor[3] = { 0.1, 0.45, 0.75 };
   double AttenuationDistance = 1.0;

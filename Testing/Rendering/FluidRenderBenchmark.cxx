@@ -1,0 +1,418 @@
+// Screen-space fluid: depth accuracy against an analytic sphere and frame time, ours beside VTK's
+// vtkOpenGLFluidMapper and vtkPointGaussianMapper spheres (the floor), in one run and one window.
+//
+//   ParaFluidFluidRenderBenchmark [--width W --height H --csv file --big N]   (benchmark)
+//   ParaFluidFluidRenderBenchmark --check                                     (the ctest)
+//
+// Needs an X display (run under scripts/with-xvfb.sh). Depth comes from the window's depth
+// buffer: both fluid mappers write their surface's depth there.
+#include "FluidScenes.h"
+#include "vtkPFScreenSpaceFluidActor.h"
+#include "vtkPFScreenSpaceFluidMapper.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkOpenGLFluidMapper.h"
+#include "vtkPointGaussianMapper.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct DepthError
+{
+  double rms = 0.0, mean = 0.0; // in particle radii
+  double spread = 0.0;          // rms about the mean: the surface's roughness
+  double coverage = 0.0;        // share of the measured sphere pixels that have fluid
+};
+
+/// The scene: camera on +z looking at the origin, vertical view angle 30 degrees, fixed clipping.
+struct Window
+{
+  vtkNew<vtkRenderWindow> window;
+  vtkNew<vtkRenderer> renderer;
+  int width, height;
+  double distance = 4.0, nearPlane = 1.0, farPlane = 10.0;
+
+  Window(int w, int h)
+    : width(w)
+    , height(h)
+  {
+    window->SetSize(w, h);
+    window->SetMultiSamples(0);
+    window->OffScreenRenderingOn();
+    window->AddRenderer(renderer);
+    renderer->SetBackground(0.3, 0.3, 0.35);
+    this->ResetCamera();
+  }
+  void ResetCamera()
+  {
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetPosition(0.0, 0.0, distance);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->SetViewAngle(30.0);
+    camera->SetClippingRange(nearPlane, farPlane);
+  }
+  void Render()
+  {
+    renderer->GetActiveCamera()->SetClippingRange(nearPlane, farPlane);
+    renderer->ResetCameraClippingRange(); // keep ours: the next line restores it
+    renderer->GetActiveCamera()->SetClippingRange(nearPlane, farPlane);
+    window->Render();
+    window->WaitForCompletion();
+  }
+
+  /// Depth error of what was drawn against a sphere of radius R at the origin, over the pixels
+  /// whose sphere normal is within 60 degrees of the view ray (away from the silhouette, where
+  /// depth is steep and any filter's error is dominated by the edge).
+  DepthError MeasureSphere(double R, double particleRadius)
+  {
+    std::vector<float> z(static_cast<size_t>(width) * height);
+    window->GetZbufferData(0, 0, width - 1, height - 1, z.data());
+    const double t = std::tan(vtkMath::RadiansFromDegrees(15.0));
+    const double aspect = static_cast<double>(width) / height;
+    double sum = 0.0, sum2 = 0.0;
+    long used = 0, seen = 0;
+    for (int j = 0; j < height; ++j)
+    {
+      for (int i = 0; i < width; ++i)
+      {
+        // Ray from the eye (origin of eye space) through the pixel centre; sphere at (0, 0, -D).
+        double d[3] = { ((i + 0.5) / width * 2.0 - 1.0) * t * aspect, ((j + 0.5) / height * 2.0 - 1.0) * t, -1.0 };
+        const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + 1.0);
+        for (double& c : d)
+        {
+          c /= len;
+        }
+        const double b = -d[2] * distance; // dot(d, centre)
+        const double disc = b * b - (distance * distance - R * R);
+        if (disc <= 0.0)
+        {
+          continue;
+        }
+        const double hit = b - std::sqrt(disc);
+        const double p[3] = { hit * d[0], hit * d[1], hit * d[2] + distance };
+        const double cosine = -(p[0] * d[0] + p[1] * d[1] + p[2] * d[2]) / R;
+        if (cosine < 0.5)
+        {
+          continue;
+        }
+        ++seen;
+        const float w = z[static_cast<size_t>(j) * width + i];
+        if (w >= 1.0f)
+        {
+          continue;
+        }
+        const double ndc = 2.0 * w - 1.0;
+        const double eyeZ = 2.0 * nearPlane * farPlane / ((farPlane + nearPlane) - ndc * (farPlane - nearPlane));
+        const double error = (eyeZ - (-hit * d[2])) / particleRadius;
+        sum += error;
+        sum2 += error * error;
+        ++used;
+      }
+    }
+    DepthError e;
+    if (used > 0)
+    {
+      e.mean = sum / used;
+      e.rms = std::sqrt(sum2 / used);
+      e.spread = std::sqrt(std::max(0.0, e.rms * e.rms - e.mean * e.mean));
+    }
+    e.coverage = seen > 0 ? static_cast<double>(used) / seen : 0.0;
+    return e;
+  }
+
+  /// Mean seconds per frame over `frames` frames after one warm-up frame (uploads, shaders).
+  double FrameTime(int frames)
+  {
+    this->Render();
+    const auto start = std::chrono::steady_clock::now();
+    for (int f = 0; f < frames; ++f)
+    {
+      renderer->GetActiveCamera()->Azimuth(0.2);
+      this->Render();
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    this->ResetCamera();
+    return seconds / frames;
+  }
+};
+
+struct Candidate
+{
+  std::string name;
+  std::function<void(vtkRenderer*)> add;
+};
+
+vtkSmartPointer<vtkProp> ours(vtkPolyData* data, double radius, int method, int iterations, int mode)
+{
+  vtkNew<vtkPFScreenSpaceFluidMapper> mapper;
+  mapper->SetInputDataObject(data);
+  mapper->SetParticleRadius(radius);
+  mapper->SetSmoothingMethod(method);
+  mapper->SetSmoothingIterations(iterations);
+  mapper->SetDisplayMode(mode);
+  auto actor = vtkSmartPointer<vtkPFScreenSpaceFluidActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+vtkSmartPointer<vtkProp> vtkFluid(vtkPolyData* data, double radius, int iterations, bool transparent)
+{
+  vtkNew<vtkOpenGLFluidMapper> mapper;
+  mapper->SetInputData(data);
+  mapper->SetParticleRadius(static_cast<float>(radius));
+  mapper->SetSurfaceFilterIterations(static_cast<uint32_t>(iterations));
+  mapper->SetSurfaceFilterMethod(vtkOpenGLFluidMapper::NarrowRange);
+  mapper->SetDisplayMode(transparent ? vtkOpenGLFluidMapper::TransparentFluidVolume
+                                     : (iterations > 0 ? vtkOpenGLFluidMapper::FilteredOpaqueSurface
+                                                       : vtkOpenGLFluidMapper::UnfilteredOpaqueSurface));
+  auto volume = vtkSmartPointer<vtkVolume>::New();
+  volume->SetMapper(mapper);
+  return volume;
+}
+
+vtkSmartPointer<vtkProp> gaussianSpheres(vtkPolyData* data, double radius)
+{
+  vtkNew<vtkPointGaussianMapper> mapper;
+  mapper->SetInputData(data);
+  mapper->SetScaleFactor(radius);
+  mapper->EmissiveOff();
+  // The sphere look of ParaView's Point Gaussian "Sphere" preset, in our own words.
+  mapper->SetSplatShaderCode("//VTK::Color::Impl\n"
+                             "float r2 = dot(offsetVCVSOutput.xy, offsetVCVSOutput.xy);\n"
+                             "if (r2 > 1.0) { discard; }\n"
+                             "diffuseColor *= 1.0 - r2;\n");
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+void show(Window& w, vtkProp* prop)
+{
+  w.renderer->RemoveAllViewProps();
+  w.renderer->AddViewProp(prop);
+}
+
+int failures = 0;
+void expect(bool ok, const std::string& what)
+{
+  std::printf("%s: %s\n", ok ? "ok" : "FAILED", what.c_str());
+  failures += ok ? 0 : 1;
+}
+
+int check()
+{
+  Window w(480, 360);
+  const double h = 0.04, r = 0.04, R = 0.8;
+  auto ball = parafluid_test::latticeBall(R - r, h);
+  const double surface = parafluid_test::volumeRadius(ball->GetNumberOfPoints(), h);
+
+  // Passes that the settings switch off are not run.
+  auto passes = [&](int method, int iterations, int mode) {
+    auto prop = ours(ball, r, method, iterations, mode);
+    show(w, prop);
+    w.Render();
+    auto* mapper = static_cast<vtkPFScreenSpaceFluidMapper*>(static_cast<vtkActor*>(prop.Get())->GetMapper());
+    return mapper->GetLastPassCount();
+  };
+  using M = vtkPFScreenSpaceFluidMapper;
+  expect(passes(M::NarrowRange, 0, M::OpaqueSurface) == 2, "opaque, no smoothing: splats + shading only");
+  expect(passes(M::NarrowRange, 3, M::OpaqueSurface) == 2 + 6, "opaque, narrow-range x3: 6 separable filter passes");
+  expect(passes(M::CurvatureFlow, 10, M::OpaqueSurface) == 2 + 10, "curvature flow x10: 10 passes");
+  expect(passes(M::NarrowRange, 3, M::TransparentFluid) == 2 + 6 + 3, "transparent: + thickness splats and 2 blur passes");
+  expect(passes(M::NarrowRange, 3, M::ParticleDepth) == 2, "particle-depth display: no smoothing, no thickness");
+
+  // The splats are exact spheres: one particle's depth matches its sphere to float precision.
+  {
+    vtkNew<vtkPolyData> one;
+    vtkNew<vtkPoints> p;
+    p->InsertNextPoint(0.0, 0.0, 0.0);
+    one->SetPoints(p);
+    show(w, ours(one, 0.5, M::NarrowRange, 0, M::OpaqueSurface));
+    w.Render();
+    const DepthError e = w.MeasureSphere(0.5, 0.5);
+    std::printf("single sphere: rms %.2e r, coverage %.3f\n", e.rms, e.coverage);
+    expect(e.rms < 2e-3 && e.coverage > 0.99, "a single particle's depth is its exact sphere");
+  }
+
+  // Smoothing flattens the bumps of the lattice ball's splats without moving its surface: error
+  // against the sphere holding the particles' volume (N h^3).
+  show(w, ours(ball, r, M::NarrowRange, 0, M::OpaqueSurface));
+  w.Render();
+  const DepthError raw = w.MeasureSphere(surface, r);
+  std::printf("raw splats: rms %.3f r, mean %.3f r, spread %.3f r\n", raw.rms, raw.mean, raw.spread);
+  expect(raw.coverage > 0.99, "the raw splats cover the ball");
+  const struct
+  {
+    int method, iterations;
+    const char* name;
+  } methods[] = { { M::NarrowRange, 3, "narrow-range x3" }, { M::Bilateral, 3, "bilateral x3" },
+    { M::CurvatureFlow, 150, "curvature flow x150" } };
+  for (const auto& m : methods)
+  {
+    show(w, ours(ball, r, m.method, m.iterations, M::OpaqueSurface));
+    w.Render();
+    const DepthError e = w.MeasureSphere(surface, r);
+    std::printf("%s: rms %.3f r, mean %.3f r, spread %.3f r, coverage %.3f\n", m.name, e.rms, e.mean, e.spread, e.coverage);
+    expect(e.coverage > 0.99, std::string(m.name) + " keeps the ball covered");
+    expect(e.spread < 0.7 * raw.spread, std::string(m.name) + " smooths the bumps (spread down by 30 %+)");
+    // The splats (radius = spacing) stand proud of the fluid's volume; smoothing may settle them
+    // a little into the dips between particles, but must not shrink or grow the ball.
+    expect(std::abs(e.mean - raw.mean) < 0.3, std::string(m.name) + " keeps the ball's size (moves it < 0.3 r)");
+  }
+
+  // Zero particles, a NaN particle and a camera inside the fluid draw without GL errors.
+  {
+    vtkNew<vtkPolyData> empty;
+    vtkNew<vtkPoints> none;
+    empty->SetPoints(none);
+    show(w, ours(empty, r, M::NarrowRange, 3, M::TransparentFluid));
+    w.Render();
+    vtkNew<vtkPolyData> bad;
+    vtkNew<vtkPoints> p;
+    p->InsertNextPoint(std::nan(""), 0.0, 0.0);
+    p->InsertNextPoint(0.0, 0.0, 0.0);
+    bad->SetPoints(p);
+    show(w, ours(bad, 0.3, M::NarrowRange, 0, M::OpaqueSurface));
+    w.Render();
+    const DepthError e = w.MeasureSphere(0.3, 0.3);
+    expect(e.coverage > 0.99 && e.rms < 0.05, "a NaN particle is dropped; the finite one still draws");
+    show(w, ours(ball, r, M::NarrowRange, 3, M::TransparentFluid));
+    w.renderer->GetActiveCamera()->SetPosition(0.0, 0.0, 0.1);
+    w.window->Render();
+    w.ResetCamera();
+    expect(true, "camera inside the fluid renders");
+  }
+  std::printf("%d failure(s)\n", failures);
+  return failures == 0 ? 0 : 1;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  int width = 1280, height = 720;
+  long big = 1000000;
+  std::string csvPath = "fluid_render_benchmark.csv";
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if (a == "--check")
+    {
+      return check();
+    }
+    if (a == "--width" && i + 1 < argc)
+    {
+      width = std::atoi(argv[++i]);
+    }
+    else if (a == "--height" && i + 1 < argc)
+    {
+      height = std::atoi(argv[++i]);
+    }
+    else if (a == "--big" && i + 1 < argc)
+    {
+      big = std::atol(argv[++i]);
+    }
+    else if (a == "--csv" && i + 1 < argc)
+    {
+      csvPath = argv[++i];
+    }
+    else
+    {
+      std::fprintf(stderr, "usage: %s [--check] [--width W] [--height H] [--big N] [--csv file]\n", argv[0]);
+      return 2;
+    }
+  }
+  std::ofstream csv(csvPath);
+  csv << "scene,renderer,method,iterations,seconds_per_frame,rms_error_radii,mean_error_radii,spread_radii,coverage\n";
+  Window w(width, height);
+  using M = vtkPFScreenSpaceFluidMapper;
+
+  // 1. Time against depth error on a lattice ball (spacing = radius = 0.02, ~60k particles).
+  const double h = 0.02, r = 0.02, R = 0.8;
+  auto ball = parafluid_test::latticeBall(R - r, h);
+  const double surface = parafluid_test::volumeRadius(ball->GetNumberOfPoints(), h);
+  std::printf("ball: %lld particles, %dx%d; error in particle radii against the sphere of their volume, R = %.4f\n",
+    static_cast<long long>(ball->GetNumberOfPoints()), width, height, surface);
+  std::printf("%-36s %6s %10s %8s %8s %8s %9s\n", "renderer / smoothing", "iters", "ms/frame", "rms", "mean", "spread", "coverage");
+  auto row = [&](const char* scene, const char* who, const char* method, int iterations, double seconds,
+               const DepthError& e) {
+    std::printf("%-36s %6d %10.1f %8.3f %8.3f %8.3f %9.3f\n", (std::string(who) + " " + method).c_str(), iterations,
+      1000.0 * seconds, e.rms, e.mean, e.spread, e.coverage);
+    csv << scene << ',' << who << ',' << method << ',' << iterations << ',' << seconds << ',' << e.rms << ','
+        << e.mean << ',' << e.spread << ',' << e.coverage << '\n';
+  };
+  const struct
+  {
+    int method;
+    const char* name;
+    std::vector<int> iterations;
+  } sweeps[] = { { M::NarrowRange, "narrow-range", { 0, 1, 2, 3, 5, 8 } }, { M::Bilateral, "bilateral", { 1, 2, 3, 5, 8 } },
+    { M::CurvatureFlow, "curvature-flow", { 10, 20, 40, 80, 160 } } };
+  for (const auto& s : sweeps)
+  {
+    for (int it : s.iterations)
+    {
+      show(w, ours(ball, r, s.method, it, M::OpaqueSurface));
+      const double seconds = w.FrameTime(3);
+      w.Render();
+      row("ball", "ours", s.name, it, seconds, w.MeasureSphere(surface, r));
+    }
+  }
+  for (int it : { 0, 1, 2, 3, 5, 8 })
+  {
+    show(w, vtkFluid(ball, r, it, false));
+    const double seconds = w.FrameTime(3);
+    w.Render();
+    row("ball", "vtkOpenGLFluidMapper", "narrow-range", it, seconds, w.MeasureSphere(surface, r));
+  }
+
+  // 2. Frame time on a dam-break block, 100k and `big` particles, transparent fluid, narrow-range
+  //    x3 (vtkOpenGLFluidMapper's defaults), ours also opaque and with passes skipped.
+  for (long count : { 100000L, big })
+  {
+    double spacing = 0.0;
+    auto block = parafluid_test::damBlock(count, spacing);
+    const double radius = spacing; // splats overlap like a fluid renderer's usually do
+    w.renderer->GetActiveCamera()->SetPosition(1.0, -2.2, 2.4);
+    w.renderer->GetActiveCamera()->SetFocalPoint(1.0, 0.5, 0.3);
+    w.renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
+    const std::string scene = "block" + std::to_string(block->GetNumberOfPoints());
+    std::printf("\n%s: %lld particles, radius %.4f, %dx%d\n", scene.c_str(),
+      static_cast<long long>(block->GetNumberOfPoints()), radius, width, height);
+    auto time = [&](vtkProp* prop) {
+      show(w, prop);
+      w.renderer->GetActiveCamera()->SetPosition(1.0, -2.2, 2.4);
+      w.renderer->GetActiveCamera()->SetFocalPoint(1.0, 0.5, 0.3);
+      w.renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
+      w.nearPlane = 0.5;
+      const double s = w.FrameTime(3);
+      w.nearPlane = 1.0;
+      return s;
+    };
+    const DepthError none;
+    row(scene.c_str(), "ours", "transparent narrow-range", 3, time(ours(block, radius, M::NarrowRange, 3, M::TransparentFluid)), none);
+    row(scene.c_str(), "ours", "opaque narrow-range", 3, time(ours(block, radius, M::NarrowRange, 3, M::OpaqueSurface)), none);
+    row(scene.c_str(), "ours", "opaque unsmoothed", 0, time(ours(block, radius, M::NarrowRange, 0, M::OpaqueSurface)), none);
+    row(scene.c_str(), "vtkOpenGLFluidMapper", "transparent narrow-range", 3, time(vtkFluid(block, radius, 3, true)), none);
+    row(scene.c_str(), "vtkOpenGLFluidMapper", "opaque narrow-range", 3, time(vtkFluid(block, radius, 3, false)), none);
+    row(scene.c_str(), "vtkPointGaussianMapper", "spheres", 0, time(gaussianSpheres(block, radius)), none);
+  }
+  std::printf("\nCSV: %s\n", csvPath.c_str());
+  return 0;
+}

@@ -1,0 +1,73 @@
+// Particle scenes shared by the screen-space fluid benchmark and its test: a lattice ball (with an
+// analytic surface to measure depth against) and a dam-break block of fluid on a floor.
+#ifndef ParaFluid_FluidScenes_h
+#define ParaFluid_FluidScenes_h
+
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <cmath>
+
+namespace parafluid_test
+{
+/// Centres of a cubic lattice (spacing h) inside a ball of radius R about the origin.
+inline vtkSmartPointer<vtkPolyData> latticeBall(double R, double h)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  const int n = static_cast<int>(std::ceil(R / h));
+  for (int i = -n; i <= n; ++i)
+  {
+    for (int j = -n; j <= n; ++j)
+    {
+      for (int k = -n; k <= n; ++k)
+      {
+        const double x = i * h, y = j * h, z = k * h;
+        if (x * x + y * y + z * z <= R * R)
+        {
+          points->InsertNextPoint(x, y, z);
+        }
+      }
+    }
+  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  return data;
+}
+
+/// Radius of the ball holding the volume n particles of spacing h stand for (n h^3): where the
+/// surface of the fluid they sample is.
+inline double volumeRadius(vtkIdType n, double h)
+{
+  return std::cbrt(3.0 * static_cast<double>(n) / (4.0 * 3.14159265358979323846)) * h;
+}
+
+/// About `count` particles on a lattice filling a 2 x 1 x 1 block (a dam-break column).
+inline vtkSmartPointer<vtkPolyData> damBlock(long count, double& spacing)
+{
+  spacing = std::cbrt(2.0 / static_cast<double>(count));
+  const int nx = static_cast<int>(std::round(2.0 / spacing));
+  const int ny = static_cast<int>(std::round(1.0 / spacing));
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(nx) * ny * ny);
+  vtkIdType id = 0;
+  for (int i = 0; i < nx; ++i)
+  {
+    for (int j = 0; j < ny; ++j)
+    {
+      for (int k = 0; k < ny; ++k)
+      {
+        points->SetPoint(id++, (i + 0.5) * spacing, (j + 0.5) * spacing, (k + 0.5) * spacing);
+      }
+    }
+  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  return data;
+}
+}
+
+#endif
