@@ -310,6 +310,10 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     in.Release(in.Context);
   }
   in.Context = window;
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
+  {
+    // errors of earlier drawing are not ours to report
+  }
 
   // --- Particles to the GPU when the data, the radius or the colouring changed.
   int cellFlag = 0;
@@ -872,5 +876,11 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     {
       environment->PostRender(renderer);
     }
+  }
+  // Report, do not hide, a GL error of these passes (release VTK builds check none).
+  const GLenum error = glGetError();
+  if (error != GL_NO_ERROR)
+  {
+    vtkErrorMacro("OpenGL error 0x" << std::hex << error << std::dec << " in the screen-space fluid passes.");
   }
 }

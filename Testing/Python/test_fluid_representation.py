@@ -1,0 +1,190 @@
+"""The Screen-Space Fluid representation in ParaView (rendered under Xvfb): chosen like any
+representation; zero particles, one particle, a non-point input (drawn as its points, with a
+warning), two fluids in one view, a window resize, the camera inside the fluid, all without an
+error; colouring by an array changes the picture; the depth of the fluid hides and is hidden by
+opaque geometry."""
+import atexit
+
+import numpy as np
+from paraview.simple import *
+from vtkmodules.vtkCommonCore import vtkOutputWindow
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.vtkConstants import VTK_STRING
+from vtkmodules.util.numpy_support import vtk_to_numpy
+import pftest
+
+pftest.load(globals())
+# Errors and warnings reach ParaView's output window; collect what our renders say there.
+collected = []
+
+
+@calldata_type(VTK_STRING)
+def collect(caller, event, text=None):
+    collected.append("%s: %s" % (event, text))
+
+
+tags = [vtkOutputWindow.GetInstance().AddObserver(event, collect) for event in ("ErrorEvent", "WarningEvent")]
+
+
+@atexit.register
+def stop_collecting():
+    # A Python observer must not outlive the interpreter's shutdown.
+    for tag in tags:
+        vtkOutputWindow.GetInstance().RemoveObserver(tag)
+
+
+def messages():
+    text = "\n".join(collected)
+    del collected[:]
+    return text
+
+
+def particles(script):
+    source = ProgrammableSource(OutputDataSetType="vtkPolyData")
+    source.Script = (
+        "import numpy as np\n"
+        "from vtkmodules.vtkCommonCore import vtkPoints\n"
+        "from vtkmodules.util.numpy_support import numpy_to_vtk\n"
+        "out = self.GetPolyDataOutput()\n"
+        + script
+        + "\npts = vtkPoints()\npts.SetData(numpy_to_vtk(np.ascontiguousarray(P, dtype=np.float32), deep=True))\n"
+        "out.SetPoints(pts)\n"
+        "s = numpy_to_vtk(np.ascontiguousarray(P[:, 2], dtype=np.float64), deep=True)\ns.SetName('height')\n"
+        "out.GetPointData().AddArray(s)\n")
+    return source
+
+
+BALL = ("g = (np.arange(20) - 9.5) * 0.05\n"
+        "X, Y, Z = np.meshgrid(g, g, g, indexing='ij')\n"
+        "P = np.stack([X.ravel(), Y.ravel(), Z.ravel()], 1)\n"
+        "P = P[np.linalg.norm(P, axis=1) < 0.45]\n")
+
+view = CreateRenderView()
+view.ViewSize = [320, 240]
+view.OrientationAxesVisibility = 0
+view.UseColorPaletteForBackground = 0
+view.Background = [0.2, 0.2, 0.2]  # grey: transparent fluid over it still differs from it
+view.CameraPosition = [0.0, -3.0, 0.0]
+view.CameraFocalPoint = [0.0, 0.0, 0.0]
+view.CameraViewUp = [0.0, 0.0, 1.0]
+
+
+def pixels():
+    Render(view)
+    window = view.GetRenderWindow()
+    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    out = grab.GetOutput()
+    w, h, _ = out.GetDimensions()
+    return vtk_to_numpy(out.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3].astype(float)
+
+
+def fluid_pixels(image):
+    return int((np.abs(image - 51.0).max(axis=2) > 3).sum())
+
+
+ball = particles(BALL)
+display = Show(ball, view)
+display.SetRepresentationType("Screen-Space Fluid")
+display.ColorArrayName = [None, ""]
+display.FluidDisplayMode = "Opaque Surface"
+Render(view)
+view.CameraPosition = [0.0, -3.0, 0.0]
+view.CameraFocalPoint = [0.0, 0.0, 0.0]
+first = pixels()
+covered = fluid_pixels(first)
+pftest.check(covered > 2000, "the fluid ball covers the middle of the view (%d pixels)" % covered)
+pftest.check(messages() == "", "no error rendering the ball")
+
+# Every display mode and smoothing method renders something, without an error.
+for mode in ["Opaque Surface", "Transparent Fluid", "Normals", "Thickness", "Particle Depth"]:
+    display.FluidDisplayMode = mode
+    for smoothing in ["Narrow-Range Filter", "Bilateral Filter", "Curvature Flow"]:
+        display.FluidSmoothing = smoothing
+        image = pixels()
+        pftest.check(fluid_pixels(image) > 0.8 * covered, "%s / %s draws the ball" % (mode, smoothing))
+        text = messages()
+        pftest.check(text == "", "%s / %s: no error (%s)" % (mode, smoothing, text[:300]))
+display.FluidDisplayMode = "Opaque Surface"
+display.FluidSmoothing = "Narrow-Range Filter"
+
+# Colouring by an array changes the colours.
+plain = pixels()
+ColorBy(display, ("POINTS", "height"))
+coloured = pixels()
+pftest.check(np.abs(coloured - plain).mean() > 1.0, "colouring by 'height' changes the picture")
+display.ColorArrayName = [None, ""]
+
+# An opaque box in front of the ball hides it where it stands; the fluid hides a box behind it.
+def red_box(center, lengths):
+    box = Box(Center=center, XLength=lengths[0], YLength=lengths[1], ZLength=lengths[2])
+    shown = Show(box, view)
+    shown.ColorArrayName = [None, ""]
+    shown.DiffuseColor = [1.0, 0.0, 0.0]
+    shown.AmbientColor = [1.0, 0.0, 0.0]
+    shown.Ambient = 1.0
+    shown.Diffuse = 0.0
+    return box
+
+
+front = red_box([0.0, -1.0, 0.0], [0.3, 0.1, 0.3])
+image = pixels()
+centre = image[120, 160]
+pftest.check(centre[0] > 200 and centre[1] < 30 and centre[2] < 30, "the box in front hides the fluid (centre %s)" % centre)
+Hide(front, view)
+behind = red_box([0.0, 1.0, 0.0], [2.0, 0.1, 2.0])
+image = pixels()
+centre = image[120, 160]
+pftest.check(not (centre[0] > 200 and centre[1] < 30), "the fluid hides the box behind it (centre %s)" % centre)
+corner = image[120, 60]
+pftest.check(corner[0] > 200 and corner[1] < 30, "the box shows beside the fluid (corner %s)" % corner)
+Hide(behind, view)
+
+# A second fluid in the same view.
+second = particles("P = np.array([[0.8, 0.0, 0.0], [0.85, 0.0, 0.0]])")
+secondDisplay = Show(second, view)
+secondDisplay.SetRepresentationType("Screen-Space Fluid")
+secondDisplay.FluidParticleRadius = 0.1
+image = pixels()
+pftest.check(fluid_pixels(image) > covered, "a second fluid adds to the picture")
+pftest.check(messages() == "", "two fluids: no error")
+Hide(second, view)
+
+# Window resize, and the camera inside the fluid.
+view.ViewSize = [500, 300]
+image = pixels()
+pftest.check(image.shape[0] == 300 and image.shape[1] == 500 and fluid_pixels(image) > covered, "resize: the fluid still draws")
+view.ViewSize = [320, 240]
+view.CameraPosition = [0.0, -0.1, 0.0]
+pixels()
+view.CameraPosition = [0.0, -3.0, 0.0]
+pftest.check(messages() == "", "resize and camera inside the fluid: no error")
+
+# Zero particles, a single particle.
+no_particles = particles("P = np.zeros((0, 3))")
+emptyDisplay = Show(no_particles, view)
+emptyDisplay.SetRepresentationType("Screen-Space Fluid")
+pixels()
+one = particles("P = np.array([[0.0, -1.0, 0.0]])")
+oneDisplay = Show(one, view)
+oneDisplay.SetRepresentationType("Screen-Space Fluid")
+oneDisplay.FluidParticleRadius = 0.2
+image = pixels()
+pftest.check(messages() == "", "zero particles and one particle: no error")
+Hide(one, view)
+Hide(no_particles, view)
+
+# A non-point input draws its points and says so.
+Hide(ball, view)
+sphere = Sphere(Radius=0.5, ThetaResolution=32, PhiResolution=32)
+sphereDisplay = Show(sphere, view)
+sphereDisplay.SetRepresentationType("Screen-Space Fluid")
+sphereDisplay.FluidParticleRadius = 0.06
+image = pixels()
+text = messages()
+pftest.check("draws the points of its input" in text, "a mesh input gives a warning (%s)" % text[:300])
+pftest.check(fluid_pixels(image) > 1000, "a mesh input is drawn as its points")
+print("test_fluid_representation: all checks passed")
