@@ -9,7 +9,8 @@
 // Beer-Lambert: transmission exp(-sigma t), sigma = -ln(fluidColor) / attenuationDistance, so a
 // layer attenuationDistance thick tints white light to fluidColor.
 //=========================================================================
-uniform sampler2D thicknessTex;
+uniform sampler2D thicknessTex; // half resolution, linear filtering
+uniform vec2 thicknessScale;    // full-resolution pixel -> thickness texture coordinate
 uniform sampler2D opaqueColor;
 uniform sampler2D particleColorTex;
 uniform int hasParticleColors;
@@ -87,7 +88,7 @@ void main()
   vec4 clip = VCDCMatrix * vec4(P, 1.0);
   gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
 
-  float thickness = displayMode == 1 || displayMode == 3 ? texelFetch(thicknessTex, p, 0).r : 0.0;
+  float thickness = displayMode == 1 || displayMode == 3 ? texture(thicknessTex, (vec2(p) + 0.5) * thicknessScale).r : 0.0;
   vec3 color;
   if (displayMode == 2)
   {

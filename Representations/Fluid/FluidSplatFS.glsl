@@ -4,13 +4,15 @@
 // with the particle's sphere; misses are discarded. Depth pass (thicknessPass = 0): writes the
 // eye-space distance -z of the front hit (0 means no fluid) and the window depth, and the
 // particle's colour in a second target. Thickness pass: adds the chord length through the sphere
-// (additive blending, no depth test). Both drop fragments behind the opaque scene.
+// (additive blending, no depth test; at half resolution). Both drop fragments behind the opaque
+// scene.
 //=========================================================================
 uniform mat4 VCDCMatrix;
 uniform int parallelProjection;
 uniform int thicknessPass;
 uniform int useOpaqueDepth;
 uniform sampler2D opaqueDepth;
+uniform float opaqueDepthScale; // full-resolution pixels per pixel of this pass
 
 in vec3 quadVC;
 flat in vec3 centreVC;
@@ -39,7 +41,7 @@ void main()
   vec3 hit = origin + (-b - h) * dir;
   vec4 clip = VCDCMatrix * vec4(hit, 1.0);
   float windowDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
-  if (useOpaqueDepth != 0 && windowDepth >= texelFetch(opaqueDepth, ivec2(gl_FragCoord.xy), 0).r)
+  if (useOpaqueDepth != 0 && windowDepth >= texelFetch(opaqueDepth, ivec2(gl_FragCoord.xy * opaqueDepthScale), 0).r)
   {
     discard;
   }

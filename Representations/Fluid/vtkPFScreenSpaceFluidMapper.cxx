@@ -167,23 +167,29 @@ struct vtkPFScreenSpaceFluidMapper::Internals
       glGenVertexArrays(1, &this->EmptyVAO);
     }
     const bool resize = width != this->Width || height != this->Height;
-    auto single = [&](vtkSmartPointer<vtkTextureObject>& t) {
+    auto single = [&](vtkSmartPointer<vtkTextureObject>& t, int w, int h, bool linear) {
       if (!t)
       {
         t = makeTarget(window);
         t->SetInternalFormat(GL_R32F);
         t->SetFormat(GL_RED);
-        t->Allocate2D(width, height, 1, VTK_FLOAT);
+        if (linear)
+        {
+          t->SetMinificationFilter(vtkTextureObject::Linear);
+          t->SetMagnificationFilter(vtkTextureObject::Linear);
+        }
+        t->Allocate2D(w, h, 1, VTK_FLOAT);
       }
       else if (resize)
       {
-        t->Resize(width, height);
+        t->Resize(w, h);
       }
     };
-    single(this->Depth[0]);
-    single(this->Depth[1]);
-    single(this->Thickness[0]);
-    single(this->Thickness[1]);
+    single(this->Depth[0], width, height, false);
+    single(this->Depth[1], width, height, false);
+    // Thickness is blurred anyway: half the resolution, a quarter of the splat fill.
+    single(this->Thickness[0], (width + 1) / 2, (height + 1) / 2, true);
+    single(this->Thickness[1], (width + 1) / 2, (height + 1) / 2, true);
     auto depth = [&](vtkSmartPointer<vtkTextureObject>& t) {
       if (!t)
       {
@@ -570,6 +576,7 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   in.OpaqueDepth->Activate();
   splat->SetUniformi("opaqueDepth", in.OpaqueDepth->GetTextureUnit());
   splat->SetUniformi("useOpaqueDepth", 1);
+  splat->SetUniformf("opaqueDepthScale", 1.0f);
   splat->SetUniformMatrix("MCVCMatrix", mcvc);
   splat->SetUniformMatrix("VCDCMatrix", vcdc);
   splat->SetUniformi("parallelProjection", parallel ? 1 : 0);
@@ -600,9 +607,15 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   fbo->RemoveDepthAttachment();
   fbo->ActivateDrawBuffers(1);
 
+  const int halfSize[2] = { (width + 1) / 2, (height + 1) / 2 };
+  const int halfMin[2] = { rect[0] / 2, rect[1] / 2 };
+  const int halfMax[2] = { (rect[2] + 1) / 2, (rect[3] + 1) / 2 };
   if (needThickness)
   {
     fbo->AddColorAttachment(0, in.Thickness[0]);
+    state->vtkglViewport(0, 0, halfSize[0], halfSize[1]);
+    state->vtkglScissor(halfMin[0], halfMin[1], halfMax[0] - halfMin[0], halfMax[1] - halfMin[1]);
+    splat->SetUniformf("opaqueDepthScale", 2.0f);
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglDepthMask(GL_FALSE);
     state->vtkglClear(GL_COLOR_BUFFER_BIT);
@@ -654,13 +667,18 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
       window->GetShaderCache()->ReadyShaderProgram(in.Blur->Program);
     }
     vtkShaderProgram* program = in.Blur->Program;
-    commonUniforms(program);
-    program->SetUniformi("radius", std::max(1, this->MaxFilterRadius / 2));
+    const float half[2] = { static_cast<float>(halfSize[0]), static_cast<float>(halfSize[1]) };
+    program->SetUniform2i("rectMin", halfMin);
+    program->SetUniform2i("rectMax", halfMax);
+    program->SetUniform2f("viewportSize", half);
+    program->SetUniformi("radius", std::max(1, this->MaxFilterRadius / 4));
     const int dx[2] = { 1, 0 }, dy[2] = { 0, 1 };
     program->SetUniform2i("stepDir", dx);
     filterPass(in.Blur.get(), in.Thickness[0], in.Thickness[1], "thicknessTex");
     program->SetUniform2i("stepDir", dy);
     filterPass(in.Blur.get(), in.Thickness[1], in.Thickness[0], "thicknessTex");
+    state->vtkglViewport(0, 0, width, height);
+    state->vtkglScissor(rect[0], rect[1], rectSize[0], rectSize[1]);
   }
 
   // --- Pass 2: smooth the depth.
@@ -845,6 +863,8 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     {
       in.Thickness[0]->Activate();
       shade->SetUniformi("thicknessTex", in.Thickness[0]->GetTextureUnit());
+      const float toHalf[2] = { 0.5f / halfSize[0], 0.5f / halfSize[1] };
+      shade->SetUniform2f("thicknessScale", toHalf);
     }
     if (needOpaqueColor)
     {
