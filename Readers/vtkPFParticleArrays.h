@@ -2,6 +2,8 @@
 // The particle data contract shared by readers and filters: scene constants in field data and
 // particle polydata with one vertex per particle.
 #include "vtkCellArray.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkMultiProcessController.h"
 #include "vtkPointData.h"
@@ -75,6 +77,29 @@ inline std::vector<float> tuplesAsFloat(vtkDataArray* array)
     }
   }
   return values;
+}
+
+/// The polydata itself, or the first polydata leaf of a composite dataset (what ParaView 5.11's
+/// render view delivers to a representation); null when there is none.
+inline vtkPolyData* firstPolyData(vtkDataObject* data)
+{
+  if (auto* poly = vtkPolyData::SafeDownCast(data))
+  {
+    return poly;
+  }
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      if (auto* poly = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
+      {
+        return poly;
+      }
+    }
+  }
+  return nullptr;
 }
 
 /// First value of a numeric field-data array, or `fallback` when it is absent.

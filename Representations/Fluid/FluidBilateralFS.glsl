@@ -21,9 +21,8 @@ void main()
     gl_FragData[0] = vec4(0.0);
     return;
   }
-  float sigma = 0.5 * filterSize * particleRadius / pixelFootprint(d0).x;
-  int n = clamp(int(ceil(2.0 * sigma)), 1, maxRadius);
-  sigma = min(sigma, 0.5 * float(n));
+  float sigma;
+  int n = filterHalfWidth(d0, particleRadius, filterSize, maxRadius, sigma);
   float inv2s2 = 0.5 / max(sigma * sigma, 1e-6);
   float sd = rangeFactor * particleRadius;
   float inv2sd2 = 0.5 / (sd * sd);

@@ -45,3 +45,13 @@ vec2 pixelFootprint(float d)
   vec2 perUnit = 2.0 / (viewportSize * projection.xy);
   return parallelProjection != 0 ? perUnit : perUnit * d;
 }
+
+// Half-width in pixels (and Gaussian sigma) of the narrow-range and bilateral filters at depth
+// d0: filterSize particle radii across on screen, at most maxRadius pixels each side.
+int filterHalfWidth(float d0, float particleRadius, float filterSize, int maxRadius, out float sigma)
+{
+  sigma = 0.5 * filterSize * particleRadius / pixelFootprint(d0).x;
+  int n = clamp(int(ceil(2.0 * sigma)), 1, maxRadius);
+  sigma = min(sigma, 0.5 * float(n));
+  return n;
+}

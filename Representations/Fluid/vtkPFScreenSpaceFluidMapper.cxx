@@ -10,7 +10,6 @@
 #include "FluidThicknessBlurFS.h"
 
 #include "vtkCamera.h"
-#include "vtkCollectionIterator.h"
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"

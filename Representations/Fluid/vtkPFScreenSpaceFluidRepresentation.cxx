@@ -2,10 +2,10 @@
 
 #include "vtkPFScreenSpaceFluidActor.h"
 #include "vtkPFScreenSpaceFluidMapper.h"
+#include "vtkPFParticleArrays.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkAppendPolyData.h"
-#include "vtkCellArray.h"
 #include "vtkCellTypes.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
@@ -70,27 +70,6 @@ vtkSmartPointer<vtkPolyData> particlesOf(vtkDataSet* data, bool& hadCells)
     }
   }
   return particles;
-}
-
-vtkPolyData* deliveredParticles(vtkDataObject* data)
-{
-  if (auto* poly = vtkPolyData::SafeDownCast(data))
-  {
-    return poly;
-  }
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      if (auto* poly = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
-      {
-        return poly;
-      }
-    }
-  }
-  return nullptr;
 }
 }
 
@@ -202,7 +181,7 @@ int vtkPFScreenSpaceFluidRepresentation::ProcessViewRequest(
     vtkPolyData* delivered = nullptr;
     if (vtkAlgorithmOutput* port = vtkPVRenderView::GetPieceProducer(inInfo, this, 0))
     {
-      delivered = deliveredParticles(port->GetProducer()->GetOutputDataObject(port->GetIndex()));
+      delivered = parafluid::vtk::firstPolyData(port->GetProducer()->GetOutputDataObject(port->GetIndex()));
     }
     if (delivered)
     {
@@ -274,10 +253,10 @@ void vtkPFScreenSpaceFluidRepresentation::UpdateRadius(vtkPolyData* particles)
     radius = 1.0;
     if (particles && particles->GetNumberOfPoints() > 0)
     {
-      vtkDataArray* spacing = particles->GetFieldData()->GetArray("particle_spacing");
-      if (spacing && spacing->GetNumberOfTuples() > 0 && spacing->GetComponent(0, 0) > 0.0)
+      const double spacing = parafluid::vtk::fieldValue(particles->GetFieldData(), "particle_spacing", 0.0);
+      if (spacing > 0.0)
       {
-        radius = 0.6 * spacing->GetComponent(0, 0);
+        radius = 0.6 * spacing;
       }
       else
       {

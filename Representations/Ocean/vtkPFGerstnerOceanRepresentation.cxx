@@ -4,6 +4,7 @@
 #include "GerstnerOceanWaves.h"
 #include "vtkPFOceanExposure.h"
 #include "vtkPFOceanTextures.h"
+#include "vtkPFParticleArrays.h"
 
 #include "parafluid/Bathymetry.h"
 #include "parafluid/GerstnerOcean.h"
@@ -139,35 +140,10 @@ int vtkPFGerstnerOceanRepresentation::ProcessViewRequest(
   return result;
 }
 
-namespace
-{
-/// The first polydata leaf of what the view delivered (a multiblock in ParaView 5.11).
-vtkPolyData* firstSurface(vtkDataObject* data)
-{
-  if (auto* poly = vtkPolyData::SafeDownCast(data))
-  {
-    return poly;
-  }
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      if (auto* poly = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
-      {
-        return poly;
-      }
-    }
-  }
-  return nullptr;
-}
-}
-
 void vtkPFGerstnerOceanRepresentation::UpdateModel(vtkDataObject* delivered)
 {
   using namespace parafluid::ocean;
-  vtkPolyData* surface = firstSurface(delivered);
+  vtkPolyData* surface = parafluid::vtk::firstPolyData(delivered);
   vtkDataArray* elevation = surface && !this->BathymetryArray.empty()
     ? surface->GetPointData()->GetArray(this->BathymetryArray.c_str())
     : nullptr;
