@@ -9,7 +9,7 @@
 // Beer-Lambert: transmission exp(-sigma t), sigma = -ln(fluidColor) / attenuationDistance, so a
 // layer attenuationDistance thick tints white light to fluidColor.
 //=========================================================================
-uniform sampler2D thicknessTex; // half resolution, linear filtering
+uniform sampler2D thicknessTex; // reduced resolution, linear filtering
 uniform vec2 thicknessScale;    // full-resolution pixel -> thickness texture coordinate
 uniform sampler2D opaqueColor;
 uniform sampler2D particleColorTex;

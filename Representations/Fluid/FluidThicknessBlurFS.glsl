@@ -1,6 +1,6 @@
 //=========================================================================
 // Separable Gaussian blur of the additive thickness splats (world length of fluid along each
-// pixel's ray) at half resolution, one 1D pass along stepDir with half-width radius pixels.
+// pixel's ray) at reduced resolution, one 1D pass along stepDir with half-width radius pixels.
 //=========================================================================
 uniform sampler2D thicknessTex;
 uniform ivec2 stepDir;

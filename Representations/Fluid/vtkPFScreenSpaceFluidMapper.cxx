@@ -41,6 +41,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkPFScreenSpaceFluidMapper);
@@ -98,7 +99,11 @@ struct vtkPFScreenSpaceFluidMapper::Internals
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   // Core profiles draw only with a vertex array bound, even one without attributes.
   GLuint EmptyVAO = 0;
-  vtkShaderProgram* SplatProgram = nullptr;
+  float MaxPointSize = 0.0f; // the context's largest point sprite, pixels (0: not asked yet)
+  int ThicknessFactor = 0;   // full-resolution pixels per thickness pixel, each way
+  // Splat programs: depth (0) and thickness (1), built apart so the depth pass carries none of
+  // the thickness pass's branches (on llvmpipe they cost the depth pass a third of its speed).
+  vtkShaderProgram* SplatPrograms[2] = { nullptr, nullptr };
   std::unique_ptr<vtkOpenGLQuadHelper> NarrowRange, Bilateral, Curvature, Blur, Shade, ShadeCube;
   vtkSmartPointer<vtkTexture> Environment;
 
@@ -150,14 +155,15 @@ struct vtkPFScreenSpaceFluidMapper::Internals
     this->Thickness = {};
     this->Framebuffer = nullptr;
     this->EmptyVAO = 0;
-    this->SplatProgram = nullptr;
+    this->SplatPrograms[0] = this->SplatPrograms[1] = nullptr;
     this->UploadedKey = 0;
     this->Width = this->Height = 0;
     this->Context = nullptr;
   }
 
   /// (Re)creates the screen targets for a viewport of width x height.
-  void EnsureTargets(vtkOpenGLRenderWindow* window, int width, int height, bool colors)
+  /// `thicknessFactor`: full-resolution pixels per thickness pixel, each way.
+  void EnsureTargets(vtkOpenGLRenderWindow* window, int width, int height, int thicknessFactor, bool colors)
   {
     if (!this->Framebuffer)
     {
@@ -166,7 +172,8 @@ struct vtkPFScreenSpaceFluidMapper::Internals
       glGenVertexArrays(1, &this->EmptyVAO);
     }
     const bool resize = width != this->Width || height != this->Height;
-    auto single = [&](vtkSmartPointer<vtkTextureObject>& t, int w, int h, bool linear) {
+    const bool resizeThickness = resize || thicknessFactor != this->ThicknessFactor;
+    auto single = [&](vtkSmartPointer<vtkTextureObject>& t, int w, int h, bool linear, bool changed) {
       if (!t)
       {
         t = makeTarget(window);
@@ -179,16 +186,17 @@ struct vtkPFScreenSpaceFluidMapper::Internals
         }
         t->Allocate2D(w, h, 1, VTK_FLOAT);
       }
-      else if (resize)
+      else if (changed)
       {
         t->Resize(w, h);
       }
     };
-    single(this->Depth[0], width, height, false);
-    single(this->Depth[1], width, height, false);
-    // Thickness is blurred anyway: half the resolution, a quarter of the splat fill.
-    single(this->Thickness[0], (width + 1) / 2, (height + 1) / 2, true);
-    single(this->Thickness[1], (width + 1) / 2, (height + 1) / 2, true);
+    single(this->Depth[0], width, height, false, resize);
+    single(this->Depth[1], width, height, false, resize);
+    const int tw = (width + thicknessFactor - 1) / thicknessFactor, th = (height + thicknessFactor - 1) / thicknessFactor;
+    single(this->Thickness[0], tw, th, true, resizeThickness);
+    single(this->Thickness[1], tw, th, true, resizeThickness);
+    this->ThicknessFactor = thicknessFactor;
     auto depth = [&](vtkSmartPointer<vtkTextureObject>& t) {
       if (!t)
       {
@@ -303,6 +311,8 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
 {
   Internals& in = *this->Internal;
   this->LastPassCount = 0;
+  this->LastUsedPointSprites = false;
+  this->LastThicknessFactor = 0;
   std::fill(this->LastScreenRect, this->LastScreenRect + 4, 0);
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   auto* input = vtkPointSet::SafeDownCast(this->GetInputDataObject(0, 0));
@@ -442,9 +452,11 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   // --- Where the fluid is on screen: its bounds (grown by the radius) projected.
   int rect[4] = { 0, 0, width, height };
   double nearest = VTK_DOUBLE_MAX, farthest = 0.0;
+  bool pointSprites = false;
   {
     bool behindEye = false;
     double lo[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX }, hi[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    double slope[2] = { 0.0, 0.0 }; // largest |x| / -z and |y| / -z over the grown bounds
     for (int corner = 0; corner < 8; ++corner)
     {
       const double x[3] = { in.Bounds[(corner & 1) ? 1 : 0] + ((corner & 1) ? in.MaxRadius : -in.MaxRadius),
@@ -458,6 +470,10 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
       {
         behindEye = true;
         continue;
+      }
+      for (int k = 0; k < 2; ++k)
+      {
+        slope[k] = distance > 0.0 ? std::max(slope[k], std::abs(eye[k]) / distance) : VTK_DOUBLE_MAX;
       }
       double e[3] = { eye[0], eye[1], eye[2] };
       const auto clip = transformPoint(vcdc, e);
@@ -488,7 +504,34 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     {
       return; // off screen
     }
+    // One point per particle instead of a six-vertex quad, when that is safe: every sphere's
+    // centre projects inside the viewport (the grown bounds do; a point whose centre is clipped
+    // is dropped whole) and no sphere's box exceeds the largest point size. The bound on the box
+    // is the vertex shader's tangent-plane extent at the nearest depth and the widest angle.
+    if (in.MaxPointSize <= 0.0f)
+    {
+      GLfloat range[2] = { 0.0f, 0.0f };
+      glGetFloatv(GL_POINT_SIZE_RANGE, range);
+      in.MaxPointSize = std::max(1.0f, range[1]);
+    }
+    const bool allOnScreen = !behindEye && lo[0] >= -1.0 && hi[0] <= 1.0 && lo[1] >= -1.0 && hi[1] <= 1.0;
+    if (allOnScreen)
+    {
+      const double r = in.MaxRadius;
+      const double d = nearest + r; // the nearest a centre can be
+      const int size[2] = { width, height };
+      double largest = 0.0;
+      for (int k = 0; k < 2; ++k)
+      {
+        const double p = vcdc->GetElement(k, k);
+        const double ndcWidth = parallel ? 2.0 * r * p
+                                         : p * 2.0 * r * d * std::sqrt(1.0 + slope[k] * slope[k]) / (d * d - r * r);
+        largest = std::max(largest, 0.5 * ndcWidth * size[k]);
+      }
+      pointSprites = (parallel || nearest > 0.0) && largest + 3.0 <= in.MaxPointSize;
+    }
   }
+  this->LastUsedPointSprites = pointSprites;
   std::copy(rect, rect + 4, this->LastScreenRect);
   const int rectMin[2] = { rect[0], rect[1] };
   const int rectMax[2] = { rect[2], rect[3] };
@@ -511,7 +554,18 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   vtkOpenGLState::ScopedglClearColor savedClearColor(state);
   vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
 
-  in.EnsureTargets(window, width, height, in.HasColors);
+  // Thickness is blurred anyway, so it is splatted at reduced resolution: half, or a quarter when
+  // particles are small on screen (radius under 8 pixels at the fluid's middle depth), where
+  // the fill of a million overlapping splats would dominate the frame. Particles under 1.5
+  // thickness pixels deposit their volume on the 4 nearest pixels instead of sampling their chord
+  // (FluidSplatVS.glsl), so the thickness stays the fluid's volume per unit area at any size.
+  int thicknessFactor = 2;
+  {
+    const double middle = parallel ? 1.0 : std::max(0.5 * (nearest + farthest), 1e-12);
+    const double radiusPixels = in.MaxRadius * vcdc->GetElement(1, 1) * 0.5 * height / middle;
+    thicknessFactor = radiusPixels < 8.0 ? 4 : 2;
+  }
+  in.EnsureTargets(window, width, height, thicknessFactor, in.HasColors);
 
   // --- The opaque scene drawn so far: its depth (occlusion) and, for refraction, its colour.
   // Read from the framebuffer being drawn (the read binding may point elsewhere, e.g. at
@@ -544,44 +598,84 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
 
   // --- Pass 1 (and 3): sphere splats.
-  if (!in.SplatProgram)
+  const float fullSize[2] = { static_cast<float>(width), static_cast<float>(height) };
+  auto splatProgram = [&](int which) -> vtkShaderProgram* {
+    vtkShaderProgram*& program = in.SplatPrograms[which];
+    if (!program)
+    {
+      std::string vs = FluidSplatVS, fs = FluidSplatFS;
+      if (which == 1)
+      {
+        const std::string define = "//VTK::System::Dec\n#define THICKNESS_PASS\n";
+        vtkShaderProgram::Substitute(vs, "//VTK::System::Dec\n", define);
+        vtkShaderProgram::Substitute(fs, "//VTK::System::Dec\n", define);
+      }
+      program = window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+    }
+    else
+    {
+      window->GetShaderCache()->ReadyShaderProgram(program);
+    }
+    if (!program)
+    {
+      return nullptr;
+    }
+    program->SetUniformi("particles", in.ParticleTexture->GetTextureUnit());
+    program->SetUniformi("hasColors", in.HasColors ? 1 : 0);
+    // Unused without colours, but a sampler left on unit 0 could alias a different sampler type.
+    program->SetUniformi(
+      "particleColors", (in.HasColors ? in.ColorTexture : in.ParticleTexture)->GetTextureUnit());
+    program->SetUniformi("opaqueDepth", in.OpaqueDepth->GetTextureUnit());
+    program->SetUniformi("useOpaqueDepth", 1);
+    program->SetUniformf("opaqueDepthScale", 1.0f);
+    program->SetUniformMatrix("MCVCMatrix", mcvc);
+    program->SetUniformMatrix("VCDCMatrix", vcdc);
+    program->SetUniformi("parallelProjection", parallel ? 1 : 0);
+    program->SetUniformf("nearDistance", static_cast<float>(nearDistance));
+    program->SetUniform4f("projection", projection);
+    program->SetUniformi("pointSprites", pointSprites ? 1 : 0);
+    program->SetUniform2f("targetSize", fullSize);
+    return program;
+  };
+  in.ParticleTexture->Activate();
+  if (in.HasColors)
   {
-    in.SplatProgram = window->GetShaderCache()->ReadyShaderProgram(FluidSplatVS, FluidSplatFS, "");
+    in.ColorTexture->Activate();
   }
-  else
+  in.OpaqueDepth->Activate();
+  auto releaseSplatTextures = [&]() {
+    in.ParticleTexture->Deactivate();
+    if (in.HasColors)
+    {
+      in.ColorTexture->Deactivate();
+    }
+    in.OpaqueDepth->Deactivate();
+  };
+  // (The thickness program is built first so that a failure stops before any drawing, and the
+  // depth program is the one bound for the first pass.)
+  if ((needThickness && !splatProgram(1)) || !splatProgram(0))
   {
-    window->GetShaderCache()->ReadyShaderProgram(in.SplatProgram);
-  }
-  vtkShaderProgram* splat = in.SplatProgram;
-  if (!splat)
-  {
+    releaseSplatTextures();
     state->PopFramebufferBindings();
     vtkErrorMacro("The screen-space fluid splat shader did not compile (see the messages above).");
     return;
   }
-  in.ParticleTexture->Activate();
-  splat->SetUniformi("particles", in.ParticleTexture->GetTextureUnit());
-  splat->SetUniformi("hasColors", in.HasColors ? 1 : 0);
-  if (in.HasColors)
-  {
-    in.ColorTexture->Activate();
-    splat->SetUniformi("particleColors", in.ColorTexture->GetTextureUnit());
-  }
-  else
-  {
-    // Unused, but a sampler left on unit 0 could alias a different sampler type there.
-    splat->SetUniformi("particleColors", in.ParticleTexture->GetTextureUnit());
-  }
-  in.OpaqueDepth->Activate();
-  splat->SetUniformi("opaqueDepth", in.OpaqueDepth->GetTextureUnit());
-  splat->SetUniformi("useOpaqueDepth", 1);
-  splat->SetUniformf("opaqueDepthScale", 1.0f);
-  splat->SetUniformMatrix("MCVCMatrix", mcvc);
-  splat->SetUniformMatrix("VCDCMatrix", vcdc);
-  splat->SetUniformi("parallelProjection", parallel ? 1 : 0);
-  splat->SetUniformf("nearDistance", static_cast<float>(nearDistance));
   glBindVertexArray(in.EmptyVAO);
-  const GLsizei vertices = static_cast<GLsizei>(6 * in.Count);
+  const GLboolean programPointSize = glIsEnabled(GL_PROGRAM_POINT_SIZE);
+  if (pointSprites)
+  {
+    glEnable(GL_PROGRAM_POINT_SIZE);
+  }
+  auto drawSplats = [&]() {
+    if (pointSprites)
+    {
+      glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(in.Count));
+    }
+    else
+    {
+      glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * in.Count));
+    }
+  };
 
   fbo->AddColorAttachment(0, in.Depth[0]);
   if (in.HasColors)
@@ -596,8 +690,7 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   state->vtkglDisable(GL_BLEND);
   state->vtkglClearDepth(1.0);
   state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  splat->SetUniformi("thicknessPass", 0);
-  glDrawArrays(GL_TRIANGLES, 0, vertices);
+  drawSplats();
   ++this->LastPassCount;
   if (in.HasColors)
   {
@@ -606,32 +699,35 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   fbo->RemoveDepthAttachment();
   fbo->ActivateDrawBuffers(1);
 
-  const int halfSize[2] = { (width + 1) / 2, (height + 1) / 2 };
-  const int halfMin[2] = { rect[0] / 2, rect[1] / 2 };
-  const int halfMax[2] = { (rect[2] + 1) / 2, (rect[3] + 1) / 2 };
+  const int f = thicknessFactor;
+  const int thicknessSize[2] = { (width + f - 1) / f, (height + f - 1) / f };
+  const int thicknessMin[2] = { rect[0] / f, rect[1] / f };
+  const int thicknessMax[2] = { (rect[2] + f - 1) / f, (rect[3] + f - 1) / f };
   if (needThickness)
   {
+    vtkShaderProgram* thicknessProgram = splatProgram(1);
     fbo->AddColorAttachment(0, in.Thickness[0]);
-    state->vtkglViewport(0, 0, halfSize[0], halfSize[1]);
-    state->vtkglScissor(halfMin[0], halfMin[1], halfMax[0] - halfMin[0], halfMax[1] - halfMin[1]);
-    splat->SetUniformf("opaqueDepthScale", 2.0f);
+    state->vtkglViewport(0, 0, thicknessSize[0], thicknessSize[1]);
+    state->vtkglScissor(thicknessMin[0], thicknessMin[1], thicknessMax[0] - thicknessMin[0], thicknessMax[1] - thicknessMin[1]);
+    thicknessProgram->SetUniformf("opaqueDepthScale", static_cast<float>(f));
+    this->LastThicknessFactor = f;
     state->vtkglDisable(GL_DEPTH_TEST);
     state->vtkglDepthMask(GL_FALSE);
     state->vtkglClear(GL_COLOR_BUFFER_BIT);
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-    splat->SetUniformi("thicknessPass", 1);
-    glDrawArrays(GL_TRIANGLES, 0, vertices);
+    const float thicknessPixels[2] = { static_cast<float>(thicknessSize[0]), static_cast<float>(thicknessSize[1]) };
+    thicknessProgram->SetUniform2f("targetSize", thicknessPixels);
+    drawSplats();
     state->vtkglDisable(GL_BLEND);
     ++this->LastPassCount;
   }
   glBindVertexArray(0);
-  in.ParticleTexture->Deactivate();
-  if (in.HasColors)
+  if (!programPointSize)
   {
-    in.ColorTexture->Deactivate();
+    glDisable(GL_PROGRAM_POINT_SIZE);
   }
-  in.OpaqueDepth->Deactivate();
+  releaseSplatTextures();
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_FALSE);
 
@@ -666,11 +762,11 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
       window->GetShaderCache()->ReadyShaderProgram(in.Blur->Program);
     }
     vtkShaderProgram* program = in.Blur->Program;
-    const float half[2] = { static_cast<float>(halfSize[0]), static_cast<float>(halfSize[1]) };
-    program->SetUniform2i("rectMin", halfMin);
-    program->SetUniform2i("rectMax", halfMax);
-    program->SetUniform2f("viewportSize", half);
-    program->SetUniformi("radius", std::max(1, this->MaxFilterRadius / 4));
+    const float thicknessPixels[2] = { static_cast<float>(thicknessSize[0]), static_cast<float>(thicknessSize[1]) };
+    program->SetUniform2i("rectMin", thicknessMin);
+    program->SetUniform2i("rectMax", thicknessMax);
+    program->SetUniform2f("viewportSize", thicknessPixels);
+    program->SetUniformi("radius", std::max(1, (this->MaxFilterRadius + f) / (2 * f)));
     const int dx[2] = { 1, 0 }, dy[2] = { 0, 1 };
     program->SetUniform2i("stepDir", dx);
     filterPass(in.Blur.get(), in.Thickness[0], in.Thickness[1], "thicknessTex");
@@ -862,8 +958,8 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     {
       in.Thickness[0]->Activate();
       shade->SetUniformi("thicknessTex", in.Thickness[0]->GetTextureUnit());
-      const float toHalf[2] = { 0.5f / halfSize[0], 0.5f / halfSize[1] };
-      shade->SetUniform2f("thicknessScale", toHalf);
+      const float toThickness[2] = { 1.0f / (f * thicknessSize[0]), 1.0f / (f * thicknessSize[1]) };
+      shade->SetUniform2f("thicknessScale", toThickness);
     }
     if (needOpaqueColor)
     {

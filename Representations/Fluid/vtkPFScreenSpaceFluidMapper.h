@@ -113,9 +113,15 @@ public:
 
   //@{
   /// What the last Render did, for tests and benchmarks: GPU passes run (splats, filters,
-  /// shading), and the screen rectangle they covered (x0, y0, x1, y1 in viewport pixels).
+  /// shading), the screen rectangle they covered (x0, y0, x1, y1 in viewport pixels), and how
+  /// the splats were drawn.
   int GetLastPassCount() const { return this->LastPassCount; }
   const int* GetLastScreenRect() const { return this->LastScreenRect; }
+  /// Whether the splats were drawn as one point sprite per particle (true) or as six-vertex
+  /// quads (when a sphere's centre is off screen or its box exceeds the largest point size).
+  bool GetLastUsedPointSprites() const { return this->LastUsedPointSprites; }
+  /// Full-resolution pixels per thickness pixel, each way (2 or 4; 0 when no thickness was drawn).
+  int GetLastThicknessFactor() const { return this->LastThicknessFactor; }
   //@}
 
 protected:
@@ -149,6 +155,8 @@ private:
   double ColorMix = 0.8;
   int LastPassCount = 0;
   int LastScreenRect[4] = { 0, 0, 0, 0 };
+  bool LastUsedPointSprites = false;
+  int LastThicknessFactor = 0;
 };
 
 #endif

@@ -37,6 +37,28 @@ inline vtkSmartPointer<vtkPolyData> latticeBall(double R, double h)
   return data;
 }
 
+/// Centres of a cubic lattice (spacing h) in a slab facing +z: |x|, |y| <= halfWidth, `layers`
+/// deep, centred on z = 0.
+inline vtkSmartPointer<vtkPolyData> latticeSlab(double halfWidth, int layers, double h)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  const int n = static_cast<int>(std::floor(halfWidth / h));
+  for (int i = -n; i <= n; ++i)
+  {
+    for (int j = -n; j <= n; ++j)
+    {
+      for (int k = 0; k < layers; ++k)
+      {
+        points->InsertNextPoint(i * h, j * h, (k - 0.5 * (layers - 1)) * h);
+      }
+    }
+  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  return data;
+}
+
 /// Radius of the ball holding the volume n particles of spacing h stand for (n h^3): where the
 /// surface of the fluid they sample is.
 inline double volumeRadius(vtkIdType n, double h)
