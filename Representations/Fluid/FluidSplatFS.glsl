@@ -12,11 +12,12 @@ uniform int parallelProjection;
 uniform int useOpaqueDepth;
 uniform sampler2D opaqueDepth;
 uniform float opaqueDepthScale; // full-resolution pixels per pixel of this pass
-uniform int pointSprites;
 uniform vec2 targetSize;         // pixels of the target drawn into
 uniform vec4 projection;         // P00, P11, and P02, P12 (perspective) or P03, P13 (parallel)
 
+#ifndef POINT_SPRITES
 in vec3 quadVC;
+#endif
 flat in vec3 centreVC;
 flat in float radiusVC;
 flat in vec4 particleColor;
@@ -49,13 +50,13 @@ void main()
 #endif
   // The ray through this pixel: from the quad's interpolated position, or for a point sprite
   // from the pixel itself.
+#ifdef POINT_SPRITES
+  vec2 ndc = gl_FragCoord.xy / targetSize * 2.0 - 1.0;
+  vec3 through = parallelProjection != 0 ? vec3((ndc - projection.zw) / projection.xy, 0.0)
+                                         : vec3((ndc + projection.zw) / projection.xy, -1.0);
+#else
   vec3 through = quadVC;
-  if (pointSprites != 0)
-  {
-    vec2 ndc = gl_FragCoord.xy / targetSize * 2.0 - 1.0;
-    through = parallelProjection != 0 ? vec3((ndc - projection.zw) / projection.xy, 0.0)
-                                      : vec3((ndc + projection.zw) / projection.xy, -1.0);
-  }
+#endif
   vec3 origin = vec3(0.0);
   vec3 dir = normalize(through);
   if (parallelProjection != 0)

@@ -2,11 +2,11 @@
 //=========================================================================
 // ParaFluid screen-space fluid: the screen footprint of each particle's sphere, built from
 // gl_VertexID (no vertex arrays): the particle's centre and radius come from a texture buffer.
-// pointSprites = 1: one point per particle, a square over the exact bounding box of the sphere's
+// POINT_SPRITES defined: one point per particle, a square over the exact bounding box of the sphere's
 // projection (one vertex instead of six: on a software rasteriser the vertex work of a million
 // particles costs as much as their fill). The mapper uses it only when every centre is on screen
 // (a point whose centre is clipped vanishes whole) and no point would exceed the largest size.
-// pointSprites = 0: a view-facing quad (six vertices) that covers the sphere's whole silhouette
+// Otherwise: a view-facing quad (six vertices) that covers the sphere's whole silhouette
 // under perspective. Either way the fragment shader ray-traces the exact sphere.
 //=========================================================================
 uniform samplerBuffer particles; // xyz: model coordinates, w: radius (0: skip)
@@ -16,11 +16,12 @@ uniform mat4 MCVCMatrix;
 uniform mat4 VCDCMatrix;
 uniform int parallelProjection;
 uniform float nearDistance;
-uniform int pointSprites;
 uniform vec2 targetSize;  // pixels of the target drawn into
 uniform vec4 projection;  // P00, P11, and P02, P12 (perspective) or P03, P13 (parallel)
 
+#ifndef POINT_SPRITES
 out vec3 quadVC;
+#endif
 flat out vec3 centreVC;
 flat out float radiusVC;
 flat out vec4 particleColor;
@@ -36,7 +37,12 @@ flat out float depositValue; // volume / pixel's world area: the thickness it ad
 
 void main()
 {
-  int particle = pointSprites != 0 ? gl_VertexID : gl_VertexID / 6;
+#ifdef POINT_SPRITES
+  int particle = gl_VertexID;
+#else
+  int particle = gl_VertexID / 6;
+  quadVC = vec3(0.0);
+#endif
   int corner = gl_VertexID - 6 * particle;
   vec4 p = texelFetch(particles, particle);
   vec4 c = MCVCMatrix * vec4(p.xyz, 1.0);
@@ -47,7 +53,6 @@ void main()
   vec2 k = vec2((corner == 1 || corner == 2 || corner == 4) ? 1.0 : -1.0,
                 (corner == 2 || corner == 4 || corner == 5) ? 1.0 : -1.0);
   float r = radiusVC;
-  quadVC = vec3(0.0);
   if (!(r > 0.0) || centreVC.z - r > -nearDistance)
   {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // skipped or wholly behind the near plane: clipped
@@ -69,19 +74,16 @@ void main()
       depositValue = 4.18879020479 * r * r * r / (pixelWorld.x * pixelWorld.y); // (4/3) pi r^3
       // A square of 2 pixels' side centred on the particle holds exactly the 4 pixel centres.
       gl_Position = vec4(ndc, clip.z / clip.w, 1.0);
-      if (pointSprites != 0)
-      {
-        gl_PointSize = 2.0;
-      }
-      else
-      {
-        gl_Position.xy += k * 2.0 / targetSize;
-      }
+#ifdef POINT_SPRITES
+      gl_PointSize = 2.0;
+#else
+      gl_Position.xy += k * 2.0 / targetSize;
+#endif
       return;
     }
   }
 #endif
-  if (pointSprites != 0)
+#ifdef POINT_SPRITES
   {
     // Bounding box of the projection in NDC. Perspective: per axis, the two planes through the
     // eye tangent to the sphere, x = k (-z), have k = (c d +- r sqrt(c^2 + d^2 - r^2)) / (d^2 - r^2)
@@ -107,8 +109,8 @@ void main()
     gl_Position = vec4(0.5 * (lo + hi), plane.z / plane.w, 1.0);
     vec2 extent = 0.5 * (hi - lo) * targetSize;
     gl_PointSize = max(extent.x, extent.y);
-    return;
   }
+#else
   vec3 q;
   if (parallelProjection != 0)
   {
@@ -136,4 +138,5 @@ void main()
   }
   quadVC = q;
   gl_Position = VCDCMatrix * vec4(q, 1.0);
+#endif
 }

@@ -40,6 +40,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -101,9 +102,10 @@ struct vtkPFScreenSpaceFluidMapper::Internals
   GLuint EmptyVAO = 0;
   float MaxPointSize = 0.0f; // the context's largest point sprite, pixels (0: not asked yet)
   int ThicknessFactor = 0;   // full-resolution pixels per thickness pixel, each way
-  // Splat programs: depth (0) and thickness (1), built apart so the depth pass carries none of
-  // the thickness pass's branches (on llvmpipe they cost the depth pass a third of its speed).
-  vtkShaderProgram* SplatPrograms[2] = { nullptr, nullptr };
+  // Splat programs: depth (0) or thickness (1), + 2 for point sprites; built apart so that no
+  // pass carries another's branches and varyings (on llvmpipe the thickness pass's branches cost
+  // the depth pass a third of its speed).
+  vtkShaderProgram* SplatPrograms[4] = { nullptr, nullptr, nullptr, nullptr };
   std::unique_ptr<vtkOpenGLQuadHelper> NarrowRange, Bilateral, Curvature, Blur, Shade, ShadeCube;
   vtkSmartPointer<vtkTexture> Environment;
 
@@ -155,7 +157,7 @@ struct vtkPFScreenSpaceFluidMapper::Internals
     this->Thickness = {};
     this->Framebuffer = nullptr;
     this->EmptyVAO = 0;
-    this->SplatPrograms[0] = this->SplatPrograms[1] = nullptr;
+    std::fill(std::begin(this->SplatPrograms), std::end(this->SplatPrograms), nullptr);
     this->UploadedKey = 0;
     this->Width = this->Height = 0;
     this->Context = nullptr;
@@ -600,16 +602,15 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   // --- Pass 1 (and 3): sphere splats.
   const float fullSize[2] = { static_cast<float>(width), static_cast<float>(height) };
   auto splatProgram = [&](int which) -> vtkShaderProgram* {
-    vtkShaderProgram*& program = in.SplatPrograms[which];
+    vtkShaderProgram*& program = in.SplatPrograms[which + (pointSprites ? 2 : 0)];
     if (!program)
     {
       std::string vs = FluidSplatVS, fs = FluidSplatFS;
-      if (which == 1)
-      {
-        const std::string define = "//VTK::System::Dec\n#define THICKNESS_PASS\n";
-        vtkShaderProgram::Substitute(vs, "//VTK::System::Dec\n", define);
-        vtkShaderProgram::Substitute(fs, "//VTK::System::Dec\n", define);
-      }
+      std::string defines = "//VTK::System::Dec\n";
+      defines += which == 1 ? "#define THICKNESS_PASS\n" : "";
+      defines += pointSprites ? "#define POINT_SPRITES\n" : "";
+      vtkShaderProgram::Substitute(vs, "//VTK::System::Dec\n", defines);
+      vtkShaderProgram::Substitute(fs, "//VTK::System::Dec\n", defines);
       program = window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
     }
     else
@@ -633,7 +634,6 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     program->SetUniformi("parallelProjection", parallel ? 1 : 0);
     program->SetUniformf("nearDistance", static_cast<float>(nearDistance));
     program->SetUniform4f("projection", projection);
-    program->SetUniformi("pointSprites", pointSprites ? 1 : 0);
     program->SetUniform2f("targetSize", fullSize);
     return program;
   };
