@@ -703,6 +703,7 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   const int thicknessSize[2] = { (width + f - 1) / f, (height + f - 1) / f };
   const int thicknessMin[2] = { rect[0] / f, rect[1] / f };
   const int thicknessMax[2] = { (rect[2] + f - 1) / f, (rect[3] + f - 1) / f };
+  const float thicknessPixels[2] = { static_cast<float>(thicknessSize[0]), static_cast<float>(thicknessSize[1]) };
   if (needThickness)
   {
     vtkShaderProgram* thicknessProgram = splatProgram(1);
@@ -716,7 +717,6 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     state->vtkglClear(GL_COLOR_BUFFER_BIT);
     state->vtkglEnable(GL_BLEND);
     state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
-    const float thicknessPixels[2] = { static_cast<float>(thicknessSize[0]), static_cast<float>(thicknessSize[1]) };
     thicknessProgram->SetUniform2f("targetSize", thicknessPixels);
     drawSplats();
     state->vtkglDisable(GL_BLEND);
@@ -762,7 +762,6 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
       window->GetShaderCache()->ReadyShaderProgram(in.Blur->Program);
     }
     vtkShaderProgram* program = in.Blur->Program;
-    const float thicknessPixels[2] = { static_cast<float>(thicknessSize[0]), static_cast<float>(thicknessSize[1]) };
     program->SetUniform2i("rectMin", thicknessMin);
     program->SetUniform2i("rectMax", thicknessMax);
     program->SetUniform2f("viewportSize", thicknessPixels);

@@ -286,11 +286,9 @@ int check()
 
   // Passes that the settings switch off are not run.
   auto passes = [&](int method, int iterations, int mode) {
-    auto prop = ours(ball, r, method, iterations, mode);
-    show(w, prop);
+    show(w, ours(ball, r, method, iterations, mode));
     w.Render();
-    auto* mapper = static_cast<vtkPFScreenSpaceFluidMapper*>(static_cast<vtkActor*>(prop.Get())->GetMapper());
-    return mapper->GetLastPassCount();
+    return lastMapper(w)->GetLastPassCount();
   };
   using M = vtkPFScreenSpaceFluidMapper;
   expect(passes(M::NarrowRange, 0, M::OpaqueSurface) == 2, "opaque, no smoothing: splats + shading only");
