@@ -16,7 +16,12 @@ uniform sampler2D particleColorTex;
 uniform int hasParticleColors;
 uniform float colorMix;
 uniform mat4 VCDCMatrix;
-uniform int displayMode; // 0 opaque, 1 transparent, 2 normals, 3 thickness, 4 particle depth
+uniform int displayMode; // 0 opaque, 1 transparent, 2 normals, 3 thickness, 4 particle depth, 5 toon,
+                         // 6 brush strokes (toon bands without lines; the strokes are drawn after)
+uniform int toonBands;
+uniform vec3 lineColor;
+uniform float contourSpacing; // world units between depth contour lines; 0: none
+uniform sampler2D linesTex;   // toon line coverage
 uniform vec3 fluidColor;
 uniform float attenuationDistance;
 uniform float refractiveIndex;
@@ -116,15 +121,42 @@ void main()
     vec3 reflected = environmentColor(reflect(-V, N));
     vec3 diffuse = vec3(ambient);
     vec3 specular = vec3(0.0);
+    float highlight = 0.0; // toon: the half-vector's closeness, with a broad fixed lobe
     for (int i = 0; i < lightCount; ++i)
     {
       vec3 L = -lightDirectionVC[i];
       diffuse += max(dot(N, L), 0.0) * lightColor[i];
       vec3 H = normalize(L + V);
       specular += pow(max(dot(N, H), 0.0), shininess) * lightColor[i];
+      highlight = max(highlight, dot(N, H));
     }
     specular *= specularStrength;
-    if (displayMode == 1)
+    if (displayMode == 5 || displayMode == 6)
+    {
+      // Toon: the diffuse light's luminance quantised into toonBands levels of the fluid colour
+      // (from 35 % to full), a hard highlight within about 14 degrees of the mirror direction
+      // (a sharp specular lobe would break up on the particles' residual bumps), then lines.
+      float lum = dot(diffuse, vec3(0.2126, 0.7152, 0.0722));
+      float level = min(floor(lum * float(toonBands)), float(toonBands - 1)) / float(toonBands - 1);
+      color = base * mix(0.35, 1.0, level);
+      if (specularStrength > 0.0 && highlight > 0.97)
+      {
+        color = mix(color, vec3(1.0), 0.8);
+      }
+      float line = displayMode == 5 ? texelFetch(linesTex, p, 0).r : 0.0;
+      if (displayMode == 5 && contourSpacing > 0.0)
+      {
+        // A contour wherever the quantised depth differs from the right or upper neighbour's.
+        float band = floor(d / contourSpacing);
+        float right = fetchDepth(p + ivec2(1, 0)), up = fetchDepth(p + ivec2(0, 1));
+        if ((right > 0.0 && floor(right / contourSpacing) != band) || (up > 0.0 && floor(up / contourSpacing) != band))
+        {
+          line = 1.0;
+        }
+      }
+      color = mix(color, lineColor, line);
+    }
+    else if (displayMode == 1)
     {
       vec2 offset = N.xy * thickness * refractionStrength / pixelFootprint(d);
       ivec2 q = clamp(ivec2(vec2(p) + offset), rectMin, rectMax - 1);

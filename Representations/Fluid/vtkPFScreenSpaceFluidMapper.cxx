@@ -1,4 +1,5 @@
 #include "vtkPFScreenSpaceFluidMapper.h"
+#include "FluidBrushStrokePass.h"
 
 #include "FluidBilateralFS.h"
 #include "FluidCurvatureFlowFS.h"
@@ -7,7 +8,11 @@
 #include "FluidShadeFS.h"
 #include "FluidSplatFS.h"
 #include "FluidSplatVS.h"
-#include "FluidThicknessBlurFS.h"
+#include "FluidGaussianBlurFS.h"
+#include "FluidToonDoGFS.h"
+#include "FluidToonFlowFS.h"
+#include "FluidToonTensorFS.h"
+#include "parafluid/BrushStrokes.h"
 
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
@@ -96,6 +101,9 @@ struct vtkPFScreenSpaceFluidMapper::Internals
   // Screen targets, the size of the viewport.
   vtkSmartPointer<vtkTextureObject> OpaqueDepth, OpaqueColor, SplatDepth, ParticleColors;
   std::array<vtkSmartPointer<vtkTextureObject>, 2> Depth, Thickness;
+  // Toon display only: the structure tensor (and its blur), and the line coverage.
+  std::array<vtkSmartPointer<vtkTextureObject>, 2> Tensor;
+  vtkSmartPointer<vtkTextureObject> Lines;
   int Width = 0, Height = 0;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   // Core profiles draw only with a vertex array bound, even one without attributes.
@@ -107,19 +115,26 @@ struct vtkPFScreenSpaceFluidMapper::Internals
   // the depth pass a third of its speed).
   vtkShaderProgram* SplatPrograms[4] = { nullptr, nullptr, nullptr, nullptr };
   std::unique_ptr<vtkOpenGLQuadHelper> NarrowRange, Bilateral, Curvature, Blur, Shade, ShadeCube;
+  std::unique_ptr<vtkOpenGLQuadHelper> ToonTensor, ToonDoG, ToonFlow;
   vtkSmartPointer<vtkTexture> Environment;
+  // Brush-stroke display only: the strokes, laid out again when the data or settings change.
+  parafluid::FluidBrushStrokePass Strokes;
+  vtkMTimeType StrokeKey = 0;
 
   void Release(vtkWindow* window)
   {
     for (vtkTextureObject* t : { this->ParticleTexture.Get(), this->ColorTexture.Get(), this->OpaqueDepth.Get(),
            this->OpaqueColor.Get(), this->SplatDepth.Get(), this->ParticleColors.Get(), this->Depth[0].Get(),
-           this->Depth[1].Get(), this->Thickness[0].Get(), this->Thickness[1].Get() })
+           this->Depth[1].Get(), this->Thickness[0].Get(), this->Thickness[1].Get(), this->Tensor[0].Get(),
+           this->Tensor[1].Get(), this->Lines.Get() })
     {
       if (t)
       {
         t->ReleaseGraphicsResources(window);
       }
     }
+    this->Strokes.Release(window);
+    this->StrokeKey = 0;
     if (this->ParticleBuffer)
     {
       this->ParticleBuffer->ReleaseGraphicsResources();
@@ -138,7 +153,7 @@ struct vtkPFScreenSpaceFluidMapper::Internals
       glDeleteVertexArrays(1, &this->EmptyVAO);
     }
     for (auto* quad : { &this->NarrowRange, &this->Bilateral, &this->Curvature, &this->Blur, &this->Shade,
-           &this->ShadeCube })
+           &this->ShadeCube, &this->ToonTensor, &this->ToonDoG, &this->ToonFlow })
     {
       if (*quad)
       {
@@ -155,6 +170,8 @@ struct vtkPFScreenSpaceFluidMapper::Internals
     this->SplatDepth = this->ParticleColors = nullptr;
     this->Depth = {};
     this->Thickness = {};
+    this->Tensor = {};
+    this->Lines = nullptr;
     this->Framebuffer = nullptr;
     this->EmptyVAO = 0;
     std::fill(std::begin(this->SplatPrograms), std::end(this->SplatPrograms), nullptr);
@@ -165,7 +182,7 @@ struct vtkPFScreenSpaceFluidMapper::Internals
 
   /// (Re)creates the screen targets for a viewport of width x height.
   /// `thicknessFactor`: full-resolution pixels per thickness pixel, each way.
-  void EnsureTargets(vtkOpenGLRenderWindow* window, int width, int height, int thicknessFactor, bool colors)
+  void EnsureTargets(vtkOpenGLRenderWindow* window, int width, int height, int thicknessFactor, bool colors, bool toon)
   {
     if (!this->Framebuffer)
     {
@@ -228,6 +245,24 @@ struct vtkPFScreenSpaceFluidMapper::Internals
     {
       rgba(this->ParticleColors);
     }
+    if (toon || this->Lines)
+    {
+      for (auto& t : this->Tensor)
+      {
+        if (!t)
+        {
+          t = makeTarget(window);
+          t->SetInternalFormat(GL_RGBA32F);
+          t->SetFormat(GL_RGBA);
+          t->Allocate2D(width, height, 4, VTK_FLOAT);
+        }
+        else if (resize)
+        {
+          t->Resize(width, height);
+        }
+      }
+      single(this->Lines, width, height, false, resize);
+    }
     this->Width = width;
     this->Height = height;
   }
@@ -265,6 +300,118 @@ void vtkPFScreenSpaceFluidMapper::SetRadiusArray(const char* name)
     this->RadiusArray = value;
     this->Modified();
   }
+}
+
+void vtkPFScreenSpaceFluidMapper::SetStrokeVelocityArray(const char* name)
+{
+  const std::string value = name ? name : "";
+  if (value != this->StrokeVelocityArray)
+  {
+    this->StrokeVelocityArray = value;
+    this->Modified();
+  }
+}
+
+void vtkPFScreenSpaceFluidMapper::SetStrokeColorArray(const char* name)
+{
+  const std::string value = name ? name : "";
+  if (value != this->StrokeColorArray)
+  {
+    this->StrokeColorArray = value;
+    this->Modified();
+  }
+}
+
+void vtkPFScreenSpaceFluidMapper::LayOutStrokes(
+  vtkPointSet* input, vtkUnsignedCharArray* colors, vtkOpenGLRenderWindow* window)
+{
+  Internals& in = *this->Internal;
+  // The finite particles, and where each came from.
+  const vtkIdType n = input->GetNumberOfPoints();
+  vtkDataArray* velocities = input->GetPointData()->GetArray(this->StrokeVelocityArray.c_str());
+  if (velocities && velocities->GetNumberOfComponents() != 3)
+  {
+    velocities = nullptr;
+  }
+  if (!velocities)
+  {
+    vtkWarningMacro("Brush strokes: no 3-component point array '" << this->StrokeVelocityArray
+                                                                  << "'; the water is taken as still (fixed strokes only).");
+  }
+  vtkDataArray* values = input->GetPointData()->GetArray(this->StrokeColorArray.c_str());
+  std::vector<float> xyz, velocity, value;
+  std::vector<vtkIdType> source;
+  xyz.reserve(static_cast<size_t>(3 * n));
+  velocity.reserve(static_cast<size_t>(3 * n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3], v[3] = { 0.0, 0.0, 0.0 };
+    input->GetPoint(i, x);
+    if (velocities)
+    {
+      velocities->GetTuple(i, v);
+    }
+    if (!(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
+    {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      xyz.push_back(static_cast<float>(x[k]));
+      velocity.push_back(std::isfinite(v[k]) ? static_cast<float>(v[k]) : 0.0f);
+    }
+    value.push_back(values ? static_cast<float>(values->GetComponent(i, 0)) : 0.0f);
+    source.push_back(i);
+  }
+  parafluid::npr::BrushStrokeParameters parameters;
+  // A particle's drawn radius is half a spacing to a spacing: the flow is read over about two to
+  // four spacings.
+  parameters.flow.kernelRadius = 4.0 * in.MaxRadius;
+  parameters.flow.seedStride = this->StrokeSeedStride;
+  parameters.flow.pointsPerLine = 12;
+  parameters.flow.lineDuration = this->StrokeDuration;
+  parameters.flow.maxLines = static_cast<std::size_t>(this->MaxStrokes);
+  parameters.strokeLength = this->StrokeLength * in.MaxRadius;
+  // Three fixed strokes per stroke length each way: on screen they overlap into a painted cover.
+  parameters.fillSpacing = parameters.strokeLength / 3.0;
+  parameters.maxStrokes = static_cast<std::size_t>(this->MaxStrokes);
+  parafluid::npr::BrushStrokeSet strokes;
+  try
+  {
+    strokes = parafluid::npr::layoutBrushStrokes(xyz.data(), velocity.data(), value.data(), source.size(), parameters);
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("Brush strokes: " << e.what());
+  }
+  // Colours: the scalar colouring, else the colour array from dark to light fluid colour.
+  const std::size_t count = strokes.strokeCount();
+  std::vector<float> rgb(3 * count);
+  float low = std::numeric_limits<float>::max(), high = -low;
+  for (float v : strokes.value)
+  {
+    low = std::min(low, v);
+    high = std::max(high, v);
+  }
+  for (std::size_t s = 0; s < count; ++s)
+  {
+    const vtkIdType particle = source[strokes.seed[s]];
+    for (int k = 0; k < 3; ++k)
+    {
+      if (colors)
+      {
+        const int nc = colors->GetNumberOfComponents();
+        rgb[3 * s + k] = colors->GetValue(nc * particle + (nc >= 3 ? k : 0)) / 255.0f;
+      }
+      else
+      {
+        const double t = values && high > low ? (strokes.value[s] - low) / (high - low) : 0.5;
+        const double dark = 0.6 * this->FluidColor[k], light = this->FluidColor[k] + 0.6 * (1.0 - this->FluidColor[k]);
+        rgb[3 * s + k] = static_cast<float>(dark + t * (light - dark));
+      }
+    }
+  }
+  in.Strokes.Upload(window, strokes, rgb);
 }
 
 void vtkPFScreenSpaceFluidMapper::SetEnvironmentTexture(vtkTexture* texture)
@@ -422,6 +569,18 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   {
     return; // nothing finite to draw
   }
+  this->LastStrokeCount = 0;
+  this->LastStrokeSegmentCount = 0;
+  if (this->DisplayMode == BrushStrokes)
+  {
+    if (key != in.StrokeKey)
+    {
+      this->LayOutStrokes(input, colors, window);
+      in.StrokeKey = key;
+    }
+    this->LastStrokeCount = static_cast<vtkIdType>(in.Strokes.StrokeCount());
+    this->LastStrokeSegmentCount = static_cast<vtkIdType>(in.Strokes.SegmentCount());
+  }
 
   // --- Camera: the key matrices are stored transposed, ready for SetUniformMatrix.
   int width = 0, height = 0, originX = 0, originY = 0;
@@ -567,7 +726,7 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     const double radiusPixels = in.MaxRadius * vcdc->GetElement(1, 1) * 0.5 * height / middle;
     thicknessFactor = radiusPixels < 8.0 ? 4 : 2;
   }
-  in.EnsureTargets(window, width, height, thicknessFactor, in.HasColors);
+  in.EnsureTargets(window, width, height, thicknessFactor, in.HasColors, this->DisplayMode == Toon);
 
   // --- The opaque scene drawn so far: its depth (occlusion) and, for refraction, its colour.
   // Read from the framebuffer being drawn (the read binding may point elsewhere, e.g. at
@@ -755,7 +914,7 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   {
     if (!in.Blur)
     {
-      in.Blur = makeQuad(window, FluidThicknessBlurFS);
+      in.Blur = makeQuad(window, FluidGaussianBlurFS);
     }
     else
     {
@@ -768,9 +927,9 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     program->SetUniformi("radius", std::max(1, (this->MaxFilterRadius + f) / (2 * f)));
     const int dx[2] = { 1, 0 }, dy[2] = { 0, 1 };
     program->SetUniform2i("stepDir", dx);
-    filterPass(in.Blur.get(), in.Thickness[0], in.Thickness[1], "thicknessTex");
+    filterPass(in.Blur.get(), in.Thickness[0], in.Thickness[1], "sourceTex");
     program->SetUniform2i("stepDir", dy);
-    filterPass(in.Blur.get(), in.Thickness[1], in.Thickness[0], "thicknessTex");
+    filterPass(in.Blur.get(), in.Thickness[1], in.Thickness[0], "sourceTex");
     state->vtkglViewport(0, 0, width, height);
     state->vtkglScissor(rect[0], rect[1], rectSize[0], rectSize[1]);
   }
@@ -821,6 +980,60 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
       }
     }
   }
+  // --- Toon lines: structure tensor of the depth, blurred; difference of Gaussians across the
+  // edges; averaged along them (flow-guided DoG) into a line coverage.
+  const bool toon = mode == Toon;
+  if (toon)
+  {
+    auto ready = [&](std::unique_ptr<vtkOpenGLQuadHelper>& quad, const char* source) {
+      if (!quad)
+      {
+        quad = makeQuad(window, source);
+      }
+      else
+      {
+        window->GetShaderCache()->ReadyShaderProgram(quad->Program);
+      }
+      commonUniforms(quad->Program);
+      return quad->Program;
+    };
+    // The line image: depth in units of DepthRange particle radii; the background three units
+    // behind the farthest fluid, so a silhouette is always a strong edge, stronger than any
+    // depth step inside the fluid that still counts as one surface.
+    const float lineScale = static_cast<float>(1.0 / (in.MaxRadius * this->DepthRange));
+    const float background = static_cast<float>(farthest) * lineScale + 3.0f;
+    vtkShaderProgram* program = ready(in.ToonTensor, FluidToonTensorFS);
+    program->SetUniformf("lineDepthScale", lineScale);
+    program->SetUniformf("backgroundValue", background);
+    filterPass(in.ToonTensor.get(), in.Depth[current], in.Tensor[0], "depthTex");
+
+    program = ready(in.Blur, FluidGaussianBlurFS);
+    const float full[2] = { static_cast<float>(width), static_cast<float>(height) };
+    program->SetUniform2f("viewportSize", full);
+    program->SetUniformi("radius", 4);
+    const int dx[2] = { 1, 0 }, dy[2] = { 0, 1 };
+    program->SetUniform2i("stepDir", dx);
+    filterPass(in.Blur.get(), in.Tensor[0], in.Tensor[1], "sourceTex");
+    program->SetUniform2i("stepDir", dy);
+    filterPass(in.Blur.get(), in.Tensor[1], in.Tensor[0], "sourceTex");
+
+    // The DoG goes into the free depth target.
+    vtkTextureObject* dog = in.Depth[1 - current];
+    program = ready(in.ToonDoG, FluidToonDoGFS);
+    program->SetUniformf("lineDepthScale", lineScale);
+    program->SetUniformf("backgroundValue", background);
+    program->SetUniformf("sigma", static_cast<float>(std::max(0.5, this->LineWidth)));
+    in.Tensor[0]->Activate();
+    program->SetUniformi("tensorTex", in.Tensor[0]->GetTextureUnit());
+    filterPass(in.ToonDoG.get(), in.Depth[current], dog, "depthTex");
+
+    program = ready(in.ToonFlow, FluidToonFlowFS);
+    program->SetUniformi("tensorTex", in.Tensor[0]->GetTextureUnit());
+    program->SetUniformf("flowSigma", 3.0f);
+    program->SetUniformf("threshold", static_cast<float>(this->LineThreshold));
+    filterPass(in.ToonFlow.get(), dog, in.Lines, "dogTex");
+    in.Tensor[0]->Deactivate();
+  }
   fbo->RemoveColorAttachment(0);
   state->PopFramebufferBindings();
 
@@ -855,6 +1068,9 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   commonUniforms(shade);
   shade->SetUniformMatrix("VCDCMatrix", vcdc);
   shade->SetUniformi("displayMode", mode);
+  shade->SetUniformi("toonBands", this->ToonBands);
+  shade->SetUniform3f("lineColor", this->LineColor);
+  shade->SetUniformf("contourSpacing", static_cast<float>(this->DepthContourSpacing * in.MaxRadius));
   shade->SetUniform3f("fluidColor", this->FluidColor);
   shade->SetUniformf("attenuationDistance", static_cast<float>(this->AttenuationDistance));
   shade->SetUniformf("refractiveIndex", static_cast<float>(this->RefractiveIndex));
@@ -971,8 +1187,17 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
       in.ParticleColors->Activate();
       shade->SetUniformi("particleColorTex", in.ParticleColors->GetTextureUnit());
     }
+    if (toon)
+    {
+      in.Lines->Activate();
+      shade->SetUniformi("linesTex", in.Lines->GetTextureUnit());
+    }
     shadeQuad->Render();
     ++this->LastPassCount;
+    if (toon)
+    {
+      in.Lines->Deactivate();
+    }
     in.Depth[current]->Deactivate();
     if (needThickness)
     {
@@ -990,6 +1215,21 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     {
       environment->PostRender(renderer);
     }
+  }
+  // --- Pass 5 (brush-stroke display): the strokes over the shaded fluid, on its visible surface.
+  if (mode == BrushStrokes && in.Strokes.SegmentCount() > 0)
+  {
+    parafluid::FluidBrushStrokePass::View strokeView{ mcvc, vcdc, { width, height }, { originX, originY },
+      { rectMin[0], rectMin[1] }, { rectMax[0], rectMax[1] }, parallel,
+      { projection[0], projection[1], projection[2], projection[3] } };
+    state->vtkglDepthMask(GL_FALSE); // the surface's depth is already written
+    // A stroke more than 3 particle radii behind the surface runs through hidden water.
+    if (!in.Strokes.Draw(window, strokeView, in.Depth[current], in.EmptyVAO, this->StrokeWidth, 3.0 * in.MaxRadius))
+    {
+      vtkErrorMacro("The brush-stroke shader did not compile (see the messages above).");
+    }
+    state->vtkglDepthMask(GL_TRUE);
+    ++this->LastPassCount;
   }
   // Report, do not hide, a GL error of these passes (release VTK builds check none).
   const GLenum error = glGetError();

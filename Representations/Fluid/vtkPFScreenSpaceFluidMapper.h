@@ -12,9 +12,12 @@
  *     curvature flow (van der Laan et al. 2009), one pass per step;
  *  3. thickness (transparent fluid and thickness display only): additive chord lengths, blurred
  *     by a separable Gaussian;
- *  4. the shading pass into the view: normals from the smoothed depth, Fresnel reflection of the
+ *  4. toon display only: the structure tensor of the depth (blurred), a difference of Gaussians
+ *     across its edges and its average along them (flow-guided DoG) into line coverage;
+ *  5. the shading pass into the view: normals from the smoothed depth, Fresnel reflection of the
  *     environment, refraction of the opaque scene behind with Beer-Lambert attenuation, specular
- *     from the renderer's lights, and the surface's depth so it composites with the scene.
+ *     from the renderer's lights (or toon bands and lines), and the surface's depth so it
+ *     composites with the scene.
  *
  * The opaque scene must have been drawn first: use it with vtkPFScreenSpaceFluidActor, which
  * renders it after all opaque, translucent and volumetric geometry.
@@ -28,6 +31,8 @@
 #include <memory>
 #include <string>
 
+class vtkOpenGLRenderWindow;
+class vtkPointSet;
 class vtkTexture;
 
 class PARAFLUIDFLUIDREPRESENTATIONS_EXPORT vtkPFScreenSpaceFluidMapper : public vtkMapper
@@ -49,7 +54,9 @@ public:
     TransparentFluid = 1,
     Normals = 2,
     Thickness = 3,
-    ParticleDepth = 4
+    ParticleDepth = 4,
+    Toon = 5,
+    BrushStrokes = 6
   };
 
   //@{
@@ -82,7 +89,7 @@ public:
 
   //@{
   /// What is drawn: see DisplayModes.
-  vtkSetClampMacro(DisplayMode, int, 0, 4);
+  vtkSetClampMacro(DisplayMode, int, 0, 6);
   vtkGetMacro(DisplayMode, int);
   /// Colour of the fluid (opaque surface), and the tint white light takes through
   /// AttenuationDistance world units of it (transparent fluid, Beer-Lambert).
@@ -112,6 +119,52 @@ public:
   void GetBounds(double bounds[6]) override { this->vtkMapper::GetBounds(bounds); }
 
   //@{
+  /// Toon display: lighting quantised into ToonBands bands of FluidColor; lines of LineColor
+  /// where the depth steps by about DepthRange particle radii or more and at silhouettes, found
+  /// by a flow-guided difference of Gaussians (Kang et al. 2007) of width LineWidth pixels,
+  /// drawn where its response passes LineThreshold (in DepthRange units: larger, fewer lines);
+  /// with DepthContourSpacing > 0, also contour lines of the depth every that many particle radii.
+  vtkSetClampMacro(ToonBands, int, 2, 16);
+  vtkGetMacro(ToonBands, int);
+  vtkSetVector3Macro(LineColor, double);
+  vtkGetVector3Macro(LineColor, double);
+  vtkSetClampMacro(LineWidth, double, 0.5, 8.0);
+  vtkGetMacro(LineWidth, double);
+  vtkSetClampMacro(LineThreshold, double, 0.001, 10.0);
+  vtkGetMacro(LineThreshold, double);
+  vtkSetClampMacro(DepthContourSpacing, double, 0.0, 1000.0);
+  vtkGetMacro(DepthContourSpacing, double);
+  //@}
+
+  //@{
+  /// Brush-stroke display: toon bands of FluidColor painted over with strokes StrokeWidth pixels
+  /// wide along the flow (parafluid::npr::layoutBrushStrokes): flow lines from every
+  /// StrokeSeedStride-th particle integrated over StrokeDuration seconds through
+  /// StrokeVelocityArray, kept where at least StrokeLength particle radii long, and strokes of
+  /// that fixed length filling the slower water, at most MaxStrokes. A stroke takes its seed
+  /// particle's colour: the scalar colouring when on, else StrokeColorArray (e.g. density)
+  /// from dark to light FluidColor over its range, else FluidColor. Strokes are kept to the
+  /// fluid's footprint and its visible surface.
+  vtkSetClampMacro(StrokeWidth, double, 1.0, 64.0);
+  vtkGetMacro(StrokeWidth, double);
+  vtkSetClampMacro(StrokeLength, double, 0.5, 1000.0);
+  vtkGetMacro(StrokeLength, double);
+  vtkSetClampMacro(StrokeSeedStride, int, 1, 1000000);
+  vtkGetMacro(StrokeSeedStride, int);
+  vtkSetClampMacro(StrokeDuration, double, 1e-6, 1e6);
+  vtkGetMacro(StrokeDuration, double);
+  vtkSetClampMacro(MaxStrokes, int, 1, 10000000);
+  vtkGetMacro(MaxStrokes, int);
+  void SetStrokeVelocityArray(const char* name);
+  const char* GetStrokeVelocityArray() const { return this->StrokeVelocityArray.c_str(); }
+  void SetStrokeColorArray(const char* name);
+  const char* GetStrokeColorArray() const { return this->StrokeColorArray.c_str(); }
+  /// Strokes laid out for the last drawn data (brush-stroke display), and their segments.
+  vtkIdType GetLastStrokeCount() const { return this->LastStrokeCount; }
+  vtkIdType GetLastStrokeSegmentCount() const { return this->LastStrokeSegmentCount; }
+  //@}
+
+  //@{
   /// What the last Render did, for tests and benchmarks: GPU passes run (splats, filters,
   /// shading), the screen rectangle they covered (x0, y0, x1, y1 in viewport pixels), and how
   /// the splats were drawn.
@@ -138,6 +191,8 @@ private:
 
   double ParticleRadius = 0.01;
   std::string RadiusArray;
+  // Brush-stroke display: lays the strokes out for `input` and uploads them.
+  void LayOutStrokes(vtkPointSet* input, vtkUnsignedCharArray* colors, vtkOpenGLRenderWindow* window);
   int SmoothingMethod = NarrowRange;
   int SmoothingIterations = 3;
   double FilterSize = 4.0;
@@ -153,6 +208,20 @@ private:
   double SpecularStrength = 0.8;
   double Ambient = 0.2;
   double ColorMix = 0.8;
+  int ToonBands = 4;
+  double LineColor[3] = { 0.02, 0.06, 0.15 };
+  double LineWidth = 1.0;
+  double LineThreshold = 0.1;
+  double DepthContourSpacing = 0.0;
+  double StrokeWidth = 6.0;
+  double StrokeLength = 6.0;
+  int StrokeSeedStride = 3;
+  double StrokeDuration = 0.3;
+  int MaxStrokes = 4000;
+  std::string StrokeVelocityArray = "velocity";
+  std::string StrokeColorArray = "density";
+  vtkIdType LastStrokeCount = 0;
+  vtkIdType LastStrokeSegmentCount = 0;
   int LastPassCount = 0;
   int LastScreenRect[4] = { 0, 0, 0, 0 };
   bool LastUsedPointSprites = false;

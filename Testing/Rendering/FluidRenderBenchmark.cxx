@@ -2,7 +2,7 @@
 // vtkOpenGLFluidMapper and vtkPointGaussianMapper spheres (the floor), in one run and one window.
 //
 //   ParaFluidFluidRenderBenchmark [--width W --height H --csv file --big N
-//                                  --only accuracy|speed|big]                 (benchmark)
+//                                  --only accuracy|speed|big|npr]             (benchmark)
 //   ParaFluidFluidRenderBenchmark --check                                     (the ctest)
 //
 // Needs an X display (run under scripts/with-xvfb.sh). Our depth comes from the window's depth
@@ -20,6 +20,7 @@
 #include "vtkOpenGLFluidMapper.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkPixelBufferObject.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkTextureObject.h"
 #include "vtkPointGaussianMapper.h"
 #include "vtkPropCollection.h"
@@ -296,6 +297,123 @@ int check()
   expect(passes(M::CurvatureFlow, 10, M::OpaqueSurface) == 2 + 10, "curvature flow x10: 10 passes");
   expect(passes(M::NarrowRange, 3, M::TransparentFluid) == 2 + 6 + 3, "transparent: + thickness splats and 2 blur passes");
   expect(passes(M::NarrowRange, 3, M::ParticleDepth) == 2, "particle-depth display: no smoothing, no thickness");
+  expect(passes(M::NarrowRange, 3, M::Toon) == 2 + 6 + 5, "toon: + tensor, its 2 blur passes, DoG across, average along");
+  {
+    double spacing = 0.0;
+    auto swirl = parafluid_test::damBlock(20000, spacing);
+    parafluid_test::addSwirl(swirl);
+    show(w, ours(swirl, spacing, M::NarrowRange, 3, M::BrushStrokes));
+    w.Render();
+    std::printf("brush strokes on a swirling block: %lld strokes, %lld segments\n",
+      static_cast<long long>(lastMapper(w)->GetLastStrokeCount()), static_cast<long long>(lastMapper(w)->GetLastStrokeSegmentCount()));
+    expect(lastMapper(w)->GetLastPassCount() == 2 + 6 + 1, "brush strokes: one stroke pass over the smoothed surface, no toon line passes");
+    expect(lastMapper(w)->GetLastStrokeCount() > 100, "brush strokes: a swirling block gets strokes");
+  }
+  // Toon: the lit ball is flat bands of the fluid colour (plus the highlight and the lines), a
+  // dark silhouette runs round it, and its smooth interior has no lines.
+  {
+    show(w, ours(ball, r, M::NarrowRange, 3, M::Toon));
+    auto* toon = lastMapper(w);
+    toon->SetFluidColor(0.1, 0.45, 0.75);
+    w.Render();
+    vtkNew<vtkUnsignedCharArray> rgb;
+    w.window->GetPixelData(0, 0, w.width - 1, w.height - 1, 0, rgb);
+    auto pixel = [&](int i, int j) { return rgb->GetPointer(3 * (static_cast<vtkIdType>(j) * w.width + i)); };
+    const int bands = toon->GetToonBands();
+    const double* base = toon->GetFluidColor();
+    // Band k is the fluid colour times mix(0.35, 1, k / (bands - 1)); the highlight is 80 % white.
+    auto classify = [&](const unsigned char* c) {
+      for (int k = 0; k < bands; ++k)
+      {
+        const double f = 0.35 + 0.65 * k / (bands - 1);
+        bool same = true;
+        for (int q = 0; q < 3; ++q)
+        {
+          same = same && std::abs(c[q] - 255.0 * base[q] * f) <= 2.0;
+        }
+        if (same)
+        {
+          return k;
+        }
+      }
+      return -1;
+    };
+    // The ball's radius on screen in pixels (view angle 30 degrees; R / distance is the tangent of
+    // its half-angle to within 2 %).
+    const double ballPixels = 0.5 * w.height * (R / w.distance) / std::tan(vtkMath::RadiansFromDegrees(15.0));
+    std::vector<int> bandCount(bands, 0);
+    int interior = 0, banded = 0, dark = 0;
+    const double darkest = 255.0 * 0.35 * (0.2126 * base[0] + 0.7152 * base[1] + 0.0722 * base[2]);
+    auto luminance = [](const unsigned char* c) { return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]; };
+    for (int j = 0; j < w.height; ++j)
+    {
+      for (int i = 0; i < w.width; ++i)
+      {
+        const double rho = std::hypot(i + 0.5 - 0.5 * w.width, j + 0.5 - 0.5 * w.height);
+        const unsigned char* c = pixel(i, j);
+        const int k = classify(c);
+        if (rho < 0.9 * ballPixels && k >= 0)
+        {
+          ++bandCount[k]; // the lower bands lie near the rim (headlight)
+        }
+        if (rho > 0.7 * ballPixels)
+        {
+          continue;
+        }
+        ++interior;
+        banded += k >= 0 || (c[0] > 200 && c[1] > 200) ? 1 : 0; // a band or the highlight
+        dark += luminance(c) < 0.8 * darkest ? 1 : 0;
+      }
+    }
+    const int levels = static_cast<int>(std::count_if(bandCount.begin(), bandCount.end(), [&](int n) { return n > interior / 200; }));
+    std::printf("toon interior: %d px, %.1f %% flat bands or highlight, %d band levels, %.2f %% line pixels\n", interior,
+      100.0 * banded / interior, levels, 100.0 * dark / interior);
+    expect(banded > 0.97 * interior, "toon: the ball's interior is flat bands of the fluid colour and the highlight");
+    expect(levels >= 2, "toon: the lighting falls into at least two bands across the ball");
+    expect(dark < 0.01 * interior, "toon: no lines inside the smooth ball");
+    // The silhouette: on every row through the ball, the first fluid pixels from the left and
+    // right include one darker than the darkest band.
+    const unsigned char* background = pixel(0, 0);
+    int rows = 0, outlined = 0;
+    for (int j = static_cast<int>(0.5 * w.height - 0.6 * ballPixels); j < 0.5 * w.height + 0.6 * ballPixels; j += 4)
+    {
+      ++rows;
+      bool left = false, right = false;
+      for (int side = 0; side < 2; ++side)
+      {
+        int i = side == 0 ? 0 : w.width - 1;
+        const int step = side == 0 ? 1 : -1;
+        while (i >= 0 && i < w.width && std::equal(background, background + 3, pixel(i, j)))
+        {
+          i += step;
+        }
+        for (int k = 0; k < 5 && i >= 0 && i < w.width; ++k, i += step)
+        {
+          (side == 0 ? left : right) |= luminance(pixel(i, j)) < 0.8 * darkest;
+        }
+      }
+      outlined += left && right ? 1 : 0;
+    }
+    std::printf("toon silhouette: outlined on %d of %d rows\n", outlined, rows);
+    expect(outlined >= rows - 1, "toon: a dark silhouette line runs round the ball");
+
+    // Depth contours every 2 particle radii: rings round the view axis. Along the middle row the
+    // surface depth rises by R (1 - cos) from the centre, so the rings within 0.7 R of it are
+    // those of depth R (1 - sqrt(1 - 0.49)) / (2 r) ~ 2.9 spacings: 2 or 3 crossings each side.
+    toon->SetDepthContourSpacing(2.0);
+    w.Render();
+    w.window->GetPixelData(0, 0, w.width - 1, w.height - 1, 0, rgb);
+    int crossings = 0;
+    bool wasDark = false;
+    for (int i = static_cast<int>(0.5 * w.width - 0.7 * ballPixels); i < 0.5 * w.width + 0.7 * ballPixels; ++i)
+    {
+      const bool isDark = luminance(pixel(i, w.height / 2)) < 0.8 * darkest;
+      crossings += isDark && !wasDark ? 1 : 0;
+      wasDark = isDark;
+    }
+    std::printf("toon depth contours: %d lines crossed within 0.7 R of the centre\n", crossings);
+    expect(crossings >= 4 && crossings <= 7, "toon: depth contours every 2 radii cross the middle row 4 to 7 times");
+  }
 
   // The splats are exact spheres: one particle's depth matches its sphere to float precision.
   {
@@ -404,7 +522,8 @@ int main(int argc, char* argv[])
   int width = 1280, height = 720;
   long big = 1000000;
   std::string csvPath = "fluid_render_benchmark.csv";
-  std::string only; // "accuracy" (the ball) or "speed" (the blocks); empty: both
+  std::string only; // "accuracy" (the ball), "speed" (the blocks), "big" (the big block), "npr" (toon
+                    // and brush strokes against opaque on the blocks); empty: all
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -434,7 +553,7 @@ int main(int argc, char* argv[])
     }
     else
     {
-      std::fprintf(stderr, "usage: %s [--check] [--width W] [--height H] [--big N] [--csv file] [--only accuracy|speed|big]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--check] [--width W] [--height H] [--big N] [--csv file] [--only accuracy|speed|big|npr]\n", argv[0]);
       return 2;
     }
   }
@@ -466,7 +585,7 @@ int main(int argc, char* argv[])
     { M::CurvatureFlow, "curvature-flow", { 10, 20, 40, 80, 160 } } };
   for (const auto& s : sweeps)
   {
-    if (only == "speed")
+    if (!only.empty() && only != "accuracy")
     {
       break;
     }
@@ -486,7 +605,7 @@ int main(int argc, char* argv[])
   } peerRuns[] = { { 0, true }, { 1, true }, { 2, true }, { 3, true }, { 5, true }, { 8, true }, { 3, false } };
   for (const auto& run : peerRuns)
   {
-    if (only == "speed")
+    if (!only.empty() && only != "accuracy")
     {
       break;
     }
@@ -510,6 +629,7 @@ int main(int argc, char* argv[])
     }
     double spacing = 0.0;
     auto block = parafluid_test::damBlock(count, spacing);
+    parafluid_test::addSwirl(block);
     const double radius = spacing; // splats overlap like a fluid renderer's usually do
     w.renderer->GetActiveCamera()->SetPosition(1.0, -2.2, 2.4);
     w.renderer->GetActiveCamera()->SetFocalPoint(1.0, 0.5, 0.3);
@@ -528,8 +648,27 @@ int main(int argc, char* argv[])
       return s;
     };
     const DepthError none;
-    row(scene.c_str(), "ours", "transparent narrow-range", 3, time(ours(block, radius, M::NarrowRange, 3, M::TransparentFluid)), none);
+    // Non-photorealistic styles against the opaque surface they build on: the toon line passes
+    // and the brush-stroke pass work in image space, so their extra cost should not grow with
+    // the particle count. (The stroke layout runs once per data change, in the warm-up frame.)
     row(scene.c_str(), "ours", "opaque narrow-range", 3, time(ours(block, radius, M::NarrowRange, 3, M::OpaqueSurface)), none);
+    row(scene.c_str(), "ours", "toon narrow-range", 3, time(ours(block, radius, M::NarrowRange, 3, M::Toon)), none);
+    row(scene.c_str(), "ours", "brush strokes narrow-range", 3, time(ours(block, radius, M::NarrowRange, 3, M::BrushStrokes)), none);
+    {
+      show(w, ours(block, radius, M::NarrowRange, 3, M::BrushStrokes));
+      const auto start = std::chrono::steady_clock::now();
+      w.Render();
+      const double first = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::printf("%-36s %6s %10.1f   (first frame: upload + %lld strokes laid out, %lld segments)\n",
+        "ours / brush strokes, first frame", "3", 1e3 * first, static_cast<long long>(lastMapper(w)->GetLastStrokeCount()),
+        static_cast<long long>(lastMapper(w)->GetLastStrokeSegmentCount()));
+      csv << scene << ",ours,brush strokes first frame,3," << first << ",,,,\n";
+    }
+    if (only == "npr")
+    {
+      continue;
+    }
+    row(scene.c_str(), "ours", "transparent narrow-range", 3, time(ours(block, radius, M::NarrowRange, 3, M::TransparentFluid)), none);
     row(scene.c_str(), "ours", "opaque unsmoothed", 0, time(ours(block, radius, M::NarrowRange, 0, M::OpaqueSurface)), none);
     row(scene.c_str(), "vtkOpenGLFluidMapper", "transparent narrow-range", 3, time(vtkFluid(block, radius, 3, true)), none);
     row(scene.c_str(), "vtkOpenGLFluidMapper", "opaque narrow-range", 3, time(vtkFluid(block, radius, 3, false)), none);

@@ -3,11 +3,14 @@
 #ifndef ParaFluid_FluidScenes_h
 #define ParaFluid_FluidScenes_h
 
+#include "vtkFloatArray.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace parafluid_test
@@ -89,6 +92,29 @@ inline vtkSmartPointer<vtkPolyData> damBlock(long count, double& spacing)
   auto data = vtkSmartPointer<vtkPolyData>::New();
   data->SetPoints(points);
   return data;
+}
+
+/// Gives particles a `velocity` (a swirl about the vertical axis through x = 1, y = 0.5, at
+/// 1 rad/s, slowing with height to rest at z = 1) and a `density` [kg/m^3] rising with depth,
+/// for the brush strokes.
+inline void addSwirl(vtkPolyData* data)
+{
+  vtkNew<vtkFloatArray> velocity, density;
+  velocity->SetName("velocity");
+  velocity->SetNumberOfComponents(3);
+  velocity->SetNumberOfTuples(data->GetNumberOfPoints());
+  density->SetName("density");
+  density->SetNumberOfTuples(data->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    data->GetPoint(i, x);
+    const double slow = std::max(0.0, 1.0 - x[2]);
+    velocity->SetTuple3(i, -(x[1] - 0.5) * slow, (x[0] - 1.0) * slow, 0.0);
+    density->SetValue(i, static_cast<float>(1000.0 + 5.0 * (1.0 - x[2]))); // rises with depth
+  }
+  data->GetPointData()->AddArray(velocity);
+  data->GetPointData()->AddArray(density);
 }
 }
 

@@ -1,8 +1,9 @@
 //=========================================================================
-// Separable Gaussian blur of the additive thickness splats (world length of fluid along each
-// pixel's ray) at reduced resolution, one 1D pass along stepDir with half-width radius pixels.
+// Separable Gaussian blur, one 1D pass along stepDir with half-width radius pixels, of all four
+// channels: the thickness splats (world length of fluid along each pixel's ray, at reduced
+// resolution) and the toon structure tensor.
 //=========================================================================
-uniform sampler2D thicknessTex;
+uniform sampler2D sourceTex;
 uniform ivec2 stepDir;
 uniform int radius;
 
@@ -13,7 +14,7 @@ void main()
   ivec2 p = targetPixel();
   float sigma = 0.5 * float(radius);
   float inv2s2 = 0.5 / (sigma * sigma);
-  float sum = 0.0;
+  vec4 sum = vec4(0.0);
   float weights = 0.0;
   for (int i = -radius; i <= radius; ++i)
   {
@@ -22,8 +23,8 @@ void main()
     weights += w;
     if (all(greaterThanEqual(q, rectMin)) && all(lessThan(q, rectMax)))
     {
-      sum += w * texelFetch(thicknessTex, q, 0).r;
+      sum += w * texelFetch(sourceTex, q, 0);
     }
   }
-  gl_FragData[0] = vec4(sum / weights, 0.0, 0.0, 0.0);
+  gl_FragData[0] = sum / weights;
 }
