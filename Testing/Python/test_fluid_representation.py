@@ -1,5 +1,6 @@
 """The Screen-Space Fluid representation in ParaView (rendered under Xvfb): chosen like any
-representation; zero particles, one particle, a non-point input (drawn as its points, with a
+representation; Toon Fluid and Brush Stroke Fluid on the same ball (bands, warnings for a
+missing or wrong velocity array, zero and NaN particles); zero particles, one particle, a non-point input (drawn as its points, with a
 warning), two fluids in one view, a window resize, the camera inside the fluid, all without an
 error; colouring by an array changes the picture; the depth of the fluid hides and is hidden by
 opaque geometry."""
@@ -162,6 +163,43 @@ view.CameraPosition = [0.0, -0.1, 0.0]
 pixels()
 view.CameraPosition = [0.0, -3.0, 0.0]
 pftest.check(messages() == "", "resize and camera inside the fluid: no error")
+
+# Toon Fluid and Brush Stroke Fluid: the same ball, their own properties, no error; the brush
+# strokes without a velocity array say so and still paint (fixed strokes only); zero particles
+# and a NaN particle in them are harmless.
+for kind in ("Toon Fluid", "Brush Stroke Fluid"):
+    display.SetRepresentationType(kind)
+    image = pixels()
+    text = messages()
+    pftest.check(fluid_pixels(image) > 0.8 * covered, "%s draws the ball" % kind)
+    if kind == "Toon Fluid":
+        pftest.check(text == "", "toon: no error (%s)" % text[:300])
+        display.ToonBands = 2
+        two = pixels()
+        display.ToonBands = 8
+        eight = pixels()
+        pftest.check(np.abs(two - eight).max() > 20, "toon: the number of bands changes the picture")
+        pftest.check(len(np.unique(two.reshape(-1, 3), axis=0)) < len(np.unique(eight.reshape(-1, 3), axis=0)),
+                     "toon: more bands, more colours")
+        pftest.check(messages() == "", "toon bands: no error")
+    else:
+        pftest.check("velocity" in text and "still" in text, "brush without velocity: a warning (%s)" % text[:300])
+        pftest.check(np.abs(image - first).max() > 20, "brush strokes change the picture")
+        display.BrushVelocityArray = "height"  # one component: not a velocity
+        pixels()
+        text = messages()
+        pftest.check("'height'" in text, "brush with a 1-component velocity array: a warning (%s)" % text[:300])
+for script in ("P = np.zeros((0, 3))", "P = np.array([[0.0, -1.0, 0.0], [np.nan, 0.0, 0.0], [0.1, -1.0, 0.0]])"):
+    odd = particles(script)
+    oddDisplay = Show(odd, view)
+    oddDisplay.SetRepresentationType("Brush Stroke Fluid")
+    oddDisplay.BrushParticleRadius = 0.1
+    pixels()
+    text = messages()
+    pftest.check("Error" not in text, "brush strokes on %s: no error (%s)" % (script, text[:300]))
+    Hide(odd, view)
+display.SetRepresentationType("Screen-Space Fluid")
+messages()
 
 # Zero particles, a single particle.
 no_particles = particles("P = np.zeros((0, 3))")
