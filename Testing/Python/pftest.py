@@ -26,6 +26,54 @@ def load(namespace):
     LoadPlugin(plugin_path(), ns=namespace)
 
 
+# ProgrammableSource scripts of particle scenes: particle_script(body) runs `body` with numpy
+# imported as np; the body sets P (n x 3 positions) and may set `arrays` (point array name ->
+# values per particle) and `h` (the spacing, stored as particle_spacing). The output gets the
+# points, one vertex cell per particle and an int64 `id`, as the readers give.
+_PARTICLE_HEAD = "import numpy as np\narrays = {}\n"
+_PARTICLE_TAIL = """
+from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray
+from vtkmodules.util.numpy_support import numpy_to_vtk
+out = self.GetPolyDataOutput()
+pts = vtkPoints()
+pts.SetData(numpy_to_vtk(np.ascontiguousarray(P, dtype=np.float32), deep=True))
+out.SetPoints(pts)
+verts = vtkCellArray()
+verts.SetData(numpy_to_vtk(np.arange(len(P) + 1, dtype=np.int64), deep=True),
+              numpy_to_vtk(np.arange(len(P), dtype=np.int64), deep=True))
+out.SetVerts(verts)
+arrays["id"] = np.arange(len(P), dtype=np.int64)
+for name, values in arrays.items():
+    array = numpy_to_vtk(np.ascontiguousarray(values if values.dtype == np.int64 else values.astype(np.float32)), deep=True)
+    array.SetName(name)
+    out.GetPointData().AddArray(array)
+if "h" in dir():
+    spacing = numpy_to_vtk(np.array([h]), deep=True)
+    spacing.SetName("particle_spacing")
+    out.GetFieldData().AddArray(spacing)
+"""
+
+
+def particle_script(body):
+    return _PARTICLE_HEAD + body + _PARTICLE_TAIL
+
+
+# A collapsing water column (0.6 x 0.6 x 0.8 m, spacing 0.04 m) whose foot has slid out along +x,
+# and a falling drop: P, and the particle counts of the column (c) and the foot (f).
+DAM_BREAK_SCENE = """
+h = 0.04
+g = lambda a, b: np.arange(a + h / 2, b, h)
+column = np.stack(np.meshgrid(g(0.0, 0.6), g(0.0, 0.6), g(0.0, 0.8), indexing='ij'), -1).reshape(-1, 3)
+foot = np.stack(np.meshgrid(g(0.6, 1.3), g(0.0, 0.6), g(0.0, 0.12), indexing='ij'), -1).reshape(-1, 3)
+b = np.arange(-0.16, 0.17, h)
+B = np.stack(np.meshgrid(b, b, b, indexing='ij'), -1).reshape(-1, 3)
+drop = B[np.linalg.norm(B, axis=1) <= 0.16] + np.array([1.0, 0.3, 0.6])
+P = np.concatenate([column, foot, drop])
+c, f = len(column), len(foot)
+"""
+
+
 def fetch(proxy, time=None):
     if time is not None:
         proxy.UpdatePipeline(time)

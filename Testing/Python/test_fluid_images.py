@@ -15,38 +15,13 @@ pftest.load(globals())
 out = pftest.scratch_dir()
 SIZE = [400, 300]
 
-POINTS = """
-import numpy as np
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.util.numpy_support import numpy_to_vtk
-h = 0.04
-g = lambda a, b: np.arange(a + h / 2, b, h)
-X, Y, Z = np.meshgrid(g(0.0, 0.6), g(0.0, 0.6), g(0.0, 0.8), indexing='ij')
-column = np.stack([X.ravel(), Y.ravel(), Z.ravel()], 1)
-# the column's foot already sliding out along +x
-foot = np.stack(np.meshgrid(g(0.6, 1.3), g(0.0, 0.6), g(0.0, 0.12), indexing='ij'), -1).reshape(-1, 3)
-b = np.arange(-0.16, 0.17, h)
-B = np.stack(np.meshgrid(b, b, b, indexing='ij'), -1).reshape(-1, 3)
-drop = B[np.linalg.norm(B, axis=1) <= 0.16] + np.array([1.0, 0.3, 0.6])
-P = np.concatenate([column, foot, drop])
-out = self.GetPolyDataOutput()
-pts = vtkPoints()
-pts.SetData(numpy_to_vtk(np.ascontiguousarray(P, dtype=np.float32), deep=True))
-out.SetPoints(pts)
-"""
+POINTS = pftest.particle_script(pftest.DAM_BREAK_SCENE)
 
-BALL = """
-import numpy as np
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.util.numpy_support import numpy_to_vtk
+BALL = pftest.particle_script("""
 g = (np.arange(24) - 11.5) * 0.04
 P = np.stack(np.meshgrid(g, g, g, indexing='ij'), -1).reshape(-1, 3)
 P = P[np.linalg.norm(P, axis=1) <= 0.45]
-out = self.GetPolyDataOutput()
-pts = vtkPoints()
-pts.SetData(numpy_to_vtk(np.ascontiguousarray(P, dtype=np.float32), deep=True))
-out.SetPoints(pts)
-"""
+""")
 
 
 def fluid(view, script, mode):

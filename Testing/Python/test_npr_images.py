@@ -21,23 +21,10 @@ pftest.load(globals())
 out = pftest.scratch_dir()
 SIZE = [400, 300]
 
-POINTS = """
-import numpy as np
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.util.numpy_support import numpy_to_vtk
-h = 0.04
-g = lambda a, b: np.arange(a + h / 2, b, h)
-column = np.stack(np.meshgrid(g(0.0, 0.6), g(0.0, 0.6), g(0.0, 0.8), indexing='ij'), -1).reshape(-1, 3)
-foot = np.stack(np.meshgrid(g(0.6, 1.3), g(0.0, 0.6), g(0.0, 0.12), indexing='ij'), -1).reshape(-1, 3)
-b = np.arange(-0.16, 0.17, h)
-B = np.stack(np.meshgrid(b, b, b, indexing='ij'), -1).reshape(-1, 3)
-drop = B[np.linalg.norm(B, axis=1) <= 0.16] + np.array([1.0, 0.3, 0.6])
-P = np.concatenate([column, foot, drop])
+POINTS = pftest.particle_script(pftest.DAM_BREAK_SCENE + """
 V = np.zeros_like(P)
 # The column slumps slowly; its foot streams out faster the further it has gone, turning up at the
 # front; the drop falls.
-c = len(column)
-f = len(foot)
 V[:c, 0] = 0.3 * P[:c, 0] * (0.8 - P[:c, 2])
 V[:c, 2] = -0.2 * P[:c, 2]
 V[c:c + f, 0] = 1.0 + 1.5 * (P[c:c + f, 0] - 0.6)
@@ -45,27 +32,8 @@ V[c:c + f, 2] = 0.8 * (P[c:c + f, 0] - 0.6) ** 2
 V[c + f:, 2] = -2.0
 rho = 1000.0 + 9.81 * np.maximum(0.8 - P[:, 2], 0.0) * 4.0
 rho[c:] = 1000.0 + 9.81 * np.maximum(0.12 - P[c:, 2], 0.0) * 4.0
-out = self.GetPolyDataOutput()
-pts = vtkPoints()
-pts.SetData(numpy_to_vtk(np.ascontiguousarray(P, dtype=np.float32), deep=True))
-out.SetPoints(pts)
-# one vertex cell per particle, as the readers give
-from vtkmodules.vtkCommonDataModel import vtkCellArray
-verts = vtkCellArray()
-verts.SetData(numpy_to_vtk(np.arange(len(P) + 1, dtype=np.int64), deep=True),
-              numpy_to_vtk(np.arange(len(P), dtype=np.int64), deep=True))
-out.SetVerts(verts)
-for name, a in (("velocity", V), ("density", rho)):
-    arr = numpy_to_vtk(np.ascontiguousarray(a, dtype=np.float32), deep=True)
-    arr.SetName(name)
-    out.GetPointData().AddArray(arr)
-ids = numpy_to_vtk(np.arange(len(P), dtype=np.int64), deep=True)
-ids.SetName("id")
-out.GetPointData().AddArray(ids)
-fd = numpy_to_vtk(np.array([h]), deep=True)
-fd.SetName("particle_spacing")
-out.GetFieldData().AddArray(fd)
-"""
+arrays = {"velocity": V, "density": rho}
+""")
 
 
 def particles():
@@ -134,29 +102,14 @@ def flow_lines(view):
     water.PointSize = 2
 
 
-RIDGE = """
-import numpy as np
-from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray
-from vtkmodules.util.numpy_support import numpy_to_vtk
+RIDGE = pftest.particle_script("""
 h = 0.03
 g = lambda a, b: np.arange(a + h / 2, b, h)
 P = np.stack(np.meshgrid(g(0.0, 1.5), g(0.0, 0.9), g(0.0, 0.5), indexing='ij'), -1).reshape(-1, 3)
 # a sheet of water with a sharp-crested ridge across it
 crest = 0.12 + 0.33 * np.maximum(0.0, 1.0 - np.abs(P[:, 0] - 0.75) / 0.3) ** 2
 P = P[P[:, 2] < crest]
-out = self.GetPolyDataOutput()
-pts = vtkPoints()
-pts.SetData(numpy_to_vtk(np.ascontiguousarray(P, dtype=np.float32), deep=True))
-out.SetPoints(pts)
-verts = vtkCellArray()
-verts.SetData(numpy_to_vtk(np.arange(len(P) + 1, dtype=np.int64), deep=True),
-              numpy_to_vtk(np.arange(len(P), dtype=np.int64), deep=True))
-out.SetVerts(verts)
-ids = numpy_to_vtk(np.arange(len(P), dtype=np.int64), deep=True)
-ids.SetName("id")
-out.GetPointData().AddArray(ids)
-"""
+""")
 RIDGE_CAMERA = ([0.2, -1.6, 1.1], [0.75, 0.45, 0.1])
 
 
