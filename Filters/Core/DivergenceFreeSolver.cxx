@@ -307,6 +307,7 @@ void SPHSolver::stepDFSPH(double remaining)
   const double dt = this->chooseTimeStep(remaining);
   const auto h = static_cast<float>(dt);
   this->kick(h);
+  this->applyWallFriction(h);
   this->Last.densityIterations = this->solveDensity(h);
   this->drift(h);
   this->sortByCell();

@@ -22,8 +22,9 @@ ParticleLattice fillBoxWithLattice(const std::array<double, 6>& bounds, double s
     {
       throw std::invalid_argument("particle lattice: bounds must give min <= max on every axis");
     }
-    // The small tolerance keeps a box of exactly k spacings from losing its last layer to rounding.
-    const double layers = std::floor((hi - lo) / spacing + 1e-9);
+    // The tolerance keeps a box of exactly k spacings from losing its last layer to rounding; it is
+    // wide enough for sizes that passed through single precision (relative error 6e-8 each).
+    const double layers = std::floor((hi - lo) / spacing + 1e-5);
     total *= layers;
     lattice.counts[a] = static_cast<int>(std::min(layers, 2e9));
   }

@@ -24,6 +24,7 @@ void SPHSolver::stepWCSPH(double dt)
   this->computeDensityAndPressure();
   this->computeAccelerations(true);
   this->kick(0.5f * h);
+  this->applyWallFriction(h);
   this->Last.timeStep = dt;
   this->Time += dt;
 }
@@ -69,7 +70,8 @@ struct PairConstants
 
 struct PairSums
 {
-  float force[3] = { 0, 0, 0 }; // pressure + viscosity, per unit of the query's density
+  float force[3] = { 0, 0, 0 };   // pressure, per unit of the query's density
+  float viscous[3] = { 0, 0, 0 }; // viscosity, per unit of the query's density
   float normal[3] = { 0, 0, 0 }; // Σ (h² − r²)² r_ij / rho_j       (colour gradient, unscaled)
   float laplacian = 0.0f;        // Σ (h² − r²)(3h² − 7r²) / rho_j  (colour Laplacian, unscaled)
 };
@@ -98,8 +100,9 @@ PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float 
   const float *pp = c.channel[PRESSURE].data(), *pinv = c.channel[INVERSE_DENSITY].data();
   const float* r2 = c.distanceSquared.data();
   const std::uint32_t* hits = c.hits.data();
-  float fx = 0.0f, fy = 0.0f, fz = 0.0f, nx = 0.0f, ny = 0.0f, nz = 0.0f, lap = 0.0f;
-#pragma omp simd reduction(+ : fx, fy, fz, nx, ny, nz, lap)
+  float fx = 0.0f, fy = 0.0f, fz = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f;
+  float nx = 0.0f, ny = 0.0f, nz = 0.0f, lap = 0.0f;
+#pragma omp simd reduction(+ : fx, fy, fz, gx, gy, gz, nx, ny, nz, lap)
   for (std::uint32_t n = 0; n < count; ++n)
   {
     const std::uint32_t j = hits[n];
@@ -119,9 +122,9 @@ PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float 
       if constexpr (Viscosity)
       {
         const float pair = k.viscosityScale * pinv[j] * w;
-        fx += pair * (pvx[j] - v[0]);
-        fy += pair * (pvy[j] - v[1]);
-        fz += pair * (pvz[j] - v[2]);
+        gx += pair * (pvx[j] - v[0]);
+        gy += pair * (pvy[j] - v[1]);
+        gz += pair * (pvz[j] - v[2]);
       }
     }
     if constexpr (Tension)
@@ -138,6 +141,9 @@ PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float 
   sums.force[0] = fx;
   sums.force[1] = fy;
   sums.force[2] = fz;
+  sums.viscous[0] = gx;
+  sums.viscous[1] = gy;
+  sums.viscous[2] = gz;
   sums.normal[0] = nx;
   sums.normal[1] = ny;
   sums.normal[2] = nz;
@@ -175,27 +181,30 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
       const float pi = s.pressure[i];
       PairSums sum = pairSums<Pressure, Viscosity, Tension>(candidates, position, velocity, pi, k);
       // Mirror images: the pair term of x_i with R x_j equals R times the term of R x_i with x_j
-      // (R is a reflection, its own inverse), velocities likewise; scalars are unchanged.
-      const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, k.h);
+      // (R is a reflection, its own inverse); scalars are unchanged. An image's velocity is S v_j
+      // (S diagonal, +-1): sum w (S v_j - v_i) = S sum w (v_j - S v_i), so the query moves with
+      // S v_i and the viscous sum maps back with S.
+      const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, k.h, p.noSlipWalls());
       for (int m = 0; m < mirrors.count; ++m)
       {
         float image[3], imageVelocity[3];
         for (int a = 0; a < 3; ++a)
         {
           image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
-          imageVelocity[a] = mirrors.scale[m][a] * velocity[a];
+          imageVelocity[a] = mirrors.velocityScale[m][a] * velocity[a];
         }
         const PairSums g = pairSums<Pressure, Viscosity, Tension>(candidates, image, imageVelocity, pi, k);
         for (int a = 0; a < 3; ++a)
         {
           sum.force[a] += mirrors.scale[m][a] * g.force[a];
+          sum.viscous[a] += mirrors.velocityScale[m][a] * g.viscous[a];
           sum.normal[a] += mirrors.scale[m][a] * g.normal[a];
         }
         sum.laplacian += g.laplacian;
       }
       const float inv = inverseDensity[i];
-      float a[3] = { sum.force[0] * inv + p.gravity[0], sum.force[1] * inv + p.gravity[1],
-        sum.force[2] * inv + p.gravity[2] };
+      float a[3] = { (sum.force[0] + sum.viscous[0]) * inv + p.gravity[0],
+        (sum.force[1] + sum.viscous[1]) * inv + p.gravity[1], (sum.force[2] + sum.viscous[2]) * inv + p.gravity[2] };
       if constexpr (Tension)
       {
         // Müller's surface force density -sigma lap(c) n / |n|, only where |n| marks a surface.

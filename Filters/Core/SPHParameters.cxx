@@ -90,6 +90,11 @@ std::string SPHParameters::validate() const
   {
     return "WallRestitution must lie in [0, 1], got " + std::to_string(wallRestitution);
   }
+  if (!positiveFinite(wallKinematicViscosity) || wallKinematicViscosity > 1.0f)
+  {
+    return "WallKinematicViscosity must lie in (0, 1] m^2/s (water: 1e-6), got " +
+      std::to_string(wallKinematicViscosity);
+  }
   if (!std::isfinite(boundaryDamping) || boundaryDamping < 0.0f || boundaryDamping > 1.0f)
   {
     return "BoundaryDamping must lie in [0, 1], got " + std::to_string(boundaryDamping);

@@ -69,11 +69,11 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial, std
   // Particles that start outside the domain are reflected inside, as the walls would do.
   this->drift(0.0f);
   this->sortByCell();
+  const SPHParameters& p = this->Parameters;
+  this->ParticleSpacing = latticeSpacingForMass(p.particleMass, p.smoothingLength, p.restDensity, p.densityKernel());
   if (this->Parameters.pressureSolver == PressureSolver::DFSPH)
   {
-    const SPHParameters& p = this->Parameters;
-    const float spacing = latticeSpacingForMass(p.particleMass, p.smoothingLength, p.restDensity, p.densityKernel());
-    this->GradientCorrection = latticeGradientCorrection(spacing, p.smoothingLength, p.densityKernel());
+    this->GradientCorrection = latticeGradientCorrection(this->ParticleSpacing, p.smoothingLength, p.densityKernel());
     this->DensityStiffness.assign(n, 0.0f);
     this->DivergenceStiffness.assign(n, 0.0f);
     this->computeDensityAndFactor();

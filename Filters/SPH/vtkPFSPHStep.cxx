@@ -178,6 +178,14 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
     p.densityTolerance = static_cast<float>(this->DensityTolerance);
     p.maxPressureIterations = this->MaxPressureIterations;
     p.wallRestitution = static_cast<float>(this->WallRestitution);
+    p.wallFriction = this->WallFriction == 2 ? parafluid::sph::WallFriction::LogLaw
+      : this->WallFriction == 1              ? parafluid::sph::WallFriction::NoSlip
+                                             : parafluid::sph::WallFriction::FreeSlip;
+    for (int k = 0; k < 6; ++k)
+    {
+      p.frictionWalls[k] = this->FrictionWalls[k] != 0;
+    }
+    p.wallKinematicViscosity = static_cast<float>(this->WallKinematicViscosity);
     p.boundaryDamping = static_cast<float>(this->BoundaryDamping);
     for (int a = 0; a < 3; ++a)
     {

@@ -101,6 +101,16 @@ public:
   /// Fraction of the normal velocity kept when a particle bounces off a wall (0..1).
   vtkSetClampMacro(WallRestitution, double, 0.0, 1.0);
   vtkGetMacro(WallRestitution, double);
+  /// Tangential stress of the walls: 0 free-slip, 1 no-slip (through the viscosity), 2 the
+  /// turbulent law of the wall with WallKinematicViscosity (see parafluid/SPHParameters.h).
+  vtkSetClampMacro(WallFriction, int, 0, 2);
+  vtkGetMacro(WallFriction, int);
+  /// Which walls WallFriction acts on (xmin xmax ymin ymax zmin zmax; 1 = on, 0 = free-slip).
+  vtkSetVector6Macro(FrictionWalls, int);
+  vtkGetVector6Macro(FrictionWalls, int);
+  /// [m^2/s] molecular kinematic viscosity for the law of the wall (water at 20 °C: 1e-6).
+  vtkSetMacro(WallKinematicViscosity, double);
+  vtkGetMacro(WallKinematicViscosity, double);
 
   /// Number of SPH steps taken by the last update (0 when it was served from the cache).
   vtkGetMacro(StepsTakenLastUpdate, vtkIdType);
@@ -141,6 +151,9 @@ private:
   double DomainBounds[6] = { 0, 0, 0, 0, 0, 0 };
   double ParticleMass = 0.0;
   double WallRestitution = 0.5;
+  int WallFriction = 0;
+  int FrictionWalls[6] = { 1, 1, 1, 1, 1, 1 };
+  double WallKinematicViscosity = 1.0e-6;
 
   double StartTime = 0.0;
   bool InputHasTime = false;

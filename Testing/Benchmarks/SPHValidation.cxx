@@ -5,7 +5,8 @@
 // Writes CSV files into the directory given as first argument; plot_validation.py draws them.
 // Usage: ParaFluidSPHValidation <output-directory> [--quick] [--scene all|hydrostatic|dambreak]
 //        [--solver WCSPH|DFSPH] [--resolutions 10,20,40] [--viscosity 3.5] [--tolerance 0.001]
-//        [--cfl 0.2] [--max-dt 0.005] [--stiffness 1000]
+//        [--cfl 0.2] [--max-dt 0.005] [--stiffness 1000] [--width 0.05715]
+//        [--walls log-law|free-slip|no-slip]
 #include "parafluid/ParticleLattice.h"
 #include "parafluid/SPHParameters.h"
 #include "parafluid/SPHSolver.h"
@@ -40,6 +41,13 @@ float gDensityTolerance = 0.001f; // --tolerance; the filter's default (0.1 %)
 float gGasStiffness = 1000.0f;  // --stiffness [m^2/s^2], WCSPH's k (c = sqrt(k))
 float gCFLNumber = SPHParameters().cflNumber;     // --cfl; smaller for a time-step convergence study
 float gMaxTimeStep = SPHParameters().maxTimeStep; // --max-dt [s]
+// --width a [m]: Martin & Moyce's column, 2.25 in. The size matters, not only the dimensionless
+// form: the default viscosity (3.5 Pa s, an artificial one) sets a Reynolds number that grows as
+// a^1.5, so a column of another size is a different flow from the experiment's.
+float gColumnWidth = 0.05715f;
+// --walls free-slip|no-slip|log-law: the tank's floor and end walls; the experiment's were smooth
+// glass under water, whose boundary layer the law of the wall models (see TurbulentWallLaw.h).
+WallFriction gWallFriction = WallFriction::LogLaw;
 
 SPHParameters water(PressureSolver solver, float spacing, const std::array<float, 6>& domain)
 {
@@ -51,6 +59,9 @@ SPHParameters water(PressureSolver solver, float spacing, const std::array<float
   p.viscosity = gViscosity;
   p.gravity = { 0.0f, 0.0f, -kGravity };
   p.domainBounds = domain;
+  // The y walls stay free-slip in every scene: they are the symmetry planes of a two-dimensional slab.
+  p.wallFriction = gWallFriction;
+  p.frictionWalls = { true, true, false, false, true, true };
   p.densityTolerance = gDensityTolerance;
   p.cflNumber = gCFLNumber;
   p.maxTimeStep = gMaxTimeStep;
@@ -152,11 +163,11 @@ struct DamBreak
   double densityIterations = 0.0, divergenceIterations = 0.0;
 };
 
-/// Column a = 0.1 m wide and 2a high in a tank 6a long. The front is the largest x of any particle
+/// Column a wide (--width) and 2a high in a tank 6a long. The front is the largest x of any particle
 /// plus half a spacing (the edge of the particle's share of volume).
 DamBreak damBreak(PressureSolver solver, int across, double endT, std::ofstream& curve)
 {
-  const float a = 0.1f;
+  const float a = gColumnWidth;
   const float d = a / static_cast<float>(across);
   const std::array<float, 6> domain = { 0.0f, 6.0f * a, 0.0f, 4 * d, 0.0f, 3.0f * a };
   SPHParameters p = water(solver, d, domain);
@@ -216,13 +227,18 @@ DamBreak damBreak(PressureSolver solver, int across, double endT, std::ofstream&
   r.meanError /= std::max(1, count);
   return r;
 }
+const char* const kUsage =
+  "usage: ParaFluidSPHValidation <output-directory> [--quick] [--scene all|hydrostatic|dambreak]\n"
+  "         [--solver WCSPH|DFSPH] [--resolutions 10,20,40] [--viscosity 3.5] [--tolerance 0.001]\n"
+  "         [--cfl 0.2] [--max-dt 0.005] [--stiffness 1000] [--width 0.05715]\n"
+  "         [--walls log-law|free-slip|no-slip]\n";
 } // namespace
 
 int main(int argc, char** argv)
 {
   if (argc < 2)
   {
-    std::cerr << "usage: " << argv[0] << " <output-directory> [--quick]\n";
+    std::cerr << kUsage;
     return 2;
   }
   const std::string dir = argv[1];
@@ -253,6 +269,22 @@ int main(int argc, char** argv)
     {
       gMaxTimeStep = std::stof(argv[++k]);
     }
+    else if (option == "--width" && k + 1 < argc)
+    {
+      gColumnWidth = std::stof(argv[++k]);
+    }
+    else if (option == "--walls" && k + 1 < argc)
+    {
+      const std::string v = argv[++k];
+      if (v != "free-slip" && v != "no-slip" && v != "log-law")
+      {
+        std::cerr << "--walls takes free-slip, no-slip or log-law\n";
+        return 2;
+      }
+      gWallFriction = v == "free-slip" ? WallFriction::FreeSlip
+        : v == "no-slip"               ? WallFriction::NoSlip
+                                       : WallFriction::LogLaw;
+    }
     else if (option == "--tolerance" && k + 1 < argc)
     {
       gDensityTolerance = std::stof(argv[++k]);
@@ -275,6 +307,11 @@ int main(int argc, char** argv)
         resolutions.push_back(static_cast<int>(std::strtol(c, &end, 10)));
         c = *end == ',' ? end + 1 : end;
       }
+    }
+    else
+    {
+      std::cerr << "unknown option " << option << "\n" << kUsage;
+      return 2;
     }
   }
   if (resolutions.empty())

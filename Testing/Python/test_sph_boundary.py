@@ -1,6 +1,7 @@
 """SPH Step with a Boundary surface and the DFSPH solver, through real ParaView pipelines: water
 poured on a sphere never gets inside it; optional arrays appear only when asked; a Boundary without
-polygons is refused with a clear message."""
+polygons is refused with a clear message; the WallFriction choices slow a collapsing column on the
+walls they are set for."""
 import numpy as np
 from paraview.simple import *
 import pftest
@@ -39,4 +40,24 @@ line = SPHStep(Input=block, Boundary=Line(), NumberOfOutputs=1)
 catcher = pftest.ErrorCatcher(line)
 line.UpdatePipeline(line.TimestepValues[-1])
 pftest.check("polygons" in catcher.text(), "Boundary without polygons: %r" % catcher.text())
+
+# Wall friction: a column collapsing along the floor of a slab (y walls stay free-slip).
+def front(**walls):
+    column = ParticleBlock(Spacing=0.01, BlockBounds=[0, 0.05, 0, 0.02, 0, 0.1], DomainBounds=[0, 0.5, 0, 0.02, 0, 0.2])
+    step = SPHStep(Input=column, PressureSolver="DFSPH", Viscosity=20.0, OutputInterval=0.15, NumberOfOutputs=1,
+                   OutputPressure=0, **walls)
+    return pftest.points(pftest.fetch(step, step.TimestepValues[-1]))[:, 0].max()
+
+default = SPHStep(Input=block).WallFriction
+pftest.check(default == "Free-slip", "walls should default to free-slip, not %r" % default)
+free = front()
+sticky = front(WallFriction="No-slip (viscous)", FrictionWalls=[0, 0, 0, 0, 1, 0])
+sticky_elsewhere = front(WallFriction="No-slip (viscous)", FrictionWalls=[0, 1, 0, 0, 0, 1])
+turbulent = front(WallFriction="Turbulent (law of the wall)", FrictionWalls=[1, 1, 0, 0, 1, 1])
+print("front after 0.15 s: free-slip %.4f, no-slip floor %.4f, no-slip far walls %.4f, law of the wall %.4f m"
+      % (free, sticky, sticky_elsewhere, turbulent))
+pftest.check(sticky < free - 0.02, "a no-slip floor should hold the surge back: %.4f against %.4f m" % (sticky, free))
+pftest.check(abs(sticky_elsewhere - free) < 1e-6, "no-slip on walls the water never reaches changed the front")
+pftest.check(free - 0.01 < turbulent < free, "the law of the wall should brake water a little: %.4f against %.4f m"
+             % (turbulent, free))
 print("sph boundary: ok")

@@ -14,6 +14,13 @@ enum class PressureSolver
   DFSPH  // divergence-free SPH: density and divergence solves, incompressible within a tolerance
 };
 
+enum class WallFriction
+{
+  FreeSlip,
+  NoSlip,
+  LogLaw
+};
+
 struct SPHParameters
 {
   PressureSolver pressureSolver = PressureSolver::WCSPH;
@@ -31,6 +38,19 @@ struct SPHParameters
   std::array<float, 3> gravity = { 0.0f, 0.0f, -9.81f };               // [m/s^2]
   std::array<float, 6> domainBounds = { 0.f, 1.f, 0.f, 1.f, 0.f, 1.f }; // xmin,xmax,ymin,ymax,zmin,zmax [m]
   float wallRestitution = 0.5f;   // fraction of the normal velocity kept when bouncing off a wall
+  // Tangential stress of the box walls on the fluid (the normal condition is the same for all):
+  //  - FreeSlip: none; the fluid slides along the walls;
+  //  - NoSlip: the fluid sticks, through the viscous term with reversed-velocity wall images (see
+  //    WallMirrors.h). Right for a fluid whose viscosity is resolved (honey, lava, slow flow); with
+  //    the default artificial 3.5 Pa s it brakes water about as much as a 3500 times thicker liquid;
+  //  - LogLaw: the turbulent law of the wall (TurbulentWallLaw.h) with the fluid's molecular
+  //    kinematic viscosity wallKinematicViscosity, applied to the layer of particles within one
+  //    spacing of a wall: the unresolved boundary layer of real water.
+  WallFriction wallFriction = WallFriction::FreeSlip;
+  // Which walls the friction acts on, in the order xmin, xmax, ymin, ymax, zmin, zmax (a symmetry
+  // plane, for example the side walls of a slab that stands in for a 2-D flow, stays free-slip).
+  std::array<bool, 6> frictionWalls = { true, true, true, true, true, true };
+  float wallKinematicViscosity = 1.0e-6f; // nu [m^2/s] for LogLaw; water at 20 °C is 1.0e-6
   float boundaryDamping = 0.5f;   // fraction of the normal velocity lost when bouncing off a boundary mesh
 
   // Time stepping. With adaptiveTimeStep the step is the smallest of the CFL condition
@@ -58,6 +78,16 @@ struct SPHParameters
   DensityKernel densityKernel() const
   {
     return pressureSolver == PressureSolver::DFSPH ? DensityKernel::CubicSpline : DensityKernel::Poly6;
+  }
+  /// The walls whose images carry the no-slip velocity (all false unless wallFriction is NoSlip).
+  std::array<bool, 6> noSlipWalls() const
+  {
+    std::array<bool, 6> walls = {};
+    if (wallFriction == WallFriction::NoSlip)
+    {
+      walls = frictionWalls;
+    }
+    return walls;
   }
   /// Empty when usable, else a sentence naming the first bad parameter.
   std::string validate() const;

@@ -81,6 +81,8 @@ private:
   double maxAcceleration() const;
   void kick(float dt);
   void drift(float dt);
+  /// The LogLaw wall shear over dt, implicit in the tangential velocity (WallFriction.cxx).
+  void applyWallFriction(float dt);
   void measureCompression();
 
   // WCSPH (SPHForces.cxx)
@@ -115,6 +117,7 @@ private:
   std::vector<std::uint16_t> NeighbourCount; // DFSPH: neighbours incl. images, for the surface test
   std::vector<float> PressureImpulse; // sum of p dt over the steps of advance() [Pa s]
   float GradientCorrection = 1.0f; // DFSPH pressure forces, see latticeGradientCorrection
+  float ParticleSpacing = 0.0f;    // [m] edge of the cube a particle fills at rest density
   std::int64_t Steps = 0;
   double Time = 0.0;
   StepStatistics Last;
