@@ -70,8 +70,8 @@ struct PairConstants
 
 struct PairSums
 {
-  float force[3] = { 0, 0, 0 };   // pressure, per unit of the query's density
-  float viscous[3] = { 0, 0, 0 }; // viscosity, per unit of the query's density
+  float force[3] = { 0, 0, 0 };   // pressure (+ viscosity), per unit of the query's density
+  float viscous[3] = { 0, 0, 0 }; // viscosity when summed apart, per unit of the query's density
   float normal[3] = { 0, 0, 0 }; // Σ (h² − r²)² r_ij / rho_j       (colour gradient, unscaled)
   float laplacian = 0.0f;        // Σ (h² − r²)(3h² − 7r²) / rho_j  (colour Laplacian, unscaled)
 };
@@ -91,7 +91,9 @@ enum Channel
 ///   viscosity:  Σ_j V / rho_j (h − r) (v_j − v)
 ///   colour field gradient and Laplacian (poly6, without constants).
 /// Each term is compiled in only when its flag is set, so a scene without it does not pay for it.
-template <bool Pressure, bool Viscosity, bool Tension>
+/// The viscous sum goes into `force` unless SeparateViscous (no-slip wall images map it back
+/// differently from the pressure sum).
+template <bool Pressure, bool Viscosity, bool Tension, bool SeparateViscous = false>
 PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float pi, const PairConstants& k)
 {
   const std::uint32_t count = c.findHits(q, k.h2);
@@ -122,9 +124,18 @@ PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float 
       if constexpr (Viscosity)
       {
         const float pair = k.viscosityScale * pinv[j] * w;
-        gx += pair * (pvx[j] - v[0]);
-        gy += pair * (pvy[j] - v[1]);
-        gz += pair * (pvz[j] - v[2]);
+        if constexpr (SeparateViscous)
+        {
+          gx += pair * (pvx[j] - v[0]);
+          gy += pair * (pvy[j] - v[1]);
+          gz += pair * (pvz[j] - v[2]);
+        }
+        else
+        {
+          fx += pair * (pvx[j] - v[0]);
+          fy += pair * (pvy[j] - v[1]);
+          fz += pair * (pvz[j] - v[2]);
+        }
       }
     }
     if constexpr (Tension)
@@ -193,7 +204,12 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
           image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
           imageVelocity[a] = mirrors.velocityScale[m][a] * velocity[a];
         }
-        const PairSums g = pairSums<Pressure, Viscosity, Tension>(candidates, image, imageVelocity, pi, k);
+        // Free-slip images (S = R) keep the one combined sum; no-slip ones sum viscosity apart.
+        const bool sticky = mirrors.velocityScale[m][0] != mirrors.scale[m][0] ||
+          mirrors.velocityScale[m][1] != mirrors.scale[m][1] || mirrors.velocityScale[m][2] != mirrors.scale[m][2];
+        const PairSums g = sticky
+          ? pairSums<Pressure, Viscosity, Tension, true>(candidates, image, imageVelocity, pi, k)
+          : pairSums<Pressure, Viscosity, Tension>(candidates, image, imageVelocity, pi, k);
         for (int a = 0; a < 3; ++a)
         {
           sum.force[a] += mirrors.scale[m][a] * g.force[a];

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <string>
 
@@ -215,6 +216,44 @@ TEST(SPHStress, ZeroViscositySkipsThePassAndStaysBounded)
     // force is not the gradient of the poly6 density's internal energy): bounded, not conserved.
     const double bound = solver == PressureSolver::DFSPH ? 1.05 : 2.0;
     EXPECT_LT(mechanicalEnergy(s), bound * initial) << (solver == PressureSolver::DFSPH ? "DFSPH" : "WCSPH");
+  }
+}
+
+TEST(SPHStress, WallFrictionAtExtremesOnlyTakesEnergyAndNeverBlowsUp)
+{
+  // The small block (10 x 5 x 15 particles) collapses onto walls that stick: no-slip under a
+  // viscosity of 200 Pa s, and the law of the wall for a fluid a million times more viscous than
+  // water. Friction only takes energy out, whatever its strength.
+  for (PressureSolver solver : { PressureSolver::WCSPH, PressureSolver::DFSPH })
+  {
+    const char* name = solver == PressureSolver::DFSPH ? "DFSPH" : "WCSPH";
+    for (WallFriction friction : { WallFriction::FreeSlip, WallFriction::NoSlip, WallFriction::LogLaw })
+    {
+      SPHParameters p = water(solver);
+      p.wallFriction = friction;
+      p.viscosity = friction == WallFriction::NoSlip ? 200.0f : p.viscosity;
+      p.wallKinematicViscosity = 1.0f;
+      SPHSolver s(p, smallBlock());
+      const double initial = mechanicalEnergy(s);
+      s.advance(0.2);
+      for (std::size_t i = 0; i < s.state().size(); ++i)
+      {
+        ASSERT_TRUE(std::isfinite(s.state().x[i] + s.state().vx[i] + s.state().vz[i])) << name;
+      }
+      const double final = mechanicalEnergy(s);
+      std::printf("%s, wall friction %d: mechanical energy %.4f of the initial after 0.2 s\n", name,
+        static_cast<int>(friction), final / initial);
+      EXPECT_LT(final, initial) << name << ", friction " << static_cast<int>(friction);
+      // A step 100 times too large with adaptivity off: the implicit wall law cannot make it worse
+      // than free-slip walls do; it runs or stops with the usual message.
+      p.adaptiveTimeStep = false;
+      p.timeStep = solver == PressureSolver::WCSPH ? 1e-2f : 0.1f;
+      const std::string outcome = runOrStop(p, smallBlock(), 300);
+      if (!outcome.empty())
+      {
+        EXPECT_NE(outcome.find("TimeStep"), std::string::npos) << name << ": " << outcome;
+      }
+    }
   }
 }
 
