@@ -205,9 +205,7 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
           imageVelocity[a] = mirrors.velocityScale[m][a] * velocity[a];
         }
         // Free-slip images (S = R) keep the one combined sum; no-slip ones sum viscosity apart.
-        const bool sticky = mirrors.velocityScale[m][0] != mirrors.scale[m][0] ||
-          mirrors.velocityScale[m][1] != mirrors.scale[m][1] || mirrors.velocityScale[m][2] != mirrors.scale[m][2];
-        const PairSums g = sticky
+        const PairSums g = mirrors.noSlip(m)
           ? pairSums<Pressure, Viscosity, Tension, true>(candidates, image, imageVelocity, pi, k)
           : pairSums<Pressure, Viscosity, Tension>(candidates, image, imageVelocity, pi, k);
         for (int a = 0; a < 3; ++a)

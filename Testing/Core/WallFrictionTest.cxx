@@ -16,6 +16,11 @@ namespace
 using namespace parafluid;
 using namespace parafluid::sph;
 
+const char* solverName(PressureSolver solver)
+{
+  return solver == PressureSolver::DFSPH ? "DFSPH" : "WCSPH";
+}
+
 /// u* from the log layer u = u* (ln(y u* / nu) / kappa + B) by bisection, an independent check of
 /// the Newton solve; the right side increases with u* from y+ = 1 up.
 double logLayerFrictionVelocity(double u, double y, double nu)
@@ -182,9 +187,9 @@ TEST(WallFriction, NoSlipFloorTakesMomentumAsStokesFirstProblem)
   {
     const SPHParameters p = SlidingSlab::parameters(solver, WallFriction::NoSlip, mu);
     const double lost = SlidingSlab::initialMomentum(p) - SlidingSlab::momentumAfter(p, t);
-    EXPECT_NEAR(lost, expected, 0.1 * expected) << (solver == PressureSolver::DFSPH ? "DFSPH" : "WCSPH");
+    EXPECT_NEAR(lost, expected, 0.1 * expected) << solverName(solver);
     std::printf("no-slip floor, %s: momentum lost %.4f kg/(m s), Stokes %.4f\n",
-      solver == PressureSolver::DFSPH ? "DFSPH" : "WCSPH", lost, expected);
+      solverName(solver), lost, expected);
     // Off on the floor (and everywhere else the slab touches), nothing is lost.
     SPHParameters off = p;
     off.frictionWalls = { true, true, true, true, false, true };
@@ -204,9 +209,9 @@ TEST(WallFriction, LogLawFloorTakesMomentumAtTheWallShearStress)
   {
     const SPHParameters p = SlidingSlab::parameters(solver, WallFriction::LogLaw, 3.5f);
     const double lost = SlidingSlab::initialMomentum(p) - SlidingSlab::momentumAfter(p, t);
-    EXPECT_NEAR(lost, expected, 0.05 * expected) << (solver == PressureSolver::DFSPH ? "DFSPH" : "WCSPH");
+    EXPECT_NEAR(lost, expected, 0.05 * expected) << solverName(solver);
     std::printf("log-law floor, %s: momentum lost %.5f kg/(m s), rho u*^2 t %.5f\n",
-      solver == PressureSolver::DFSPH ? "DFSPH" : "WCSPH", lost, expected);
+      solverName(solver), lost, expected);
   }
 }
 

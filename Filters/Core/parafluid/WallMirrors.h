@@ -26,6 +26,12 @@ struct WallMirrors
   float offset[7][3];
   float velocityScale[7][3];
 
+  /// Whether image k crosses a no-slip wall (its velocity is not simply mirrored).
+  bool noSlip(int k) const
+  {
+    return velocityScale[k][0] != scale[k][0] || velocityScale[k][1] != scale[k][1] || velocityScale[k][2] != scale[k][2];
+  }
+
   /// The images a particle at `position` needs: one per subset of the walls within h, taking on
   /// each axis only the nearer wall. noSlip flags the walls xmin, xmax, ymin, ymax, zmin, zmax.
   static WallMirrors around(const float position[3], const std::array<float, 6>& bounds, float h,
