@@ -2,7 +2,7 @@
 
 #include "vtkPFParticleArrays.h"
 
-#include "parafluid/FlowLines.h"
+#include "parafluid/npr/FlowLines.h"
 
 #include "vtkCellData.h"
 #include "vtkInformation.h"

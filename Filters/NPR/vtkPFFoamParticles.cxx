@@ -2,7 +2,7 @@
 
 #include "vtkPFParticleArrays.h"
 
-#include "parafluid/FoamClassifier.h"
+#include "parafluid/npr/FoamClassifier.h"
 
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"

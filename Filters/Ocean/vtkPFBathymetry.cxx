@@ -1,6 +1,6 @@
 #include "vtkPFBathymetry.h"
 
-#include "parafluid/Bathymetry.h"
+#include "parafluid/ocean/Bathymetry.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"

@@ -12,9 +12,13 @@
 #include <string>
 
 class vtkDataObject;
-namespace parafluid::ocean
+namespace parafluid
 {
-class Bathymetry;
+class HeightField;
+namespace ocean
+{
+using Bathymetry = parafluid::HeightField;
+}
 }
 
 /// Returns the bathymetry, or null with `error` set to a message for the user (no scalars, a 3D

@@ -2,8 +2,8 @@
 
 #include "vtkPFBathymetry.h"
 
-#include "parafluid/Bathymetry.h"
-#include "parafluid/GerstnerOcean.h"
+#include "parafluid/ocean/Bathymetry.h"
+#include "parafluid/ocean/GerstnerOcean.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"

@@ -2,8 +2,8 @@
 
 #include "vtkPFParticleArrays.h"
 
-#include "parafluid/ParticleLattice.h"
-#include "parafluid/SPHParameters.h"
+#include "parafluid/common/ParticleLattice.h"
+#include "parafluid/sph/SPHParameters.h"
 
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"

@@ -3,8 +3,8 @@
 #include "vtkPFParticleArrays.h"
 #include "vtkPFTriangleBoundary.h"
 
-#include "parafluid/SPHParameters.h"
-#include "parafluid/SPHSolver.h"
+#include "parafluid/sph/SPHParameters.h"
+#include "parafluid/sph/SPHSolver.h"
 
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -24,7 +24,7 @@
 #include <exception>
 #include <optional>
 
-using parafluid::sph::ParticleState;
+using parafluid::ParticleState;
 using parafluid::sph::PressureSolver;
 using parafluid::sph::SPHParameters;
 using parafluid::sph::SPHSolver;

@@ -1,7 +1,7 @@
 #ifndef vtkPFTriangleBoundary_h
 #define vtkPFTriangleBoundary_h
 // Converts a surface (any vtkPolyData: polygons, strips) into the core's triangle boundary.
-#include "parafluid/TriangleBoundary.h"
+#include "parafluid/common/TriangleBoundary.h"
 
 #include <memory>
 #include <string>

@@ -4,8 +4,8 @@
 #include "vtkPFParticleArrays.h"
 #include "vtkPFSurfaceMeshOutput.h"
 
-#include "parafluid/Bathymetry.h"
-#include "parafluid/CarpetSurface.h"
+#include "parafluid/common/HeightField.h"
+#include "parafluid/surface/CarpetSurface.h"
 
 #include "vtkDataObject.h"
 #include "vtkInformation.h"

@@ -3,7 +3,7 @@
 #include "vtkPFParticleArrays.h"
 #include "vtkPFSurfaceMeshOutput.h"
 
-#include "parafluid/ParticleSurface.h"
+#include "parafluid/surface/ParticleSurface.h"
 
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"

@@ -1,6 +1,6 @@
 #pragma once
 // Shared by the surface filters: particle positions in, a Core SurfaceMesh out as vtkPolyData.
-#include "parafluid/SurfaceMesh.h"
+#include "parafluid/surface/SurfaceMesh.h"
 #include "vtkPFParticleArrays.h"
 
 #include "vtkCellArray.h"

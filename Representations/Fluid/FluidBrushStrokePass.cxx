@@ -3,7 +3,7 @@
 #include "FluidScreenCommon.h"
 #include "FluidStrokeFS.h"
 #include "FluidStrokeVS.h"
-#include "parafluid/BrushStrokes.h"
+#include "parafluid/npr/BrushStrokes.h"
 
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"

@@ -12,7 +12,7 @@
 #include "FluidToonDoGFS.h"
 #include "FluidToonFlowFS.h"
 #include "FluidToonTensorFS.h"
-#include "parafluid/BrushStrokes.h"
+#include "parafluid/npr/BrushStrokes.h"
 
 #include "vtkCamera.h"
 #include "vtkDataArray.h"

@@ -1,3 +1,4 @@
+#include "parafluid/common/MathConstants.h"
 #include "vtkPFGerstnerOceanRepresentation.h"
 
 #include "GerstnerOceanShading.h"
@@ -6,8 +7,8 @@
 #include "vtkPFOceanTextures.h"
 #include "vtkPFParticleArrays.h"
 
-#include "parafluid/Bathymetry.h"
-#include "parafluid/GerstnerOcean.h"
+#include "parafluid/ocean/Bathymetry.h"
+#include "parafluid/ocean/GerstnerOcean.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCellArray.h"
@@ -35,9 +36,10 @@
 #include <cmath>
 #include <sstream>
 
+using parafluid::kPi;
+
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxGpuWaves = 16;   // in deep or uniform water
 constexpr int kMaxFloorWaves = 8;  // over a bathymetry (one phase texture each)
 }

@@ -1,3 +1,4 @@
+#include "parafluid/common/MathConstants.h"
 #include "vtkPFOceanExposure.h"
 
 #include <algorithm>
@@ -7,7 +8,6 @@ namespace parafluid::vtk
 {
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
 
 void normalize(double v[3])
 {

@@ -1,3 +1,4 @@
+#include "parafluid/common/MathConstants.h"
 #include "vtkPFOceanTextures.h"
 
 #include "vtkDataArray.h"
@@ -21,7 +22,6 @@ namespace parafluid::vtk
 {
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 vtkSmartPointer<vtkTexture> makeRippleTexture(int size, unsigned seed)

@@ -1,8 +1,8 @@
 // The Gerstner ocean on the CPU: what the Gerstner Ocean source spends per frame. 1M vertices
 // (a 1000 x 1000 grid) and 8 waves (the Storm preset), deep water and over a sloping beach
 // (phase fields sampled per wave), 1 and 2 OpenMP threads. Target: 0.2 s a frame in deep water.
-#include "parafluid/Bathymetry.h"
-#include "parafluid/GerstnerOcean.h"
+#include "parafluid/ocean/Bathymetry.h"
+#include "parafluid/ocean/GerstnerOcean.h"
 
 #include <benchmark/benchmark.h>
 

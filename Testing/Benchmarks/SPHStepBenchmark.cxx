@@ -1,8 +1,8 @@
 // Time of one WCSPH step on a dam break (water block 1 x 2 x 1 of its height against a wall of a
 // tank 4 wide), 10k and 100k particles, 1 and 2 threads. Reports particle-steps per second, the
 // neighbour count (the work per particle) and the solver's bytes per particle.
-#include "parafluid/ParticleLattice.h"
-#include "parafluid/SPHSolver.h"
+#include "parafluid/common/ParticleLattice.h"
+#include "parafluid/sph/SPHSolver.h"
 
 #include <benchmark/benchmark.h>
 
@@ -10,6 +10,7 @@
 
 namespace
 {
+using namespace parafluid;
 using namespace parafluid;
 using namespace parafluid::sph;
 

@@ -7,9 +7,9 @@
 //        [--solver WCSPH|DFSPH] [--resolutions 10,20,40] [--viscosity 3.5] [--tolerance 0.001]
 //        [--cfl 0.2] [--max-dt 0.005] [--stiffness 1000] [--width 0.05715]
 //        [--walls log-law|free-slip|no-slip]
-#include "parafluid/ParticleLattice.h"
-#include "parafluid/SPHParameters.h"
-#include "parafluid/SPHSolver.h"
+#include "parafluid/common/ParticleLattice.h"
+#include "parafluid/sph/SPHParameters.h"
+#include "parafluid/sph/SPHSolver.h"
 
 #include <algorithm>
 #include <chrono>
@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+using namespace parafluid;
 using namespace parafluid;
 using namespace parafluid::sph;
 

@@ -1,8 +1,8 @@
 // Surface extraction on the scenes: a dam-break block (a x a x 2a) with 5 % of its
 // particles as splash scattered above it, 100k and 1M particles, cell 0.5 d; the jittered ball
 // (R = 25 d) for time against error; and the carpet against marching cubes on one shallow flow.
-#include "parafluid/CarpetSurface.h"
-#include "parafluid/ParticleSurface.h"
+#include "parafluid/surface/CarpetSurface.h"
+#include "parafluid/surface/ParticleSurface.h"
 #include "SurfaceScenes.h"
 
 #include <benchmark/benchmark.h>

@@ -132,7 +132,7 @@ def check(condition, message):
 
 
 def compare_with_baseline(png, name, threshold=10.0):
-    """Compares the image `png` with Testing/Baselines/<name> by VTK's vtkImageDifference.
+    """Compares the image `png` with Baselines/<name> beside the test script by VTK's vtkImageDifference.
     Threshold: the thresholded error (VTK's regression-test measure; 10 is its default), which
     tolerates anti-aliasing and driver noise but not things in other places or other colours.
     With PARAFLUID_UPDATE_BASELINE set, the image becomes the new baseline instead."""
@@ -140,7 +140,9 @@ def compare_with_baseline(png, name, threshold=10.0):
     from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
     from vtkmodules.vtkImagingCore import vtkImageDifference
 
-    baseline = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Baselines", name)
+    # Baselines live with the concern's tests: Testing/<Concern>/Baselines beside the calling script.
+    caller = sys._getframe(1).f_code.co_filename
+    baseline = os.path.join(os.path.dirname(os.path.abspath(caller)), "Baselines", name)
     if os.environ.get("PARAFLUID_UPDATE_BASELINE"):
         shutil.copyfile(png, baseline)
         print("baseline updated:", baseline)

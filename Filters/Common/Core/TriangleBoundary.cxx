@@ -1,0 +1,430 @@
+#include "parafluid/common/TriangleBoundary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace parafluid
+{
+namespace
+{
+void subtract(const float* a, const float* b, double* out)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    out[k] = static_cast<double>(a[k]) - b[k];
+  }
+}
+void cross(const double* a, const double* b, double* out)
+{
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+double dot(const double* a, const double* b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+// Grids above this many cells get coarser cells instead.
+constexpr double kMaxCells = 4.0e6;
+} // namespace
+
+TriangleBoundary::TriangleBoundary(
+  std::vector<float> points, std::vector<std::uint32_t> triangles, std::vector<float> vertexNormals)
+  : Points(std::move(points))
+{
+  if (this->Points.size() % 3 != 0 || triangles.size() % 3 != 0)
+  {
+    throw std::invalid_argument("boundary mesh: point and triangle arrays must hold triples");
+  }
+  const std::size_t vertices = this->Points.size() / 3;
+  for (float c : this->Points)
+  {
+    if (!std::isfinite(c))
+    {
+      throw std::invalid_argument("boundary mesh: a vertex has a NaN or infinite coordinate");
+    }
+  }
+  for (std::uint32_t v : triangles)
+  {
+    if (v >= vertices)
+    {
+      throw std::invalid_argument("boundary mesh: triangle vertex index " + std::to_string(v) + " is out of range (" +
+        std::to_string(vertices) + " vertices)");
+    }
+  }
+  // Face normals; zero-area triangles cannot be crossed and are dropped.
+  std::vector<double> accumulated(this->Points.size(), 0.0);
+  for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
+  {
+    const float* p0 = &this->Points[3 * triangles[t]];
+    const float* p1 = &this->Points[3 * triangles[t + 1]];
+    const float* p2 = &this->Points[3 * triangles[t + 2]];
+    double e1[3], e2[3], n[3];
+    subtract(p1, p0, e1);
+    subtract(p2, p0, e2);
+    cross(e1, e2, n);
+    const double twiceArea = std::sqrt(dot(n, n));
+    const double scale = std::max({ dot(e1, e1), dot(e2, e2), 1e-300 });
+    if (!(twiceArea > 1e-12 * scale))
+    {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Triangles.push_back(triangles[t + k]);
+      this->FaceNormals.push_back(static_cast<float>(n[k] / twiceArea));
+      for (int c = 0; c < 3; ++c)
+      {
+        accumulated[3 * triangles[t + k] + c] += n[c]; // area-weighted: |n| is twice the area
+      }
+    }
+  }
+  if (vertexNormals.size() == this->Points.size())
+  {
+    this->VertexNormals = std::move(vertexNormals);
+  }
+  else
+  {
+    this->VertexNormals.assign(this->Points.size(), 0.0f);
+    for (std::size_t v = 0; v < vertices; ++v)
+    {
+      const double* a = &accumulated[3 * v];
+      const double length = std::sqrt(dot(a, a));
+      for (int c = 0; c < 3 && length > 0.0; ++c)
+      {
+        this->VertexNormals[3 * v + c] = static_cast<float>(a[c] / length);
+      }
+    }
+  }
+  this->buildGrid();
+}
+
+void TriangleBoundary::buildGrid()
+{
+  const std::size_t m = this->triangleCount();
+  if (m == 0)
+  {
+    this->CellStart.assign(2, 0);
+    return;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Bounds[2 * a] = std::numeric_limits<float>::max();
+    this->Bounds[2 * a + 1] = std::numeric_limits<float>::lowest();
+  }
+  double meanExtent = 0.0;
+  for (std::size_t t = 0; t < m; ++t)
+  {
+    float lo[3], hi[3];
+    this->triangleBox(t, lo, hi);
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Bounds[2 * a] = std::min(this->Bounds[2 * a], lo[a]);
+      this->Bounds[2 * a + 1] = std::max(this->Bounds[2 * a + 1], hi[a]);
+    }
+    meanExtent += std::max({ hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] });
+  }
+  meanExtent /= static_cast<double>(m);
+  // Cells about one triangle wide keep the lists short; fewer than kMaxCells keep memory bounded.
+  double size = std::max(meanExtent, 1e-6);
+  auto cellsFor = [&](double s)
+  {
+    double cells = 1.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      cells *= std::floor((this->Bounds[2 * a + 1] - this->Bounds[2 * a]) / s) + 1.0;
+    }
+    return cells;
+  };
+  while (cellsFor(size) > kMaxCells)
+  {
+    size *= 1.5;
+  }
+  this->CellSize = static_cast<float>(size);
+  std::size_t total = 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    this->Origin[a] = this->Bounds[2 * a];
+    this->Dims[a] = static_cast<int>(std::floor((this->Bounds[2 * a + 1] - this->Bounds[2 * a]) / size)) + 1;
+    total *= static_cast<std::size_t>(this->Dims[a]);
+  }
+  // Two passes (count, then fill) over the cells each triangle's bounding box overlaps.
+  this->CellStart.assign(total + 1, 0);
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    std::vector<std::uint32_t> fill;
+    if (pass == 1)
+    {
+      for (std::size_t c = 0; c < total; ++c)
+      {
+        this->CellStart[c + 1] += this->CellStart[c];
+      }
+      this->CellTriangles.resize(this->CellStart[total]);
+      fill.assign(this->CellStart.begin(), this->CellStart.end() - 1);
+    }
+    for (std::size_t t = 0; t < m; ++t)
+    {
+      float lo[3], hi[3];
+      this->triangleBox(t, lo, hi);
+      int first[3], last[3];
+      this->cellRange(lo, hi, first, last);
+      for (int k = first[2]; k <= last[2]; ++k)
+      {
+        for (int j = first[1]; j <= last[1]; ++j)
+        {
+          for (int i = first[0]; i <= last[0]; ++i)
+          {
+            const std::size_t c = static_cast<std::size_t>(i) +
+              static_cast<std::size_t>(this->Dims[0]) * (static_cast<std::size_t>(j) + static_cast<std::size_t>(this->Dims[1]) * k);
+            if (pass == 0)
+            {
+              ++this->CellStart[c + 1];
+            }
+            else
+            {
+              this->CellTriangles[fill[c]++] = static_cast<std::uint32_t>(t);
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+void TriangleBoundary::triangleBox(std::size_t t, float lo[3], float hi[3]) const
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    lo[a] = hi[a] = this->Points[3 * this->Triangles[3 * t] + a];
+    for (int k = 1; k < 3; ++k)
+    {
+      const float c = this->Points[3 * this->Triangles[3 * t + k] + a];
+      lo[a] = std::min(lo[a], c);
+      hi[a] = std::max(hi[a], c);
+    }
+  }
+}
+
+bool TriangleBoundary::cellRange(const float lo[3], const float hi[3], int first[3], int last[3]) const
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    if (hi[a] < this->Bounds[2 * a] || lo[a] > this->Bounds[2 * a + 1])
+    {
+      return false;
+    }
+    const double f = std::floor((static_cast<double>(lo[a]) - this->Origin[a]) / this->CellSize);
+    const double l = std::floor((static_cast<double>(hi[a]) - this->Origin[a]) / this->CellSize);
+    first[a] = static_cast<int>(std::clamp(f, 0.0, static_cast<double>(this->Dims[a] - 1)));
+    last[a] = static_cast<int>(std::clamp(l, 0.0, static_cast<double>(this->Dims[a] - 1)));
+  }
+  return true;
+}
+
+bool TriangleBoundary::firstCrossing(const float a[3], const float b[3], Crossing& crossing, float skin) const
+{
+  if (this->Triangles.empty())
+  {
+    return false;
+  }
+  // A crossing point lies exactly on a triangle; widen the box a little for points on cell borders.
+  const float pad = 1e-6f * this->CellSize + skin;
+  const float lo[3] = { std::min(a[0], b[0]) - pad, std::min(a[1], b[1]) - pad, std::min(a[2], b[2]) - pad };
+  const float hi[3] = { std::max(a[0], b[0]) + pad, std::max(a[1], b[1]) + pad, std::max(a[2], b[2]) + pad };
+  int first[3], last[3];
+  if (!this->cellRange(lo, hi, first, last))
+  {
+    return false;
+  }
+  // Barycentric tolerance, so a segment through a shared edge is caught by one of the two triangles.
+  // Generous (1e-4 of the triangle), so that at a convex edge the face the segment really goes
+  // through is found even when rounding puts the point a hair beyond it; otherwise the next face
+  // could be met from behind and the particle pushed into the solid.
+  constexpr double tolerance = 1e-4;
+  bool found = false;
+  double bestT = 2.0;
+  for (int k = first[2]; k <= last[2]; ++k)
+  {
+    for (int j = first[1]; j <= last[1]; ++j)
+    {
+      for (int i = first[0]; i <= last[0]; ++i)
+      {
+        const std::size_t c = static_cast<std::size_t>(i) +
+          static_cast<std::size_t>(this->Dims[0]) * (static_cast<std::size_t>(j) + static_cast<std::size_t>(this->Dims[1]) * k);
+        for (std::uint32_t e = this->CellStart[c]; e < this->CellStart[c + 1]; ++e)
+        {
+          const std::uint32_t t = this->CellTriangles[e];
+          const float* p0 = &this->Points[3 * this->Triangles[3 * t]];
+          const float* p1 = &this->Points[3 * this->Triangles[3 * t + 1]];
+          const float* p2 = &this->Points[3 * this->Triangles[3 * t + 2]];
+          const double n[3] = { this->FaceNormals[3 * t], this->FaceNormals[3 * t + 1], this->FaceNormals[3 * t + 2] };
+          double da[3], db[3];
+          subtract(a, p0, da);
+          subtract(b, p0, db);
+          const double sa = dot(n, da);
+          const double sb = dot(n, db);
+          // A point on the plane has no side to keep.
+          if (sa == 0.0)
+          {
+            continue;
+          }
+          const double side = sa > 0.0 ? 1.0 : -1.0;
+          const double startDistance = side * sa, endDistance = side * sb;
+          if (endDistance >= skin)
+          {
+            continue;
+          }
+          const double s = startDistance > skin ? (startDistance - skin) / (startDistance - endDistance) : 0.0;
+          if (s >= bestT)
+          {
+            continue;
+          }
+          // Barycentric coordinates of q = a + s (b - a) projected onto the triangle's plane.
+          double q[3], e1[3], e2[3], w[3];
+          for (int d = 0; d < 3; ++d)
+          {
+            q[d] = a[d] + s * (static_cast<double>(b[d]) - a[d]);
+          }
+          double height = 0.0;
+          for (int d = 0; d < 3; ++d)
+          {
+            height += n[d] * (q[d] - p0[d]);
+          }
+          for (int d = 0; d < 3; ++d)
+          {
+            w[d] = q[d] - height * n[d] - p0[d];
+          }
+          subtract(p1, p0, e1);
+          subtract(p2, p0, e2);
+          const double d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
+          const double w1 = dot(w, e1), w2 = dot(w, e2);
+          const double det = d11 * d22 - d12 * d12;
+          const double u = (d22 * w1 - d12 * w2) / det;
+          const double v = (d11 * w2 - d12 * w1) / det;
+          if (u < -tolerance || v < -tolerance || u + v > 1.0 + tolerance)
+          {
+            continue;
+          }
+          found = true;
+          bestT = s;
+          crossing.t = static_cast<float>(s);
+          crossing.triangle = t;
+          crossing.barycentric[0] = static_cast<float>(1.0 - u - v);
+          crossing.barycentric[1] = static_cast<float>(u);
+          crossing.barycentric[2] = static_cast<float>(v);
+          crossing.side = sa > 0.0 ? 1.0f : -1.0f;
+        }
+      }
+    }
+  }
+  return found;
+}
+
+bool TriangleBoundary::resolve(const float from[3], float to[3], float velocity[3], float damping, float offset) const
+{
+  if (!this->bounce(from, to, velocity, damping, offset))
+  {
+    return false;
+  }
+  // The bounces decide sides one plane at a time. Just past a convex edge, rounding can let the
+  // plane of the next face be met "from behind" and the particle be pushed into the solid. The net
+  // move must cross nothing: if it does, the particle stays where it was (on the fluid side) and
+  // its velocity is reflected off the face that the net move would have gone through.
+  Crossing net;
+  if (this->firstCrossing(from, to, net))
+  {
+    std::copy(from, from + 3, to);
+    const float* face = this->faceNormal(net.triangle);
+    const float n[3] = { net.side * face[0], net.side * face[1], net.side * face[2] };
+    const float vn = velocity[0] * n[0] + velocity[1] * n[1] + velocity[2] * n[2];
+    if (vn < 0.0f)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        velocity[d] -= (2.0f - damping) * vn * n[d];
+      }
+    }
+  }
+  return true;
+}
+
+bool TriangleBoundary::bounce(const float from[3], float to[3], float velocity[3], float damping, float offset) const
+{
+  const float restitution = 1.0f - damping;
+  float start[3] = { from[0], from[1], from[2] };
+  bool hit = false;
+  // A reflected overshoot can cross another triangle (in a corner); a few bounces settle it.
+  constexpr int maxBounces = 4;
+  for (int bounce = 0; bounce <= maxBounces; ++bounce)
+  {
+    // A true crossing first; failing that, an end point that would come to rest within the skin.
+    Crossing c;
+    if (!this->firstCrossing(start, to, c) && !this->firstCrossing(start, to, c, 0.5f * offset))
+    {
+      return hit;
+    }
+    hit = true;
+    if (bounce == maxBounces)
+    {
+      // Still crossing: stay where the last bounce put it, which is on the fluid side.
+      std::copy(start, start + 3, to);
+      return hit;
+    }
+    const float* face = this->faceNormal(c.triangle);
+    const float n[3] = { c.side * face[0], c.side * face[1], c.side * face[2] }; // towards the fluid
+    float point[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      point[d] = start[d] + c.t * (to[d] - start[d]);
+    }
+    // Distances from the plane itself (point lies on the skin, up to offset / 2 above the plane).
+    const float* p0 = &this->Points[3 * this->Triangles[3 * c.triangle]];
+    const float endHeight = (to[0] - p0[0]) * n[0] + (to[1] - p0[1]) * n[1] + (to[2] - p0[2]) * n[2];
+    const float pointHeight = (point[0] - p0[0]) * n[0] + (point[1] - p0[1]) * n[1] + (point[2] - p0[2]) * n[2];
+    // Overshoot below the plane is reflected (damped); the end point is left at least offset above.
+    const float reflected = endHeight < 0.0f ? -restitution * endHeight : endHeight;
+    const float push = std::max(reflected, offset) - endHeight;
+    const float lift = std::max(offset - pointHeight, 0.0f);
+    for (int d = 0; d < 3; ++d)
+    {
+      to[d] += push * n[d];
+      start[d] = point[d] + lift * n[d];
+    }
+    // Velocity: reflect about the smooth (interpolated) normal, oriented to the fluid side.
+    float smooth[3] = { 0, 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      const float* vn = &this->VertexNormals[3 * this->Triangles[3 * c.triangle + k]];
+      for (int d = 0; d < 3; ++d)
+      {
+        smooth[d] += c.barycentric[k] * vn[d];
+      }
+    }
+    float length = std::sqrt(smooth[0] * smooth[0] + smooth[1] * smooth[1] + smooth[2] * smooth[2]);
+    float facing = smooth[0] * n[0] + smooth[1] * n[1] + smooth[2] * n[2];
+    if (!(length > 1e-6f) || std::fabs(facing) < 0.1f * length)
+    {
+      std::copy(n, n + 3, smooth); // no usable vertex normals here: use the face's
+      length = 1.0f;
+      facing = 1.0f;
+    }
+    const float sign = facing < 0.0f ? -1.0f : 1.0f;
+    for (int d = 0; d < 3; ++d)
+    {
+      smooth[d] *= sign / length;
+    }
+    const float vn = velocity[0] * smooth[0] + velocity[1] * smooth[1] + velocity[2] * smooth[2];
+    if (vn < 0.0f)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        velocity[d] -= (1.0f + restitution) * vn * smooth[d];
+      }
+    }
+  }
+  return hit;
+}
+} // namespace parafluid

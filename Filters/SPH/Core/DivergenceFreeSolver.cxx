@@ -1,0 +1,326 @@
+// Divergence-free SPH (Bender & Koschier, "Divergence-Free Smoothed Particle Hydrodynamics",
+// SCA 2015): each step predicts velocities from the non-pressure forces, corrects them so that the
+// density predicted at the end of the step is rest density (density solve), moves the particles,
+// then corrects the velocities again so that the density does not change (divergence solve).
+// Both solves are Jacobi iterations on per-particle stiffnesses k_i (= p_i / rho_i^2), warm-started
+// with the previous step's sums. Density and its gradient use the cubic spline, so what the solver
+// predicts is what the next density pass measures.
+#include "parafluid/sph/SPHSolver.h"
+
+#include "parafluid/common/Kernels.h"
+#include "parafluid/sph/WallMirrors.h"
+#include "private/NeighbourCandidates.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace parafluid::sph
+{
+using detail::CandidateBuffer;
+using detail::forEachParticleByCell;
+using detail::threadCount;
+
+namespace
+{
+/// A particle with fewer neighbours than this (itself and wall images included) is at the free
+/// surface: a full neighbourhood at h = 2 spacings holds 27, a surface layer 18. The divergence
+/// solve leaves surface particles free to separate, as Bender & Koschier's implementation does.
+constexpr std::uint16_t kSurfaceNeighbours = 20;
+
+/// Cubic-spline W(r) and (dW/dr)/r without branches, for the vectorised pair loops.
+struct CubicPair
+{
+  float h2, inverseH, coefficient;
+  explicit CubicPair(float h)
+    : h2(h * h)
+    , inverseH(1.0f / h)
+    , coefficient(CubicSplineKernel(h).coefficient)
+  {
+  }
+  float value(float r, float q) const
+  {
+    (void)r;
+    const float d = 1.0f - q;
+    return q <= 0.5f ? coefficient * (6.0f * q * q * (q - 1.0f) + 1.0f) : coefficient * 2.0f * d * d * d;
+  }
+  /// (dW/dr) / r: finite at r = 0 (where it multiplies a zero vector).
+  float gradientFactor(float r, float q) const
+  {
+    const float d = 1.0f - q;
+    const float inner = coefficient * inverseH * inverseH * (18.0f * q - 12.0f);
+    const float outer = -6.0f * coefficient * inverseH * d * d / std::max(r, 1e-30f);
+    return q <= 0.5f ? inner : outer;
+  }
+};
+
+/// Runs f(query position, velocity scale S, mirror index or -1) for the particle and each of its
+/// wall images; f returns a vector result that is mapped back with S.
+template <class F>
+void withImages(const float position[3], const SPHParameters& p, F&& f)
+{
+  static const float identity[3] = { 1.0f, 1.0f, 1.0f };
+  f(position, identity);
+  const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, p.smoothingLength);
+  for (int m = 0; m < mirrors.count; ++m)
+  {
+    float image[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
+    }
+    f(image, mirrors.scale[m]);
+  }
+}
+} // namespace
+
+void SPHSolver::computeDensityAndFactor()
+{
+  ParticleState& s = this->State;
+  const SPHParameters& p = this->Parameters;
+  const std::size_t n = s.size();
+  this->Factor.resize(n);
+  this->NeighbourCount.resize(n);
+  const CubicPair w(p.smoothingLength);
+  const float m = p.particleMass;
+  forEachParticleByCell(this->Grid, s, p.smoothingLength, threadCount(p), {},
+    [&](CandidateBuffer& c, std::uint32_t i)
+    {
+      const float position[3] = { s.x[i], s.y[i], s.z[i] };
+      float rho = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f, squares = 0.0f;
+      unsigned neighbours = 0;
+      withImages(position, p,
+        [&](const float q[3], const float scale[3])
+        {
+          const std::uint32_t count = c.findHits(q, w.h2);
+          neighbours += count;
+          const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
+          const std::uint32_t* hits = c.hits.data();
+          float sr = 0.0f, sx = 0.0f, sy = 0.0f, sz = 0.0f, ss = 0.0f;
+#pragma omp simd reduction(+ : sr, sx, sy, sz, ss)
+          for (std::uint32_t k = 0; k < count; ++k)
+          {
+            const std::uint32_t j = hits[k];
+            const float r = std::sqrt(r2[j]);
+            const float q01 = r * w.inverseH;
+            sr += w.value(r, q01);
+            const float g = w.gradientFactor(r, q01);
+            const float dx = g * (q[0] - px[j]), dy = g * (q[1] - py[j]), dz = g * (q[2] - pz[j]);
+            sx += dx;
+            sy += dy;
+            sz += dz;
+            ss += dx * dx + dy * dy + dz * dz;
+          }
+          rho += sr;
+          gx += scale[0] * sx;
+          gy += scale[1] * sy;
+          gz += scale[2] * sz;
+          squares += ss;
+        });
+      rho *= m;
+      s.density[i] = rho;
+      // alpha_i = rho_i / (|sum_j m grad W_ij|^2 + sum_j |m grad W_ij|^2); an isolated particle has
+      // no gradient to correct with and gets 0.
+      const float denominator = m * m * (gx * gx + gy * gy + gz * gz + squares);
+      this->Factor[i] = denominator > 1e-12f * rho * rho / (p.smoothingLength * p.smoothingLength) ? rho / denominator : 0.0f;
+      this->NeighbourCount[i] = static_cast<std::uint16_t>(std::min(neighbours, 65535u));
+    });
+}
+
+void SPHSolver::computeDensityRate()
+{
+  ParticleState& s = this->State;
+  const SPHParameters& p = this->Parameters;
+  this->DensityRate.resize(s.size());
+  const CubicPair w(p.smoothingLength);
+  const float m = p.particleMass;
+  forEachParticleByCell(this->Grid, s, p.smoothingLength, threadCount(p), { s.vx.data(), s.vy.data(), s.vz.data() },
+    [&](CandidateBuffer& c, std::uint32_t i)
+    {
+      const float position[3] = { s.x[i], s.y[i], s.z[i] };
+      const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
+      float rate = 0.0f;
+      withImages(position, p,
+        [&](const float q[3], const float scale[3])
+        {
+          // An image moves with the mirrored velocity; the scalar sum needs no mapping back.
+          const float v[3] = { scale[0] * velocity[0], scale[1] * velocity[1], scale[2] * velocity[2] };
+          const std::uint32_t count = c.findHits(q, w.h2);
+          const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
+          const float *vx = c.channel[0].data(), *vy = c.channel[1].data(), *vz = c.channel[2].data();
+          const std::uint32_t* hits = c.hits.data();
+          float sum = 0.0f;
+#pragma omp simd reduction(+ : sum)
+          for (std::uint32_t k = 0; k < count; ++k)
+          {
+            const std::uint32_t j = hits[k];
+            const float r = std::sqrt(r2[j]);
+            const float g = w.gradientFactor(r, r * w.inverseH);
+            sum += g * ((q[0] - px[j]) * (v[0] - vx[j]) + (q[1] - py[j]) * (v[1] - vy[j]) + (q[2] - pz[j]) * (v[2] - vz[j]));
+          }
+          rate += sum;
+        });
+      this->DensityRate[i] = m * rate;
+    });
+}
+
+void SPHSolver::applyPressureImpulse(float dt)
+{
+  ParticleState& s = this->State;
+  const SPHParameters& p = this->Parameters;
+  const CubicPair w(p.smoothingLength);
+  // The pressure force uses the gradient corrected to be exact for a linear field on the rest
+  // lattice; the prediction (density rate) keeps the plain one, which matches the measured density.
+  const float m = p.particleMass * this->GradientCorrection;
+  // Velocities change in place: the pass reads the stiffnesses only, never the velocities.
+  forEachParticleByCell(this->Grid, s, p.smoothingLength, threadCount(p), { this->Stiffness.data() },
+    [&](CandidateBuffer& c, std::uint32_t i)
+    {
+      const float position[3] = { s.x[i], s.y[i], s.z[i] };
+      const float ki = this->Stiffness[i];
+      float f[3] = { 0.0f, 0.0f, 0.0f };
+      withImages(position, p,
+        [&](const float q[3], const float scale[3])
+        {
+          const std::uint32_t count = c.findHits(q, w.h2);
+          const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
+          const float* kj = c.channel[0].data();
+          const std::uint32_t* hits = c.hits.data();
+          float fx = 0.0f, fy = 0.0f, fz = 0.0f;
+#pragma omp simd reduction(+ : fx, fy, fz)
+          for (std::uint32_t k = 0; k < count; ++k)
+          {
+            const std::uint32_t j = hits[k];
+            const float r = std::sqrt(r2[j]);
+            const float g = (ki + kj[j]) * w.gradientFactor(r, r * w.inverseH);
+            fx += g * (q[0] - px[j]);
+            fy += g * (q[1] - py[j]);
+            fz += g * (q[2] - pz[j]);
+          }
+          f[0] += scale[0] * fx;
+          f[1] += scale[1] * fy;
+          f[2] += scale[2] * fz;
+        });
+      // a_i = -sum_j m (k_i + k_j) grad W_ij, k = p / rho^2
+      const float a[3] = { -m * f[0], -m * f[1], -m * f[2] };
+      s.vx[i] += dt * a[0];
+      s.vy[i] += dt * a[1];
+      s.vz[i] += dt * a[2];
+      s.ax[i] += a[0];
+      s.ay[i] += a[1];
+      s.az[i] += a[2];
+    });
+}
+
+void SPHSolver::warmStart(std::vector<float>& accumulated, float dt)
+{
+  // Half the previous step's pressure starts this one: a good guess that still decays when it was
+  // too high (the iterations only ever add pressure, never take it away).
+  const auto n = static_cast<std::int64_t>(accumulated.size());
+#pragma omp parallel for schedule(static) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    accumulated[i] *= 0.5f;
+  }
+  this->Stiffness = accumulated;
+  this->applyPressureImpulse(dt);
+}
+
+int SPHSolver::solveDensity(float dt)
+{
+  ParticleState& s = this->State;
+  const SPHParameters& p = this->Parameters;
+  const auto n = static_cast<std::int64_t>(s.size());
+  const int threads = threadCount(p);
+  const float rho0 = p.restDensity;
+  this->warmStart(this->DensityStiffness, dt);
+  int iterations = 0;
+  while (iterations < p.maxPressureIterations)
+  {
+    this->computeDensityRate();
+    double error = 0.0;
+    const float scale = 1.0f / (dt * dt);
+#pragma omp parallel for schedule(static) reduction(+ : error) num_threads(threads)
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      // Only compression is corrected: a free surface is allowed to be below rest density.
+      const float excess = std::max(s.density[i] + dt * this->DensityRate[i] - rho0, 0.0f);
+      error += excess;
+      this->Stiffness[i] = excess * scale * this->Factor[i] / s.density[i];
+    }
+    const double meanError = n > 0 ? error / (static_cast<double>(n) * rho0) : 0.0;
+    if (meanError <= p.densityTolerance && iterations >= 2)
+    {
+      break;
+    }
+    this->applyPressureImpulse(dt);
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      this->DensityStiffness[i] += this->Stiffness[i];
+    }
+    ++iterations;
+  }
+  return iterations;
+}
+
+int SPHSolver::solveDivergence(float dt)
+{
+  ParticleState& s = this->State;
+  const SPHParameters& p = this->Parameters;
+  const auto n = static_cast<std::int64_t>(s.size());
+  const int threads = threadCount(p);
+  const float rho0 = p.restDensity;
+  this->warmStart(this->DivergenceStiffness, dt);
+  int iterations = 0;
+  while (iterations < p.maxPressureIterations)
+  {
+    this->computeDensityRate();
+    double error = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : error) num_threads(threads)
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      const float rate = this->NeighbourCount[i] < kSurfaceNeighbours ? 0.0f : std::max(this->DensityRate[i], 0.0f);
+      error += rate;
+      this->Stiffness[i] = rate / dt * this->Factor[i] / s.density[i];
+    }
+    const double meanError = n > 0 ? error * dt / (static_cast<double>(n) * rho0) : 0.0;
+    if (meanError <= p.divergenceTolerance && iterations >= 1)
+    {
+      break;
+    }
+    this->applyPressureImpulse(dt);
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      this->DivergenceStiffness[i] += this->Stiffness[i];
+    }
+    ++iterations;
+  }
+  return iterations;
+}
+
+void SPHSolver::stepDFSPH(double remaining)
+{
+  ParticleState& s = this->State;
+  // Non-pressure accelerations at the current state decide the step and predict the velocities.
+  this->computeAccelerations(false);
+  const double dt = this->chooseTimeStep(remaining);
+  const auto h = static_cast<float>(dt);
+  this->kick(h);
+  this->applyWallFriction(h);
+  this->Last.densityIterations = this->solveDensity(h);
+  this->drift(h);
+  this->sortByCell();
+  this->computeDensityAndFactor();
+  this->Last.divergenceIterations = this->solveDivergence(h);
+  const auto n = static_cast<std::int64_t>(s.size());
+#pragma omp parallel for schedule(static) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    // Both solves' impulses over the step amount to the pressure p_i = rho_i^2 k_i.
+    s.pressure[i] = s.density[i] * s.density[i] * (this->DensityStiffness[i] + this->DivergenceStiffness[i]);
+  }
+  this->Last.timeStep = dt;
+  this->Time += dt;
+}
+} // namespace parafluid::sph

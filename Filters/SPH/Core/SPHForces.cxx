@@ -1,0 +1,284 @@
+// Müller et al. (2003) forces: poly6 density, the equation of state, spiky pressure gradient,
+// viscosity-kernel Laplacian and colour-field surface tension; and the WCSPH leapfrog step.
+#include "parafluid/sph/SPHSolver.h"
+
+#include "parafluid/common/Kernels.h"
+#include "parafluid/sph/WallMirrors.h"
+#include "private/NeighbourCandidates.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace parafluid::sph
+{
+using detail::CandidateBuffer;
+using detail::forEachParticleByCell;
+using detail::threadCount;
+
+void SPHSolver::stepWCSPH(double dt)
+{
+  const auto h = static_cast<float>(dt);
+  this->kick(0.5f * h);
+  this->drift(h);
+  this->sortByCell();
+  this->computeDensityAndPressure();
+  this->computeAccelerations(true);
+  this->kick(0.5f * h);
+  this->applyWallFriction(h);
+  this->Last.timeStep = dt;
+  this->Time += dt;
+}
+
+void SPHSolver::computeDensityAndPressure()
+{
+  ParticleState& s = this->State;
+  const SPHParameters& p = this->Parameters;
+  const Poly6Kernel w(p.smoothingLength);
+  const float densityScale = p.particleMass * w.coefficient;
+  const float k = p.gasStiffness;
+  const float rho0 = p.restDensity;
+  const bool clamp = p.clampNegativePressure;
+  forEachParticleByCell(this->Grid, s, p.smoothingLength, threadCount(p), {},
+    [&](const CandidateBuffer& candidates, std::uint32_t i)
+    {
+      const float position[3] = { s.x[i], s.y[i], s.z[i] };
+      float sum = candidates.poly6Sum(position, w.h2); // includes the particle itself (r = 0)
+      // Near walls the mirrored fluid fills the cut-off neighbourhood: |x_i - R x_j| = |R x_i - x_j|.
+      const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, p.smoothingLength);
+      for (int m = 0; m < mirrors.count; ++m)
+      {
+        float image[3];
+        for (int a = 0; a < 3; ++a)
+        {
+          image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
+        }
+        sum += candidates.poly6Sum(image, w.h2);
+      }
+      const float rho = densityScale * sum;
+      s.density[i] = rho;
+      const float pressure = k * (rho - rho0);
+      s.pressure[i] = clamp ? std::max(pressure, 0.0f) : pressure;
+    });
+}
+
+namespace
+{
+struct PairConstants
+{
+  float h, h2, minDistance, pressureScale, viscosityScale;
+};
+
+struct PairSums
+{
+  float force[3] = { 0, 0, 0 };   // pressure (+ viscosity), per unit of the query's density
+  float viscous[3] = { 0, 0, 0 }; // viscosity when summed apart, per unit of the query's density
+  float normal[3] = { 0, 0, 0 }; // Σ (h² − r²)² r_ij / rho_j       (colour gradient, unscaled)
+  float laplacian = 0.0f;        // Σ (h² − r²)(3h² − 7r²) / rho_j  (colour Laplacian, unscaled)
+};
+
+// Candidate channels of the force pass.
+enum Channel
+{
+  VX,
+  VY,
+  VZ,
+  PRESSURE,
+  INVERSE_DENSITY
+};
+
+/// Pair sums for a query particle (position q, velocity v, pressure pi) over the candidates:
+///   pressure:   Σ_j P (pi + pj)/rho_j (h − r)² / r · (q − x_j)
+///   viscosity:  Σ_j V / rho_j (h − r) (v_j − v)
+///   colour field gradient and Laplacian (poly6, without constants).
+/// Each term is compiled in only when its flag is set, so a scene without it does not pay for it.
+/// The viscous sum goes into `force` unless SeparateViscous (no-slip wall images map it back
+/// differently from the pressure sum).
+template <bool Pressure, bool Viscosity, bool Tension, bool SeparateViscous = false>
+PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float pi, const PairConstants& k)
+{
+  const std::uint32_t count = c.findHits(q, k.h2);
+  const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data();
+  const float *pvx = c.channel[VX].data(), *pvy = c.channel[VY].data(), *pvz = c.channel[VZ].data();
+  const float *pp = c.channel[PRESSURE].data(), *pinv = c.channel[INVERSE_DENSITY].data();
+  const float* r2 = c.distanceSquared.data();
+  const std::uint32_t* hits = c.hits.data();
+  float fx = 0.0f, fy = 0.0f, fz = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f;
+  float nx = 0.0f, ny = 0.0f, nz = 0.0f, lap = 0.0f;
+#pragma omp simd reduction(+ : fx, fy, fz, gx, gy, gz, nx, ny, nz, lap)
+  for (std::uint32_t n = 0; n < count; ++n)
+  {
+    const std::uint32_t j = hits[n];
+    const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
+    if constexpr (Pressure || Viscosity)
+    {
+      const float dist = std::sqrt(r2[j]);
+      const float w = k.h - dist;
+      if constexpr (Pressure)
+      {
+        // The particle itself (and any exact overlap) has dx = 0 and adds nothing.
+        const float pair = k.pressureScale * (pi + pp[j]) * pinv[j] * w * w / std::max(dist, k.minDistance);
+        fx += pair * dx;
+        fy += pair * dy;
+        fz += pair * dz;
+      }
+      if constexpr (Viscosity)
+      {
+        const float pair = k.viscosityScale * pinv[j] * w;
+        if constexpr (SeparateViscous)
+        {
+          gx += pair * (pvx[j] - v[0]);
+          gy += pair * (pvy[j] - v[1]);
+          gz += pair * (pvz[j] - v[2]);
+        }
+        else
+        {
+          fx += pair * (pvx[j] - v[0]);
+          fy += pair * (pvy[j] - v[1]);
+          fz += pair * (pvz[j] - v[2]);
+        }
+      }
+    }
+    if constexpr (Tension)
+    {
+      const float d = k.h2 - r2[j];
+      const float g = pinv[j] * d * d;
+      nx += g * dx;
+      ny += g * dy;
+      nz += g * dz;
+      lap += pinv[j] * d * (3.0f * k.h2 - 7.0f * r2[j]); // the particle itself counts here (r = 0)
+    }
+  }
+  PairSums sums;
+  sums.force[0] = fx;
+  sums.force[1] = fy;
+  sums.force[2] = fz;
+  sums.viscous[0] = gx;
+  sums.viscous[1] = gy;
+  sums.viscous[2] = gz;
+  sums.normal[0] = nx;
+  sums.normal[1] = ny;
+  sums.normal[2] = nz;
+  sums.laplacian = lap;
+  return sums;
+}
+
+template <bool Pressure, bool Viscosity, bool Tension>
+void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const float* inverseDensity)
+{
+  const SpikyKernel spiky(p.smoothingLength);
+  const ViscosityKernel viscous(p.smoothingLength);
+  const Poly6Kernel poly6(p.smoothingLength);
+  PairConstants k;
+  k.h = p.smoothingLength;
+  k.h2 = k.h * k.h;
+  // Smallest distance divided by; pairs closer than this push along a direction of zero length.
+  k.minDistance = 1e-6f * k.h;
+  // a_i(pressure) = -sum_j m (p_i + p_j) / (2 rho_i rho_j) grad W_spiky, grad W = dW/dr r_ij / r,
+  // dW/dr = -3 c (h - r)^2, so the pair term is +1.5 c m (p_i + p_j)/(rho_i rho_j) (h - r)^2 r_ij / r.
+  k.pressureScale = 1.5f * spiky.coefficient * p.particleMass;
+  // a_i(viscosity) = mu / rho_i sum_j m (v_j - v_i) / rho_j lap W, lap W = lc (h - r).
+  k.viscosityScale = p.viscosity * p.particleMass * viscous.laplacianCoefficient;
+  // Colour field c = sum_j m / rho_j W_poly6: grad W = -6 c (h² - r²)² r_ij, lap W = -6 c (h² - r²)(3h² - 7r²).
+  const float colourScale = -6.0f * poly6.coefficient * p.particleMass;
+  const float threshold = p.surfaceThreshold / p.smoothingLength;
+  const float sigma = p.surfaceTension;
+
+  forEachParticleByCell(grid, s, k.h, detail::threadCount(p),
+    { s.vx.data(), s.vy.data(), s.vz.data(), s.pressure.data(), inverseDensity },
+    [&](CandidateBuffer& candidates, std::uint32_t i)
+    {
+      const float position[3] = { s.x[i], s.y[i], s.z[i] };
+      const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
+      const float pi = s.pressure[i];
+      PairSums sum = pairSums<Pressure, Viscosity, Tension>(candidates, position, velocity, pi, k);
+      // Mirror images: the pair term of x_i with R x_j equals R times the term of R x_i with x_j
+      // (R is a reflection, its own inverse); scalars are unchanged. An image's velocity is S v_j
+      // (S diagonal, +-1): sum w (S v_j - v_i) = S sum w (v_j - S v_i), so the query moves with
+      // S v_i and the viscous sum maps back with S.
+      const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, k.h, p.noSlipWalls());
+      for (int m = 0; m < mirrors.count; ++m)
+      {
+        float image[3], imageVelocity[3];
+        for (int a = 0; a < 3; ++a)
+        {
+          image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
+          imageVelocity[a] = mirrors.velocityScale[m][a] * velocity[a];
+        }
+        // Free-slip images (S = R) keep the one combined sum; no-slip ones sum viscosity apart.
+        const PairSums g = mirrors.noSlip(m)
+          ? pairSums<Pressure, Viscosity, Tension, true>(candidates, image, imageVelocity, pi, k)
+          : pairSums<Pressure, Viscosity, Tension>(candidates, image, imageVelocity, pi, k);
+        for (int a = 0; a < 3; ++a)
+        {
+          sum.force[a] += mirrors.scale[m][a] * g.force[a];
+          sum.viscous[a] += mirrors.velocityScale[m][a] * g.viscous[a];
+          sum.normal[a] += mirrors.scale[m][a] * g.normal[a];
+        }
+        sum.laplacian += g.laplacian;
+      }
+      const float inv = inverseDensity[i];
+      float a[3] = { (sum.force[0] + sum.viscous[0]) * inv + p.gravity[0],
+        (sum.force[1] + sum.viscous[1]) * inv + p.gravity[1], (sum.force[2] + sum.viscous[2]) * inv + p.gravity[2] };
+      if constexpr (Tension)
+      {
+        // Müller's surface force density -sigma lap(c) n / |n|, only where |n| marks a surface.
+        const float n[3] = { colourScale * sum.normal[0], colourScale * sum.normal[1], colourScale * sum.normal[2] };
+        const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (length > threshold)
+        {
+          const float scale = -sigma * colourScale * sum.laplacian / length * inv;
+          for (int d = 0; d < 3; ++d)
+          {
+            a[d] += scale * n[d];
+          }
+        }
+      }
+      s.ax[i] = a[0];
+      s.ay[i] = a[1];
+      s.az[i] = a[2];
+    });
+}
+
+using Pass = void (*)(const NeighbourGrid&, ParticleState&, const SPHParameters&, const float*);
+template <bool Pressure>
+Pass choosePass(bool viscosity, bool tension)
+{
+  if (viscosity)
+  {
+    return tension ? accelerationPass<Pressure, true, true> : accelerationPass<Pressure, true, false>;
+  }
+  return tension ? accelerationPass<Pressure, false, true> : accelerationPass<Pressure, false, false>;
+}
+} // namespace
+
+void SPHSolver::computeAccelerations(bool withPressure)
+{
+  ParticleState& s = this->State;
+  const SPHParameters& p = this->Parameters;
+  const bool viscosity = p.viscosity > 0.0f;
+  const bool tension = p.surfaceTension > 0.0f;
+  const std::size_t n = s.size();
+  const int threads = threadCount(p);
+  if (!withPressure && !viscosity && !tension)
+  {
+    // Nothing between particles: gravity alone, no neighbour pass.
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i)
+    {
+      s.ax[i] = p.gravity[0];
+      s.ay[i] = p.gravity[1];
+      s.az[i] = p.gravity[2];
+    }
+    return;
+  }
+  this->InverseDensity.resize(n);
+  float* inverseDensity = this->InverseDensity.data();
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i)
+  {
+    inverseDensity[i] = 1.0f / s.density[i]; // density > 0: every particle counts itself
+  }
+  const Pass pass = withPressure ? choosePass<true>(viscosity, tension) : choosePass<false>(viscosity, tension);
+  pass(this->Grid, s, p, inverseDensity);
+}
+} // namespace parafluid::sph

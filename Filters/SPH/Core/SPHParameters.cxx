@@ -1,0 +1,195 @@
+#include "parafluid/sph/SPHParameters.h"
+
+#include "parafluid/common/Kernels.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace parafluid::sph
+{
+namespace
+{
+bool positiveFinite(float v)
+{
+  return std::isfinite(v) && v > 0.0f;
+}
+}
+
+std::string SPHParameters::validate() const
+{
+  if (!positiveFinite(smoothingLength))
+  {
+    return "SmoothingLength must be a positive number of metres, got " + std::to_string(smoothingLength);
+  }
+  if (!positiveFinite(restDensity))
+  {
+    return "RestDensity must be positive (kg/m^3), got " + std::to_string(restDensity);
+  }
+  if (!std::isfinite(gasStiffness) || gasStiffness < 0.0f)
+  {
+    return "GasStiffness must be zero or positive (m^2/s^2), got " + std::to_string(gasStiffness);
+  }
+  if (!std::isfinite(viscosity) || viscosity < 0.0f)
+  {
+    return "Viscosity must be zero or positive (Pa s), got " + std::to_string(viscosity);
+  }
+  if (!std::isfinite(surfaceTension) || surfaceTension < 0.0f)
+  {
+    return "SurfaceTension must be zero or positive (N/m), got " + std::to_string(surfaceTension);
+  }
+  if (!std::isfinite(surfaceThreshold) || surfaceThreshold < 0.0f)
+  {
+    return "SurfaceThreshold must be zero or positive, got " + std::to_string(surfaceThreshold);
+  }
+  if (!positiveFinite(timeStep))
+  {
+    return "TimeStep must be a positive number of seconds, got " + std::to_string(timeStep);
+  }
+  if (!positiveFinite(maxTimeStep))
+  {
+    return "MaxTimeStep must be a positive number of seconds, got " + std::to_string(maxTimeStep);
+  }
+  if (!positiveFinite(cflNumber) || cflNumber > 2.0f)
+  {
+    return "CFLNumber must lie in (0, 2], got " + std::to_string(cflNumber);
+  }
+  if (!positiveFinite(densityTolerance) || densityTolerance >= 1.0f)
+  {
+    return "DensityTolerance must lie in (0, 1) (a fraction of rest density), got " + std::to_string(densityTolerance);
+  }
+  if (!positiveFinite(divergenceTolerance) || divergenceTolerance >= 1.0f)
+  {
+    return "DivergenceTolerance must lie in (0, 1), got " + std::to_string(divergenceTolerance);
+  }
+  if (maxPressureIterations < 1 || maxPressureIterations > 100000)
+  {
+    return "MaxPressureIterations must lie in [1, 100000], got " + std::to_string(maxPressureIterations);
+  }
+  if (!positiveFinite(particleMass))
+  {
+    return "ParticleMass must be positive (kg), got " + std::to_string(particleMass);
+  }
+  for (float g : gravity)
+  {
+    if (!std::isfinite(g))
+    {
+      return "Gravity must be finite";
+    }
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    const float lo = domainBounds[2 * a];
+    const float hi = domainBounds[2 * a + 1];
+    if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi))
+    {
+      return "DomainBounds must give min < max on every axis (axis " + std::to_string(a) + ": " +
+        std::to_string(lo) + " .. " + std::to_string(hi) + ")";
+    }
+  }
+  if (!std::isfinite(wallRestitution) || wallRestitution < 0.0f || wallRestitution > 1.0f)
+  {
+    return "WallRestitution must lie in [0, 1], got " + std::to_string(wallRestitution);
+  }
+  if (!positiveFinite(wallKinematicViscosity) || wallKinematicViscosity > 1.0f)
+  {
+    return "WallKinematicViscosity must lie in (0, 1] m^2/s (water: 1e-6), got " +
+      std::to_string(wallKinematicViscosity);
+  }
+  if (!std::isfinite(boundaryDamping) || boundaryDamping < 0.0f || boundaryDamping > 1.0f)
+  {
+    return "BoundaryDamping must lie in [0, 1], got " + std::to_string(boundaryDamping);
+  }
+  if (threads < 0)
+  {
+    return "threads must be 0 (default) or positive";
+  }
+  if (pressureSolver == PressureSolver::DFSPH)
+  {
+    // The Jacobi pressure solves use a diagonal factor that is tight enough at h = 2 spacings; with
+    // wider kernels they overshoot and diverge within a step (h = 3 spacings blows up at once, and
+    // 2.5 already leaves a resting column 20 % off hydrostatic).
+    const float ratio = smoothingLength / latticeSpacingForMass(particleMass, smoothingLength, restDensity, densityKernel());
+    if (!(ratio <= 2.25f))
+    {
+      return "DFSPH needs SmoothingLength of at most 2.25 particle spacings (2 is the default), got " +
+        std::to_string(ratio) + "; lower it or use WCSPH";
+    }
+  }
+  return {};
+}
+
+float latticeParticleMass(float spacing, float smoothingLength, float restDensity, DensityKernel kernel)
+{
+  if (!positiveFinite(spacing) || !positiveFinite(smoothingLength) || !positiveFinite(restDensity))
+  {
+    throw std::invalid_argument("particle mass: spacing, smoothing length and rest density must be positive");
+  }
+  if (smoothingLength / spacing > 50.0f)
+  {
+    throw std::invalid_argument("particle mass: smoothing length is more than 50 particle spacings");
+  }
+  const Poly6Kernel poly6(smoothingLength);
+  const CubicSplineKernel cubic(smoothingLength);
+  const int reach = static_cast<int>(std::ceil(smoothingLength / spacing));
+  double sum = 0.0;
+  for (int k = -reach; k <= reach; ++k)
+  {
+    for (int j = -reach; j <= reach; ++j)
+    {
+      for (int i = -reach; i <= reach; ++i)
+      {
+        const double r2 = (double(i) * i + double(j) * j + double(k) * k) * double(spacing) * spacing;
+        sum += kernel == DensityKernel::Poly6 ? poly6.valueFromSquared(static_cast<float>(r2))
+                                              : cubic.value(static_cast<float>(std::sqrt(r2)));
+      }
+    }
+  }
+  return static_cast<float>(restDensity / sum);
+}
+
+float latticeSpacingForMass(float particleMass, float smoothingLength, float restDensity, DensityKernel kernel)
+{
+  // The lattice mass grows with the spacing; bisect between h / 20 and h.
+  float lo = smoothingLength / 20.0f, hi = smoothingLength;
+  for (int k = 0; k < 40; ++k)
+  {
+    const float mid = 0.5f * (lo + hi);
+    (latticeParticleMass(mid, smoothingLength, restDensity, kernel) < particleMass ? lo : hi) = mid;
+  }
+  return 0.5f * (lo + hi);
+}
+
+float latticeGradientCorrection(float spacing, float smoothingLength, DensityKernel kernel)
+{
+  if (!positiveFinite(spacing) || !positiveFinite(smoothingLength) || smoothingLength / spacing > 50.0f)
+  {
+    return 1.0f;
+  }
+  const Poly6Kernel poly6(smoothingLength);
+  const CubicSplineKernel cubic(smoothingLength);
+  const int reach = static_cast<int>(std::ceil(smoothingLength / spacing));
+  double sum = 0.0, moment = 0.0;
+  for (int k = -reach; k <= reach; ++k)
+  {
+    for (int j = -reach; j <= reach; ++j)
+    {
+      for (int i = -reach; i <= reach; ++i)
+      {
+        const double r = std::sqrt(double(i) * i + double(j) * j + double(k) * k) * spacing;
+        const auto rf = static_cast<float>(r);
+        sum += kernel == DensityKernel::Poly6 ? poly6.valueFromSquared(rf * rf) : cubic.value(rf);
+        if (r > 0.0)
+        {
+          const double dWdr = kernel == DensityKernel::Poly6 ? poly6.gradientFactorFromSquared(rf * rf) * r
+                                                             : cubic.radialDerivative(rf);
+          const double dz = double(k) * spacing;
+          moment -= dWdr / r * dz * dz; // -(dW/dz)(z_i - z_j) with z_i - z_j = -dz
+        }
+      }
+    }
+  }
+  // V = 1 / sum (the volume that gives rest density), so C = moment / sum.
+  const double c = moment / sum;
+  return c > 0.0 ? static_cast<float>(1.0 / c) : 1.0f;
+}
+} // namespace parafluid::sph

@@ -1,0 +1,493 @@
+#include "parafluid/sph/SPHSolver.h"
+
+#include "parafluid/common/TriangleBoundary.h"
+#include "parafluid/sph/WallMirrors.h"
+#include "private/NeighbourCandidates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace parafluid::sph
+{
+using detail::permute;
+using detail::threadCount;
+
+SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial, std::shared_ptr<const TriangleBoundary> boundary)
+  : Parameters(parameters)
+  , State(std::move(initial))
+  , Boundary(std::move(boundary))
+{
+  const std::string problem = this->Parameters.validate();
+  if (!problem.empty())
+  {
+    throw std::invalid_argument("SPH: " + problem);
+  }
+  const std::size_t n = this->State.x.size();
+  if (this->State.y.size() != n || this->State.z.size() != n)
+  {
+    throw std::invalid_argument("SPH: position arrays have different lengths");
+  }
+  const bool hasVelocity = this->State.vx.size() == n && this->State.vy.size() == n && this->State.vz.size() == n;
+  const bool hasId = this->State.id.size() == n;
+  const bool hasIndex = this->State.originalIndex.size() == n;
+  if (!hasVelocity && !(this->State.vx.empty() && this->State.vy.empty() && this->State.vz.empty()))
+  {
+    throw std::invalid_argument("SPH: velocity arrays do not match the particle count");
+  }
+  std::vector<std::int64_t> ids;
+  std::vector<std::uint32_t> indices;
+  if (hasId)
+  {
+    ids.swap(this->State.id);
+  }
+  if (hasIndex)
+  {
+    indices.swap(this->State.originalIndex);
+  }
+  this->State.resize(n); // zero velocity when none was given; ids and indices default to the index
+  if (hasId)
+  {
+    this->State.id.swap(ids);
+  }
+  if (hasIndex)
+  {
+    this->State.originalIndex.swap(indices);
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const float s = this->State.x[i] + this->State.y[i] + this->State.z[i] + this->State.vx[i] + this->State.vy[i] +
+      this->State.vz[i];
+    if (!std::isfinite(s))
+    {
+      throw std::invalid_argument("SPH: particle " + std::to_string(i) + " (id " + std::to_string(this->State.id[i]) +
+        ") has a NaN or infinite position or velocity");
+    }
+  }
+  // Particles that start outside the domain are reflected inside, as the walls would do.
+  this->drift(0.0f);
+  this->sortByCell();
+  const SPHParameters& p = this->Parameters;
+  this->ParticleSpacing = latticeSpacingForMass(p.particleMass, p.smoothingLength, p.restDensity, p.densityKernel());
+  if (this->Parameters.pressureSolver == PressureSolver::DFSPH)
+  {
+    this->GradientCorrection = latticeGradientCorrection(this->ParticleSpacing, p.smoothingLength, p.densityKernel());
+    this->DensityStiffness.assign(n, 0.0f);
+    this->DivergenceStiffness.assign(n, 0.0f);
+    this->computeDensityAndFactor();
+    this->computeAccelerations(false);
+  }
+  else
+  {
+    this->computeDensityAndPressure();
+    this->computeAccelerations(true);
+  }
+  this->measureCompression();
+}
+
+std::int64_t SPHSolver::advance(double duration, const std::function<bool(double)>& progress)
+{
+  if (!(duration >= 0.0) || !std::isfinite(duration))
+  {
+    throw std::invalid_argument("SPH: the time to advance must be a non-negative number of seconds");
+  }
+  const double begin = this->Time, end = this->Time + duration;
+  std::int64_t taken = 0;
+  ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  const int threads = threadCount(this->Parameters);
+  this->PressureImpulse.assign(s.size(), 0.0f);
+  // A step this much shorter than the longest allowed one means forces have blown up; stop rather
+  // than crawl forever.
+  const double smallest = 1e-7 * std::min(this->Parameters.maxTimeStep, this->Parameters.timeStep);
+  while (this->Time < end)
+  {
+    const double remaining = end - this->Time;
+    const double dt = this->step(remaining);
+    ++taken;
+    const auto weight = static_cast<float>(dt);
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      this->PressureImpulse[i] += weight * s.pressure[i];
+    }
+    if (dt >= remaining)
+    {
+      this->Time = end; // exactly, whatever the rounding of the sum
+    }
+    if (dt < smallest && dt < remaining)
+    {
+      throw std::runtime_error("SPH became unstable at t = " + std::to_string(this->Time) +
+        " s: the adaptive time step fell to " + std::to_string(dt) +
+        " s; lower GasStiffness or raise Viscosity");
+    }
+    if (progress && taken % 8 == 0 && !progress(duration > 0.0 ? 1.0 - (end - this->Time) / duration : 1.0))
+    {
+      break;
+    }
+  }
+  const double elapsed = this->Time - begin;
+  if (elapsed > 0.0)
+  {
+    const auto scale = static_cast<float>(1.0 / elapsed);
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      s.pressure[i] = scale * this->PressureImpulse[i];
+    }
+  }
+  this->PressureImpulse.clear(); // step() on its own leaves each step's pressure
+  return taken;
+}
+
+double SPHSolver::step(double maxStep)
+{
+  try
+  {
+    if (this->Parameters.pressureSolver == PressureSolver::DFSPH)
+    {
+      this->stepDFSPH(maxStep);
+    }
+    else
+    {
+      this->stepWCSPH(this->chooseTimeStep(maxStep));
+    }
+  }
+  catch (const std::invalid_argument&)
+  {
+    // The neighbour grid refuses non-finite positions: the step blew up before the check below.
+    throw std::runtime_error("SPH became unstable at step " + std::to_string(this->Steps) +
+      " (non-finite positions): turn on AdaptiveTimeStep or reduce TimeStep or GasStiffness, or raise Viscosity");
+  }
+  ++this->Steps;
+  this->checkFinite();
+  this->measureCompression();
+  return this->Last.timeStep;
+}
+
+double SPHSolver::maxAcceleration() const
+{
+  const ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  float a2 = 0.0f;
+#pragma omp parallel for schedule(static) reduction(max : a2) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    a2 = std::max(a2, s.ax[i] * s.ax[i] + s.ay[i] * s.ay[i] + s.az[i] * s.az[i]);
+  }
+  return std::sqrt(static_cast<double>(a2));
+}
+
+double SPHSolver::proposedTimeStep() const
+{
+  const SPHParameters& p = this->Parameters;
+  if (!p.adaptiveTimeStep)
+  {
+    return p.timeStep;
+  }
+  const ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  float v2 = 0.0f;
+#pragma omp parallel for schedule(static) reduction(max : v2) num_threads(threadCount(p))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    v2 = std::max(v2, s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+  }
+  const double h = p.smoothingLength;
+  double dt = p.maxTimeStep;
+  // CFL: information (sound for WCSPH, the flow itself for incompressible DFSPH) may cross only a
+  // fraction lambda of the kernel radius per step.
+  const double c = p.pressureSolver == PressureSolver::WCSPH ? std::sqrt(static_cast<double>(p.gasStiffness)) : 0.0;
+  const double speed = c + std::sqrt(static_cast<double>(v2));
+  if (speed > 0.0)
+  {
+    dt = std::min(dt, p.cflNumber * h / speed);
+  }
+  if (p.viscosity > 0.0f)
+  {
+    // Explicit diffusion is stable for dt nu S < 1, S the sum of Müller's Laplacian weights over a
+    // neighbourhood: about 15 / h^2, up to twice that beside a wall's mirror images. Kept at 0.75.
+    dt = std::min(dt, h * h * p.restDensity / (40.0 * p.viscosity));
+  }
+  const double a = this->maxAcceleration();
+  if (a > 0.0) // a particle may not move more than ~h/16 from its acceleration alone
+  {
+    dt = std::min(dt, 0.25 * std::sqrt(h / a));
+  }
+  if (p.surfaceTension > 0.0f) // capillary waves (Brackbill et al. 1992)
+  {
+    dt = std::min(dt, std::sqrt(p.restDensity * h * h * h / (2.0 * kPiF * p.surfaceTension)));
+  }
+  return dt;
+}
+
+double SPHSolver::chooseTimeStep(double remaining) const
+{
+  const double dt = this->proposedTimeStep();
+  if (!this->Parameters.adaptiveTimeStep)
+  {
+    // Fixed steps: equal steps that fit the remaining time exactly (TimeStep 2e-4 over 4e-3 s is
+    // 20 steps of exactly 2e-4, whatever the float rounding of 2e-4).
+    const double steps = std::max(1.0, std::ceil(remaining / dt - 1e-6));
+    return remaining / steps;
+  }
+  // Land exactly on the end time without a sliver of a last step: split the last two evenly.
+  if (remaining <= dt)
+  {
+    return remaining;
+  }
+  if (remaining < 2.0 * dt)
+  {
+    return 0.5 * remaining;
+  }
+  return dt;
+}
+
+void SPHSolver::checkFinite() const
+{
+  // A blown-up simulation shows as a non-finite velocity; stop rather than hand on NaN.
+  const auto n = static_cast<std::int64_t>(this->State.size());
+  const float* vx = this->State.vx.data();
+  const float* vy = this->State.vy.data();
+  const float* vz = this->State.vz.data();
+  double total = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : total) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    total += std::fabs(vx[i]) + std::fabs(vy[i]) + std::fabs(vz[i]);
+  }
+  if (!std::isfinite(total))
+  {
+    throw std::runtime_error("SPH became unstable at step " + std::to_string(this->Steps) +
+      " (non-finite velocity): turn on AdaptiveTimeStep or reduce TimeStep or GasStiffness, or raise Viscosity");
+  }
+}
+
+void SPHSolver::measureCompression()
+{
+  const auto n = static_cast<std::int64_t>(this->State.size());
+  const float* rho = this->State.density.data();
+  const float rho0 = this->Parameters.restDensity;
+  double total = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : total) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    total += std::max(rho[i] - rho0, 0.0f);
+  }
+  this->Last.meanCompression = n > 0 ? total / (static_cast<double>(n) * rho0) : 0.0;
+}
+
+void SPHSolver::sortByCell()
+{
+  ParticleState& s = this->State;
+  this->Grid.build(s.x.data(), s.y.data(), s.z.data(), s.size(), this->Parameters.smoothingLength);
+  const auto& order = this->Grid.sortedOrder();
+  const int threads = threadCount(this->Parameters);
+  for (auto* a : { &s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz })
+  {
+    permute(*a, this->ScratchFloat, order, threads);
+  }
+  if (this->PressureImpulse.size() == s.size())
+  {
+    permute(this->PressureImpulse, this->ScratchFloat, order, threads);
+  }
+  if (this->Parameters.pressureSolver == PressureSolver::DFSPH)
+  {
+    // DFSPH sorts in the middle of a step: the accelerations summed so far and the warm starts move
+    // with their particles.
+    for (auto* a : { &s.ax, &s.ay, &s.az, &this->DensityStiffness, &this->DivergenceStiffness })
+    {
+      if (a->size() == s.size())
+      {
+        permute(*a, this->ScratchFloat, order, threads);
+      }
+    }
+  }
+  permute(s.id, this->ScratchId, order, threads);
+  permute(s.originalIndex, this->ScratchIndex, order, threads);
+  // Densities and pressures are recomputed from the sorted positions next.
+}
+
+void SPHSolver::kick(float dt)
+{
+  ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  float* vx = s.vx.data();
+  float* vy = s.vy.data();
+  float* vz = s.vz.data();
+  const float* ax = s.ax.data();
+  const float* ay = s.ay.data();
+  const float* az = s.az.data();
+#pragma omp parallel for simd schedule(static) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    vx[i] += dt * ax[i];
+    vy[i] += dt * ay[i];
+    vz[i] += dt * az[i];
+  }
+}
+
+void SPHSolver::drift(float dt)
+{
+  ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  const auto& b = this->Parameters.domainBounds;
+  const float restitution = this->Parameters.wallRestitution;
+  const TriangleBoundary* mesh = this->Boundary && this->Boundary->triangleCount() > 0 ? this->Boundary.get() : nullptr;
+  const float damping = this->Parameters.boundaryDamping;
+  // Particles are put back this far off a mesh, so the next step starts on a definite side of it.
+  const float offset = 1e-3f * this->Parameters.smoothingLength;
+  float* position[3] = { s.x.data(), s.y.data(), s.z.data() };
+  float* velocity[3] = { s.vx.data(), s.vy.data(), s.vz.data() };
+#pragma omp parallel for schedule(static) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    const float from[3] = { position[0][i], position[1][i], position[2][i] };
+    float to[3];
+    float v[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      float xa = from[a] + dt * velocity[a][i];
+      float va = velocity[a][i];
+      // Damped reflection: a particle that left the box has its overshoot mirrored back inside and
+      // its normal velocity reversed and scaled, so walls take energy out instead of adding it.
+      // Not clamped onto the wall: a particle on the plane would coincide with its own mirror
+      // image, which then could not push it.
+      if (xa < b[2 * a])
+      {
+        xa = std::min(b[2 * a] + restitution * (b[2 * a] - xa), b[2 * a + 1]);
+        va = va < 0.0f ? -restitution * va : va;
+      }
+      else if (xa > b[2 * a + 1])
+      {
+        xa = std::max(b[2 * a + 1] - restitution * (xa - b[2 * a + 1]), b[2 * a]);
+        va = va > 0.0f ? -restitution * va : va;
+      }
+      to[a] = xa;
+      v[a] = va;
+    }
+    // The box is convex and both ends of the move are inside it, so the mesh can only move the end
+    // point back towards the start, except by the small offset, which the clamp takes care of.
+    if (mesh && mesh->resolve(from, to, v, damping, offset))
+    {
+      float clamped[3];
+      bool moved = false;
+      for (int a = 0; a < 3; ++a)
+      {
+        clamped[a] = std::clamp(to[a], b[2 * a], b[2 * a + 1]);
+        moved = moved || clamped[a] != to[a];
+      }
+      // Clamping into the box can push a particle back across the mesh where the mesh leaves the
+      // box (a sphere cut by a wall); then it stays where it was, which is on the right side.
+      parafluid::TriangleBoundary::Crossing crossing;
+      if (moved && mesh->firstCrossing(from, clamped, crossing))
+      {
+        std::copy(from, from + 3, clamped);
+      }
+      std::copy(clamped, clamped + 3, to);
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      position[a][i] = to[a];
+      velocity[a][i] = v[a];
+    }
+  }
+}
+
+std::vector<std::uint32_t> SPHSolver::neighbourCounts() const
+{
+  const ParticleState& s = this->State;
+  std::vector<std::uint32_t> counts(s.size(), 0);
+  const float h2 = this->Parameters.smoothingLength * this->Parameters.smoothingLength;
+  detail::forEachParticleByCell(this->Grid, s, this->Parameters.smoothingLength, threadCount(this->Parameters), {},
+    [&](detail::CandidateBuffer& candidates, std::uint32_t i)
+    {
+      const float q[3] = { s.x[i], s.y[i], s.z[i] };
+      counts[i] = candidates.findHits(q, h2) - 1; // the particle itself is a candidate
+    });
+  return counts;
+}
+
+std::vector<float> SPHSolver::smoothedPressure() const
+{
+  const ParticleState& s = this->State;
+  const SPHParameters& p = this->Parameters;
+  std::vector<float> volume(s.size()), smoothed(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    volume[i] = p.particleMass / s.density[i];
+  }
+  const float h2 = p.smoothingLength * p.smoothingLength;
+  detail::forEachParticleByCell(this->Grid, s, p.smoothingLength, threadCount(p), { volume.data(), s.pressure.data() },
+    [&](detail::CandidateBuffer& c, std::uint32_t i)
+    {
+      const float position[3] = { s.x[i], s.y[i], s.z[i] };
+      float weighted = 0.0f, weights = 0.0f;
+      auto accumulate = [&](const float q[3])
+      {
+        const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data();
+        const float *v = c.channel[0].data(), *pj = c.channel[1].data();
+        float a = 0.0f, b = 0.0f;
+#pragma omp simd reduction(+ : a, b)
+        for (std::uint32_t j = 0; j < c.size; ++j)
+        {
+          const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
+          const float d = std::max(h2 - (dx * dx + dy * dy + dz * dz), 0.0f);
+          const float w = v[j] * d * d * d; // poly6 without its constant, which cancels
+          a += w * pj[j];
+          b += w;
+        }
+        weighted += a;
+        weights += b;
+      };
+      accumulate(position);
+      const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, p.smoothingLength);
+      for (int m = 0; m < mirrors.count; ++m)
+      {
+        float image[3];
+        for (int a = 0; a < 3; ++a)
+        {
+          image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
+        }
+        accumulate(image);
+      }
+      smoothed[i] = weights > 0.0f ? weighted / weights : s.pressure[i];
+    });
+  return smoothed;
+}
+
+double SPHSolver::kineticEnergy() const
+{
+  const ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  double sum = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : sum) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    sum += static_cast<double>(s.vx[i]) * s.vx[i] + static_cast<double>(s.vy[i]) * s.vy[i] +
+      static_cast<double>(s.vz[i]) * s.vz[i];
+  }
+  return 0.5 * this->Parameters.particleMass * sum;
+}
+
+double SPHSolver::bytesPerParticle() const
+{
+  const std::size_t n = this->State.size();
+  if (n == 0)
+  {
+    return 0.0;
+  }
+  std::size_t total = this->State.bytes() + this->ScratchFloat.capacity() * sizeof(float) +
+    this->ScratchId.capacity() * sizeof(std::int64_t) + this->ScratchIndex.capacity() * sizeof(std::uint32_t) +
+    this->InverseDensity.capacity() * sizeof(float) + this->Grid.bytes() +
+    this->NeighbourCount.capacity() * sizeof(std::uint16_t);
+  for (const auto* a : { &this->Factor, &this->DensityRate, &this->Stiffness, &this->DensityStiffness,
+         &this->DivergenceStiffness })
+  {
+    total += a->capacity() * sizeof(float);
+  }
+  return static_cast<double>(total) / static_cast<double>(n);
+}
+} // namespace parafluid::sph

@@ -1,0 +1,111 @@
+#pragma once
+// Parameters of the SPH solver: Müller et al. (2003) weakly compressible SPH or Bender & Koschier
+// (2015) divergence-free SPH. SI units throughout.
+#include "parafluid/common/Kernels.h"
+
+#include <array>
+#include <string>
+
+namespace parafluid::sph
+{
+enum class PressureSolver
+{
+  WCSPH, // Müller's equation of state p = k (rho - rho0), explicit
+  DFSPH  // divergence-free SPH: density and divergence solves, incompressible within a tolerance
+};
+
+enum class WallFriction
+{
+  FreeSlip,
+  NoSlip,
+  LogLaw
+};
+
+struct SPHParameters
+{
+  PressureSolver pressureSolver = PressureSolver::WCSPH;
+  float smoothingLength = 0.04f;  // h [m]: kernel support radius (about 2 particle spacings)
+  float restDensity = 1000.0f;    // rho0 [kg/m^3]
+  float gasStiffness = 1000.0f;   // k [m^2/s^2] in p = k (rho - rho0); sqrt(k) is the sound speed (WCSPH)
+  // mu [Pa s]: Müller's viscosity coefficient; 3.5 is the paper's water value. It is not water's
+  // physical 1e-3: the term also damps the acoustic noise of a weakly compressible fluid.
+  float viscosity = 3.5f;
+  // sigma [N/m]: surface tension of Müller's colour-field model (water-air: 0.0728); 0 skips it.
+  float surfaceTension = 0.0f;
+  // A particle is on the surface when |grad c| > surfaceThreshold / h (grad c ~ 1/h across a surface).
+  float surfaceThreshold = 0.1f;
+  float particleMass = 0.0f;      // m [kg]; must be set (see latticeParticleMass)
+  std::array<float, 3> gravity = { 0.0f, 0.0f, -9.81f };               // [m/s^2]
+  std::array<float, 6> domainBounds = { 0.f, 1.f, 0.f, 1.f, 0.f, 1.f }; // xmin,xmax,ymin,ymax,zmin,zmax [m]
+  float wallRestitution = 0.5f;   // fraction of the normal velocity kept when bouncing off a wall
+  // Tangential stress of the box walls on the fluid (the normal condition is the same for all):
+  //  - FreeSlip: none; the fluid slides along the walls;
+  //  - NoSlip: the fluid sticks, through the viscous term with reversed-velocity wall images (see
+  //    WallMirrors.h). Right for a fluid whose viscosity is resolved (honey, lava, slow flow); with
+  //    the default artificial 3.5 Pa s it brakes water about as much as a 3500 times thicker liquid;
+  //  - LogLaw: the turbulent law of the wall (TurbulentWallLaw.h) with the fluid's molecular
+  //    kinematic viscosity wallKinematicViscosity, applied to the layer of particles within one
+  //    spacing of a wall: the unresolved boundary layer of real water.
+  WallFriction wallFriction = WallFriction::FreeSlip;
+  // Which walls the friction acts on, in the order xmin, xmax, ymin, ymax, zmin, zmax (a symmetry
+  // plane, for example the side walls of a slab that stands in for a 2-D flow, stays free-slip).
+  std::array<bool, 6> frictionWalls = { true, true, true, true, true, true };
+  float wallKinematicViscosity = 1.0e-6f; // nu [m^2/s] for LogLaw; water at 20 °C is 1.0e-6
+  float boundaryDamping = 0.5f;   // fraction of the normal velocity lost when bouncing off a boundary mesh
+
+  // Time stepping. With adaptiveTimeStep the step is the smallest of the CFL condition
+  // lambda h / (c + v_max) (c = sqrt(k) for WCSPH, 0 for DFSPH), the viscous condition
+  // h^2 rho0 / (40 mu), the force condition 0.25 sqrt(h / a_max), the capillary condition
+  // sqrt(rho0 h^3 / (2 pi sigma)), and maxTimeStep; else it is timeStep.
+  bool adaptiveTimeStep = true;
+  float cflNumber = 0.2f;         // lambda, relative to the support radius h (= 0.4 particle spacings)
+  float maxTimeStep = 0.005f;     // [s]
+  float timeStep = 2.0e-4f;       // dt [s] when adaptiveTimeStep is off
+
+  // DFSPH: the density solve iterates until the mean compression (rho* - rho0) / rho0 is below
+  // densityTolerance; the divergence solve until the mean dt (D rho / D t) / rho0 is below
+  // divergenceTolerance. Either stops after maxPressureIterations.
+  float densityTolerance = 0.001f;
+  float divergenceTolerance = 0.001f;
+  int maxPressureIterations = 100;
+
+  /// Free-surface particles miss neighbours, so their density is below rho0; negative pressure
+  /// would pull them into clumps (tensile instability). Clamping p >= 0 avoids it.
+  bool clampNegativePressure = true;
+  int threads = 0;                // OpenMP threads; 0 = the OpenMP default
+
+  /// The kernel that measures density for the chosen pressure solver.
+  DensityKernel densityKernel() const
+  {
+    return pressureSolver == PressureSolver::DFSPH ? DensityKernel::CubicSpline : DensityKernel::Poly6;
+  }
+  /// The walls whose images carry the no-slip velocity (all false unless wallFriction is NoSlip).
+  std::array<bool, 6> noSlipWalls() const
+  {
+    std::array<bool, 6> walls = {};
+    if (wallFriction == WallFriction::NoSlip)
+    {
+      walls = frictionWalls;
+    }
+    return walls;
+  }
+  /// Empty when usable, else a sentence naming the first bad parameter.
+  std::string validate() const;
+};
+
+/// Mass that makes a particle inside a cubic lattice of the given spacing have exactly rest density
+/// when density is summed with the given kernel of radius h (the plain rho0 * spacing^3 is off by a
+/// few percent for h = 2 spacings, which would make a block at rest expand or shrink at t = 0).
+float latticeParticleMass(float spacing, float smoothingLength, float restDensity,
+  DensityKernel kernel = DensityKernel::Poly6);
+
+/// The spacing of the cubic lattice on which particles of this mass have rest density with the
+/// given kernel (the inverse of latticeParticleMass).
+float latticeSpacingForMass(float particleMass, float smoothingLength, float restDensity, DensityKernel kernel);
+
+/// 1 / C, where C = -sum_j V (z_i - z_j) dW/dz over a rest lattice (V the particle volume) is what
+/// the discrete SPH gradient returns for the linear field z; exactly 1 for a continuous kernel, but
+/// 1.02 for the cubic spline at h = 2 spacings. Scaling pressure forces by it makes the discrete
+/// gradient of a linear pressure (hydrostatics) exact on the rest lattice.
+float latticeGradientCorrection(float spacing, float smoothingLength, DensityKernel kernel);
+} // namespace parafluid::sph

@@ -1,0 +1,125 @@
+#pragma once
+// SPH fluid in an axis-aligned box, optionally with a triangle-mesh boundary, advanced by one of two
+// pressure solvers (SPHParameters::pressureSolver):
+//  - WCSPH, Müller, Charypar & Gross (SCA 2003): density by poly6, p = k (rho - rho0) with the spiky
+//    gradient, velocity-Verlet leapfrog (kick-drift-kick);
+//  - DFSPH, Bender & Koschier (SCA 2015 / TVCG 2017): cubic-spline kernel, a density solve before
+//    the position update and a divergence solve after it, both warm-started from the last step.
+// Both share the neighbour grid, the box walls (mirror images plus damped reflection), the mesh
+// boundary, Müller's viscosity and colour-field surface tension, and the adaptive time step.
+// Passes a scene does not need are skipped: viscosity when mu = 0, the colour field when sigma = 0.
+// The state is kept sorted by grid cell so neighbour loops read memory contiguously.
+#include "parafluid/common/NeighbourGrid.h"
+#include "parafluid/common/ParticleState.h"
+#include "parafluid/sph/SPHParameters.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+
+namespace parafluid
+{
+class TriangleBoundary;
+}
+
+namespace parafluid::sph
+{
+class SPHSolver
+{
+public:
+  /// Takes the initial state (positions, velocities, ids; the rest is computed) and an optional
+  /// boundary mesh. Throws std::invalid_argument for bad parameters or non-finite input.
+  SPHSolver(const SPHParameters& parameters, ParticleState initial,
+    std::shared_ptr<const TriangleBoundary> boundary = nullptr);
+
+  /// Advances exactly `duration` seconds in as many steps as the time-step control needs (the last
+  /// steps are shortened to land on the end time). `progress(fraction)` is called every few steps
+  /// and stops the advance when it returns false. Returns the number of steps taken. Throws
+  /// std::runtime_error when the simulation becomes unstable. Afterwards each particle's pressure
+  /// is its time-weighted mean over the steps taken: DFSPH's per-step pressure is an impulse that
+  /// also removes the last step's density error in one step (so it swings from step to step, the
+  /// more the shorter the step), and WCSPH's rings acoustically; the mean is what moved the fluid.
+  std::int64_t advance(double duration, const std::function<bool(double)>& progress = {});
+  /// One step of at most maxStep seconds; returns the step taken [s]. Pressure is that step's.
+  double step(double maxStep = 1e30);
+  /// The step the time-step control would take now [s] (WCSPH; DFSPH adds non-pressure forces first).
+  double proposedTimeStep() const;
+
+  const ParticleState& state() const { return this->State; }
+  const SPHParameters& parameters() const { return this->Parameters; }
+  std::int64_t stepCount() const { return this->Steps; }
+  double time() const { return this->Time; }
+
+  struct StepStatistics
+  {
+    double timeStep = 0.0;
+    int densityIterations = 0;     // DFSPH only
+    int divergenceIterations = 0;  // DFSPH only
+    /// Mean over all particles of max(rho - rho0, 0) / rho0 after the step (measured, not predicted).
+    double meanCompression = 0.0;
+  };
+  const StepStatistics& lastStep() const { return this->Last; }
+
+  /// Neighbours of each particle within h (itself excluded), in state order. A separate pass:
+  /// computed only when called.
+  std::vector<std::uint32_t> neighbourCounts() const;
+  /// The pressure field at each particle, in state order [Pa]: the SPH (Shepard) interpolation of
+  /// the particles' pressures over each neighbourhood. It drops the layer-by-layer alternating
+  /// pattern that a collocated SPH pressure gradient cannot see (it exerts no force, so neither
+  /// solver removes it) and that makes single-particle pressures noisy. A separate pass: computed
+  /// only when called.
+  std::vector<float> smoothedPressure() const;
+  /// Kinetic energy [J].
+  double kineticEnergy() const;
+  /// Bytes held per particle by the state, scratch and the neighbour grid.
+  double bytesPerParticle() const;
+
+private:
+  void sortByCell();
+  void checkFinite() const;
+  double chooseTimeStep(double remaining) const;
+  double maxAcceleration() const;
+  void kick(float dt);
+  void drift(float dt);
+  /// The LogLaw wall shear over dt, implicit in the tangential velocity (WallFriction.cxx).
+  void applyWallFriction(float dt);
+  void measureCompression();
+
+  // WCSPH (SPHForces.cxx)
+  void stepWCSPH(double dt);
+  void computeDensityAndPressure();
+  /// Viscosity, surface tension, gravity and (when withPressure) the equation-of-state pressure
+  /// into State.a*; each pass is compiled in only when its coefficient is non-zero.
+  void computeAccelerations(bool withPressure);
+
+  // DFSPH (DivergenceFreeSolver.cxx)
+  void stepDFSPH(double remaining);
+  void computeDensityAndFactor();
+  void warmStart(std::vector<float>& accumulated, float dt);
+  int solveDensity(float dt);
+  int solveDivergence(float dt);
+  /// Sum over neighbours j of m (v_i - v_j) . grad W_ij into DensityRate (D rho / D t).
+  void computeDensityRate();
+  /// v_i -= dt sum_j m (k_i + k_j) grad W_ij with k = Stiffness.
+  void applyPressureImpulse(float dt);
+
+  SPHParameters Parameters;
+  ParticleState State;
+  std::shared_ptr<const TriangleBoundary> Boundary;
+  NeighbourGrid Grid;
+  std::vector<float> ScratchFloat;
+  std::vector<std::int64_t> ScratchId;
+  std::vector<std::uint32_t> ScratchIndex;
+  std::vector<float> InverseDensity;
+  // DFSPH: alpha factor, D rho / D t, the stiffness of the current iteration, and the accumulated
+  // stiffness of both solves (the warm start of the next step; p = rho k).
+  std::vector<float> Factor, DensityRate, Stiffness, DensityStiffness, DivergenceStiffness;
+  std::vector<std::uint16_t> NeighbourCount; // DFSPH: neighbours incl. images, for the surface test
+  std::vector<float> PressureImpulse; // sum of p dt over the steps of advance() [Pa s]
+  float GradientCorrection = 1.0f; // DFSPH pressure forces, see latticeGradientCorrection
+  float ParticleSpacing = 0.0f;    // [m] edge of the cube a particle fills at rest density
+  std::int64_t Steps = 0;
+  double Time = 0.0;
+  StepStatistics Last;
+};
+} // namespace parafluid::sph
