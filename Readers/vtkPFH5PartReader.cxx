@@ -2,7 +2,7 @@
 
 #include "H5Handle.h"
 #include "H5PartLayout.h"
-#include "vtkPFParticleArrays.h"
+#include "ParticleArrays.h"
 
 #include "vtkDataArraySelection.h"
 #include "vtkDoubleArray.h"
@@ -399,7 +399,7 @@ int vtkPFH5PartReader::RequestData(vtkInformation*, vtkInformationVector**, vtkI
 
   // Stable ids: the file's, else the index in the file.
   vtkNew<vtkTypeInt64Array> ids;
-  ids->SetName("id");
+  ids->SetName(parafluid::contract::Id);
   ids->SetNumberOfValues(n);
   if (!layout.idDataset.empty())
   {
@@ -442,14 +442,14 @@ int vtkPFH5PartReader::RequestData(vtkInformation*, vtkInformationVector**, vtkI
     output->Initialize();
     return 0;
   }
-  if (auto* velocity = output->GetPointData()->GetArray("velocity"))
+  if (auto* velocity = output->GetPointData()->GetArray(parafluid::contract::Velocity))
   {
     output->GetPointData()->SetVectors(velocity);
   }
 
   readSceneConstants(file, output->GetFieldData());
   vtkNew<vtkDoubleArray> timeArray;
-  timeArray->SetName("time");
+  timeArray->SetName(parafluid::contract::Time);
   timeArray->InsertNextValue(time);
   output->GetFieldData()->AddArray(timeArray);
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);

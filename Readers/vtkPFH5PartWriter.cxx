@@ -1,7 +1,7 @@
 #include "vtkPFH5PartWriter.h"
 
 #include "H5Handle.h"
-#include "vtkPFParticleArrays.h"
+#include "ParticleArrays.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -289,7 +289,7 @@ bool vtkPFH5PartWriter::WriteStep(vtkDataObject* input, int stepIndex, double ti
       source->DeepCopy(array);
       typesFor(source, memoryType, fileType);
     }
-    if (name == "id" && source->GetNumberOfComponents() == 1 && fileType != H5T_STD_I64LE)
+    if (name == parafluid::contract::Id && source->GetNumberOfComponents() == 1 && fileType != H5T_STD_I64LE)
     {
       auto ids = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(VTK_LONG_LONG));
       ids->DeepCopy(source);
@@ -310,7 +310,7 @@ bool vtkPFH5PartWriter::WriteStep(vtkDataObject* input, int stepIndex, double ti
     for (int k = 0; fieldData && k < fieldData->GetNumberOfArrays(); ++k)
     {
       vtkDataArray* array = fieldData->GetArray(k);
-      if (!array || !array->GetName() || std::string(array->GetName()) == "time" || array->GetNumberOfValues() == 0)
+      if (!array || !array->GetName() || std::string(array->GetName()) == parafluid::contract::Time || array->GetNumberOfValues() == 0)
       {
         continue;
       }

@@ -1,6 +1,6 @@
 #include "vtkPFFluidFlowLines.h"
 
-#include "vtkPFParticleArrays.h"
+#include "ParticleArrays.h"
 
 #include "parafluid/npr/FlowLines.h"
 
@@ -15,8 +15,10 @@
 vtkStandardNewMacro(vtkPFFluidFlowLines);
 
 vtkPFFluidFlowLines::vtkPFFluidFlowLines()
+  : vtkPFParticleAlgorithm("Fluid Flow Lines")
 {
   this->SetNumberOfInputPorts(2);
+  this->SetGatheredInputPort(1); // the seeds
 }
 
 vtkPFFluidFlowLines::~vtkPFFluidFlowLines() = default;
@@ -41,41 +43,18 @@ int vtkPFFluidFlowLines::FillInputPortInformation(int port, vtkInformation* info
   return 1;
 }
 
-int vtkPFFluidFlowLines::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkPFFluidFlowLines::RequestParticles(
+  const Particles& particles, vtkInformationVector**, vtkInformation*, vtkPolyData* output)
 {
-  vtkPointSet* local = vtkPointSet::GetData(inputVector[0]);
-  vtkPointSet* localSeeds = inputVector[1]->GetNumberOfInformationObjects() > 0 ? vtkPointSet::GetData(inputVector[1]) : nullptr;
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!local)
-  {
-    vtkErrorMacro("Fluid Flow Lines: the input is not a point set (particles)");
-    return 0;
-  }
-  bool tracesHere = true;
-  vtkSmartPointer<vtkDataObject> gathered = parafluid::vtk::gatherToFirstProcess(local, tracesHere);
-  vtkSmartPointer<vtkDataObject> gatheredSeeds;
-  if (localSeeds)
-  {
-    bool seedsHere = true;
-    gatheredSeeds = parafluid::vtk::gatherToFirstProcess(localSeeds, seedsHere);
-  }
-  if (!tracesHere)
-  {
-    output->Initialize();
-    return 1;
-  }
-  vtkPointSet* input = vtkPointSet::SafeDownCast(gathered);
-  vtkPointSet* seeds = vtkPointSet::SafeDownCast(gatheredSeeds);
-  const vtkIdType n = input ? input->GetNumberOfPoints() : 0;
+  vtkPointSet* input = particles.Gathered;
+  vtkPointSet* seeds = particles.Extra;
+  const vtkIdType n = input->GetNumberOfPoints();
 
   parafluid::npr::FlowLineParameters p;
-  const double d = this->ParticleSpacing > 0.0
-    ? this->ParticleSpacing
-    : parafluid::vtk::fieldValue(local->GetFieldData(), "particle_spacing", 0.0);
+  // Without particles there is nothing to trace, and no spacing is needed.
+  const double d = n > 0 ? this->ParticleSpacingOr(this->ParticleSpacing, particles.Local, "ParticleSpacing") : 0.0;
   if (n > 0 && !(d > 0.0))
   {
-    vtkErrorMacro("Fluid Flow Lines: set ParticleSpacing (the distance between neighbouring particles, metres); the "
-                  "input has no particle_spacing field data to take it from");
     return 0;
   }
   p.kernelRadius = this->KernelRadius * (d > 0.0 ? d : 1.0);
@@ -87,7 +66,7 @@ int vtkPFFluidFlowLines::RequestData(vtkInformation*, vtkInformationVector** inp
   const std::string problem = parafluid::npr::validate(p);
   if (!problem.empty())
   {
-    vtkErrorMacro("Fluid Flow Lines: " << problem);
+    this->ReportError(problem);
     return 0;
   }
   if (n == 0)
@@ -98,8 +77,8 @@ int vtkPFFluidFlowLines::RequestData(vtkInformation*, vtkInformationVector** inp
   vtkDataArray* velocityArray = input->GetPointData()->GetArray(this->VelocityArray.c_str());
   if (!velocityArray || velocityArray->GetNumberOfComponents() != 3)
   {
-    vtkErrorMacro("Fluid Flow Lines: the particles have no 3-component point array '" << this->VelocityArray
-                                                                                       << "' (choose it in VelocityArray)");
+    this->ReportError("the particles have no 3-component point array '" + this->VelocityArray +
+      "' (choose it in VelocityArray)");
     return 0;
   }
   std::vector<float> positionStorage, seedStorage;

@@ -15,15 +15,17 @@
 #define vtkPFFluidFlowLines_h
 
 #include "ParaFluidNPRFiltersModule.h"
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkPFParticleAlgorithm.h"
+
+#include "ParticleContract.h"
 
 #include <string>
 
-class PARAFLUIDNPRFILTERS_EXPORT vtkPFFluidFlowLines : public vtkPolyDataAlgorithm
+class PARAFLUIDNPRFILTERS_EXPORT vtkPFFluidFlowLines : public vtkPFParticleAlgorithm
 {
 public:
   static vtkPFFluidFlowLines* New();
-  vtkTypeMacro(vtkPFFluidFlowLines, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkPFFluidFlowLines, vtkPFParticleAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Point array holding the particles' velocity (3 components) [m/s].
@@ -54,9 +56,10 @@ protected:
   vtkPFFluidFlowLines();
   ~vtkPFFluidFlowLines() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestParticles(const Particles& particles, vtkInformationVector** inputVector, vtkInformation* outInfo,
+    vtkPolyData* output) override;
 
-  std::string VelocityArray = "velocity";
+  std::string VelocityArray = parafluid::contract::Velocity;
   double ParticleSpacing = 0.0;
   double KernelRadius = 2.0;
   int SeedStride = 10;

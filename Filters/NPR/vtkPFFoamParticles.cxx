@@ -1,6 +1,6 @@
 #include "vtkPFFoamParticles.h"
 
-#include "vtkPFParticleArrays.h"
+#include "ParticleArrays.h"
 
 #include "parafluid/npr/FoamClassifier.h"
 
@@ -50,7 +50,7 @@ int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inpu
   const vtkIdType n = input->GetNumberOfPoints();
   const double d = this->ParticleSpacing > 0.0
     ? this->ParticleSpacing
-    : parafluid::vtk::fieldValue(input->GetFieldData(), "particle_spacing", 0.0);
+    : parafluid::vtk::fieldValue(input->GetFieldData(), parafluid::contract::ParticleSpacing, 0.0);
   if (n > 0 && !(d > 0.0))
   {
     vtkErrorMacro("Foam Particles: set ParticleSpacing (the distance between neighbouring particles, metres); the "

@@ -19,6 +19,8 @@
 #include "vtkPassInputTypeAlgorithm.h"
 
 #include <memory>
+#include "ParticleContract.h"
+
 #include <string>
 
 // (Nested namespace blocks: VTK's wrapper parser rejects `namespace a::b`.)
@@ -67,7 +69,7 @@ protected:
   double CrestThreshold = 1.0;
   int SprayNeighbours = 4;
   int PersistFrames = 3;
-  std::string IdArray = "id";
+  std::string IdArray = parafluid::contract::Id;
 
 private:
   vtkPFFoamParticles(const vtkPFFoamParticles&) = delete;

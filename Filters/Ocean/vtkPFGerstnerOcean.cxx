@@ -1,6 +1,8 @@
 #include "vtkPFGerstnerOcean.h"
 
-#include "vtkPFBathymetry.h"
+#include "ParticleContract.h"
+
+#include "HeightFieldFromData.h"
 
 #include "parafluid/ocean/Bathymetry.h"
 #include "parafluid/ocean/GerstnerOcean.h"
@@ -140,10 +142,10 @@ int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inpu
   if (floorData)
   {
     std::string error;
-    floor = vtkPFBathymetryFrom(floorData, this->SeaLevel, this->BathymetryResolution, error);
+    floor = parafluid::vtk::heightFieldFrom(floorData, this->SeaLevel, this->BathymetryResolution, error);
     if (!floor)
     {
-      vtkErrorMacro(<< error);
+      vtkErrorMacro("Bathymetry: " << error);
       return 0;
     }
   }
@@ -245,7 +247,7 @@ int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inpu
     output->GetPointData()->AddArray(depth);
   }
   vtkNew<vtkDoubleArray> timeArray;
-  timeArray->SetName("time");
+  timeArray->SetName(parafluid::contract::Time);
   timeArray->InsertNextValue(time);
   output->GetFieldData()->AddArray(timeArray);
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);

@@ -1,6 +1,6 @@
 #include "vtkPFParticleBlock.h"
 
-#include "vtkPFParticleArrays.h"
+#include "ParticleArrays.h"
 
 #include "parafluid/common/ParticleLattice.h"
 #include "parafluid/sph/SPHParameters.h"
@@ -66,16 +66,16 @@ int vtkPFParticleBlock::RequestData(vtkInformation*, vtkInformationVector**, vtk
     output->GetPointData()->AddArray(a);
   };
   vtkNew<vtkFloatArray> velocity;
-  velocity->SetName("velocity");
+  velocity->SetName(parafluid::contract::Velocity);
   velocity->SetNumberOfComponents(3);
   velocity->SetNumberOfTuples(n);
   velocity->FillValue(0.0f);
   output->GetPointData()->SetVectors(velocity);
-  addScalar("density", static_cast<float>(this->RestDensity));
-  addScalar("pressure", 0.0f);
-  addScalar("mass", mass);
+  addScalar(parafluid::contract::Density, static_cast<float>(this->RestDensity));
+  addScalar(parafluid::contract::Pressure, 0.0f);
+  addScalar(parafluid::contract::Mass, mass);
   vtkNew<vtkTypeInt64Array> ids;
-  ids->SetName("id");
+  ids->SetName(parafluid::contract::Id);
   ids->SetNumberOfValues(n);
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -84,10 +84,10 @@ int vtkPFParticleBlock::RequestData(vtkInformation*, vtkInformationVector**, vtk
   output->GetPointData()->AddArray(ids);
 
   vtkFieldData* fd = output->GetFieldData();
-  parafluid::vtk::setFieldValue(fd, "particle_spacing", &this->Spacing, 1);
-  parafluid::vtk::setFieldValue(fd, "smoothing_length", &h, 1);
-  parafluid::vtk::setFieldValue(fd, "rest_density", &this->RestDensity, 1);
-  parafluid::vtk::setFieldValue(fd, "domain_bounds", this->DomainBounds, 6);
+  parafluid::vtk::setFieldValue(fd, parafluid::contract::ParticleSpacing, &this->Spacing, 1);
+  parafluid::vtk::setFieldValue(fd, parafluid::contract::SmoothingLength, &h, 1);
+  parafluid::vtk::setFieldValue(fd, parafluid::contract::RestDensity, &this->RestDensity, 1);
+  parafluid::vtk::setFieldValue(fd, parafluid::contract::DomainBounds, this->DomainBounds, 6);
   return 1;
 }
 

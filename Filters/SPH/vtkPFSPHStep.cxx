@@ -1,33 +1,32 @@
 #include "vtkPFSPHStep.h"
 
-#include "vtkPFParticleArrays.h"
+#include "ParticleArrays.h"
+#include "ParticleStateArrays.h"
 #include "vtkPFTriangleBoundary.h"
 
 #include "parafluid/sph/SPHParameters.h"
 #include "parafluid/sph/SPHSolver.h"
 
 #include "vtkDataArray.h"
-#include "vtkFloatArray.h"
+#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkTypeInt64Array.h"
 
 #include <algorithm>
 #include <cmath>
 #include <exception>
 #include <optional>
 
-using parafluid::ParticleState;
-using parafluid::sph::PressureSolver;
+namespace contract = parafluid::contract;
+using parafluid::sph::PressureSolverType;
 using parafluid::sph::SPHParameters;
 using parafluid::sph::SPHSolver;
+using parafluid::sph::WallFriction;
 
 struct vtkPFSPHStep::Cache
 {
@@ -41,9 +40,58 @@ struct vtkPFSPHStep::Cache
 vtkStandardNewMacro(vtkPFSPHStep);
 
 vtkPFSPHStep::vtkPFSPHStep()
-  : Cached(std::make_unique<Cache>())
+  : vtkPFParticleAlgorithm("SPH Step")
+  , Cached(std::make_unique<Cache>())
 {
   this->SetNumberOfInputPorts(2);
+  // Zero: taken from the input's field data when the simulation starts.
+  this->Parameters.smoothingLength = 0.0f;
+  this->Parameters.particleMass = 0.0f;
+  this->Parameters.domainBounds.fill(0.0f);
+}
+
+void vtkPFSPHStep::SetPressureSolver(int solver)
+{
+  const int clamped = std::clamp(solver, 0, 1);
+  this->SetParameter(this->Parameters.pressureSolver, static_cast<PressureSolverType>(clamped));
+}
+
+void vtkPFSPHStep::SetWallFriction(int friction)
+{
+  const int clamped = std::clamp(friction, 0, 2);
+  this->SetParameter(this->Parameters.wallFriction, static_cast<WallFriction>(clamped));
+}
+
+void vtkPFSPHStep::SetWallRestitution(double value)
+{
+  this->SetParameter(this->Parameters.wallRestitution, std::clamp(value, 0.0, 1.0));
+}
+
+void vtkPFSPHStep::SetGravity(double x, double y, double z)
+{
+  const double g[3] = { x, y, z };
+  for (int a = 0; a < 3; ++a)
+  {
+    this->SetParameter(this->Parameters.gravity[a], g[a]);
+  }
+}
+
+void vtkPFSPHStep::SetDomainBounds(double x0, double x1, double y0, double y1, double z0, double z1)
+{
+  const double b[6] = { x0, x1, y0, y1, z0, z1 };
+  for (int k = 0; k < 6; ++k)
+  {
+    this->SetParameter(this->Parameters.domainBounds[k], b[k]);
+  }
+}
+
+void vtkPFSPHStep::SetFrictionWalls(int x0, int x1, int y0, int y1, int z0, int z1)
+{
+  const int walls[6] = { x0, x1, y0, y1, z0, z1 };
+  for (int k = 0; k < 6; ++k)
+  {
+    this->SetParameter(this->Parameters.frictionWalls[k], walls[k] != 0);
+  }
 }
 
 vtkPFSPHStep::~vtkPFSPHStep() = default;
@@ -92,199 +140,147 @@ int vtkPFSPHStep::RequestUpdateExtent(
   return 1;
 }
 
-namespace
+long long vtkPFSPHStep::RequestedOutputIndex(vtkInformation* outInfo) const
 {
-/// Copies a 1- or 3-component input array into float vectors; false when absent or mis-shaped.
-bool readComponents(vtkDataArray* array, int components, std::vector<float>* targets[])
-{
-  if (!array || array->GetNumberOfComponents() != components)
+  if (!outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
   {
-    return false;
-  }
-  const vtkIdType n = array->GetNumberOfTuples();
-  for (int c = 0; c < components; ++c)
-  {
-    targets[c]->resize(static_cast<std::size_t>(n));
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      (*targets[c])[static_cast<std::size_t>(i)] = static_cast<float>(array->GetComponent(i, c));
-    }
-  }
-  return true;
-}
-} // namespace
-
-int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  vtkPointSet* local = vtkPointSet::GetData(inputVector[0]);
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkPolyData* output = vtkPolyData::GetData(outInfo);
-  if (!local)
-  {
-    vtkErrorMacro("SPH Step: the input is not a point set (particles)");
     return 0;
   }
+  const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+  const long long index = std::llround((t - this->StartTime) / this->OutputInterval);
+  return std::max(0LL, std::min<long long>(index, this->NumberOfOutputs));
+}
+
+int vtkPFSPHStep::RequestParticles(
+  const Particles& particles, vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output)
+{
   this->StepsTakenLastUpdate = 0;
-  // Under MPI the pieces are gathered on process 0, which simulates all particles (a particle
-  // needs its neighbours from every piece; ghost exchange would let each process keep its own).
-  bool simulatesHere = true;
-  vtkSmartPointer<vtkDataObject> gathered = parafluid::vtk::gatherToFirstProcess(local, simulatesHere);
-  if (!simulatesHere)
-  {
-    output->Initialize();
-    return 1;
-  }
-  vtkPointSet* input = vtkPointSet::SafeDownCast(gathered);
-  // The gathered copy is new on every update; the input's own MTime says whether it changed.
-  const vtkMTimeType inputTime = local->GetMTime();
   if (!(this->OutputInterval > 0.0) || !std::isfinite(this->OutputInterval))
   {
-    vtkErrorMacro("SPH Step: OutputInterval must be a positive number of seconds, got " << this->OutputInterval);
+    this->ReportError("OutputInterval must be a positive number of seconds, got " + std::to_string(this->OutputInterval));
     return 0;
   }
-  const double interval = this->OutputInterval;
-  long long target = 0;
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) && interval > 0.0)
-  {
-    const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-    target = std::llround((t - this->StartTime) / interval);
-    target = std::max(0LL, std::min<long long>(target, this->NumberOfOutputs));
-  }
+  const long long target = this->RequestedOutputIndex(outInfo);
+  vtkPolyData* boundary = vtkPolyData::GetData(inputVector[1]);
 
-  vtkPolyData* surface = vtkPolyData::GetData(inputVector[1]);
-  const vtkMTimeType boundaryTime = surface ? surface->GetMTime() : 0;
-
+  // Moving forward under the same inputs and properties continues the cached simulation. The
+  // gathered copy is new on every update; the local input's own MTime says whether it changed.
   Cache& cache = *this->Cached;
+  const vtkMTimeType inputTime = particles.Local->GetMTime();
+  const vtkMTimeType boundaryTime = boundary ? boundary->GetMTime() : 0;
   const bool reusable = cache.Solver && cache.InputTime == inputTime && cache.BoundaryTime == boundaryTime &&
     cache.FilterTime == this->GetMTime() && cache.OutputIndex <= target;
   if (!reusable)
   {
-    cache.Solver.reset();
-    vtkFieldData* fd = input->GetFieldData();
-    const double spacing = parafluid::vtk::fieldValue(fd, "particle_spacing", 0.0);
-    SPHParameters p;
-    p.smoothingLength = static_cast<float>(this->SmoothingLength > 0.0
-        ? this->SmoothingLength
-        : parafluid::vtk::fieldValue(fd, "smoothing_length", 2.0 * spacing));
-    p.restDensity = static_cast<float>(this->RestDensity);
-    p.gasStiffness = static_cast<float>(this->GasStiffness);
-    p.pressureSolver = this->PressureSolver == 1 ? PressureSolver::DFSPH : PressureSolver::WCSPH;
-    p.viscosity = static_cast<float>(this->Viscosity);
-    p.surfaceTension = static_cast<float>(this->SurfaceTension);
-    p.adaptiveTimeStep = this->AdaptiveTimeStep;
-    p.cflNumber = static_cast<float>(this->CFLNumber);
-    p.maxTimeStep = static_cast<float>(this->MaxTimeStep);
-    p.timeStep = static_cast<float>(this->TimeStep);
-    p.densityTolerance = static_cast<float>(this->DensityTolerance);
-    p.maxPressureIterations = this->MaxPressureIterations;
-    p.wallRestitution = static_cast<float>(this->WallRestitution);
-    p.wallFriction = this->WallFriction == 2 ? parafluid::sph::WallFriction::LogLaw
-      : this->WallFriction == 1              ? parafluid::sph::WallFriction::NoSlip
-                                             : parafluid::sph::WallFriction::FreeSlip;
-    for (int k = 0; k < 6; ++k)
+    if (!this->StartSimulation(particles.Gathered, boundary))
     {
-      p.frictionWalls[k] = this->FrictionWalls[k] != 0;
-    }
-    p.wallKinematicViscosity = static_cast<float>(this->WallKinematicViscosity);
-    p.boundaryDamping = static_cast<float>(this->BoundaryDamping);
-    for (int a = 0; a < 3; ++a)
-    {
-      p.gravity[a] = static_cast<float>(this->Gravity[a]);
-    }
-    const bool domainGiven = std::any_of(this->DomainBounds, this->DomainBounds + 6, [](double v) { return v != 0.0; });
-    vtkDataArray* domain = vtkArrayDownCast<vtkDataArray>(fd ? fd->GetAbstractArray("domain_bounds") : nullptr);
-    if (!domainGiven && !(domain && domain->GetNumberOfValues() == 6))
-    {
-      vtkErrorMacro("SPH Step: set DomainBounds (xmin xmax ymin ymax zmin zmax, metres); the input has no "
-                    "domain_bounds field data to take them from");
       return 0;
     }
-    for (int k = 0; k < 6; ++k)
-    {
-      p.domainBounds[k] = static_cast<float>(domainGiven ? this->DomainBounds[k] : domain->GetComponent(k / domain->GetNumberOfComponents(), k % domain->GetNumberOfComponents()));
-    }
-    if (this->ParticleMass > 0.0)
-    {
-      p.particleMass = static_cast<float>(this->ParticleMass);
-    }
-    else if (spacing > 0.0 && p.smoothingLength > 0.0f)
-    {
-      try
-      {
-        p.particleMass = parafluid::sph::latticeParticleMass(
-          static_cast<float>(spacing), p.smoothingLength, p.restDensity, p.densityKernel());
-      }
-      catch (const std::exception& e)
-      {
-        vtkErrorMacro("SPH Step: " << e.what());
-        return 0;
-      }
-    }
-    else
-    {
-      vtkErrorMacro("SPH Step: set ParticleMass (kg) and SmoothingLength (m); the input has no particle_spacing "
-                    "field data to derive them from");
-      return 0;
-    }
-
-    ParticleState state;
-    const vtkIdType n = input->GetNumberOfPoints();
-    state.x.resize(static_cast<std::size_t>(n));
-    state.y.resize(static_cast<std::size_t>(n));
-    state.z.resize(static_cast<std::size_t>(n));
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      double x[3];
-      input->GetPoint(i, x);
-      state.x[i] = static_cast<float>(x[0]);
-      state.y[i] = static_cast<float>(x[1]);
-      state.z[i] = static_cast<float>(x[2]);
-    }
-    std::vector<float>* velocity[3] = { &state.vx, &state.vy, &state.vz };
-    readComponents(input->GetPointData()->GetArray("velocity"), 3, velocity);
-    if (vtkDataArray* ids = input->GetPointData()->GetArray("id"))
-    {
-      state.id.resize(static_cast<std::size_t>(n));
-      for (vtkIdType i = 0; i < n; ++i)
-      {
-        state.id[i] = static_cast<std::int64_t>(ids->GetComponent(i, 0));
-      }
-    }
-    std::shared_ptr<const parafluid::TriangleBoundary> boundary;
-    if (surface)
-    {
-      std::string problem;
-      boundary = parafluid::vtk::makeTriangleBoundary(surface, problem);
-      if (!boundary)
-      {
-        vtkErrorMacro("SPH Step: " << problem);
-        return 0;
-      }
-    }
-    try
-    {
-      cache.Solver.emplace(p, std::move(state), std::move(boundary));
-    }
-    catch (const std::exception& e)
-    {
-      vtkErrorMacro("SPH Step: " << e.what());
-      return 0;
-    }
-    cache.OutputIndex = 0;
     cache.InputTime = inputTime;
     cache.BoundaryTime = boundaryTime;
-    cache.FilterTime = this->GetMTime();
   }
+  const int advanced = this->AdvanceTo(target);
+  if (advanced != 1)
+  {
+    return advanced < 0 ? 1 : 0; // an abort is no error, and leaves the output empty
+  }
+  this->WriteOutput(particles.Gathered, target, output);
+  return 1;
+}
 
-  // Advance from the cached output time to the requested one, one output interval at a time, so
-  // that the steps taken (and so the result) do not depend on which times were asked for before.
+bool vtkPFSPHStep::ResolveParameters(vtkFieldData* fd, SPHParameters& p)
+{
+  p = this->Parameters;
+  const double spacing = parafluid::vtk::fieldValue(fd, contract::ParticleSpacing, 0.0);
+  if (!(p.smoothingLength > 0.0f))
+  {
+    p.smoothingLength = static_cast<float>(parafluid::vtk::fieldValue(fd, contract::SmoothingLength, 2.0 * spacing));
+  }
+  const bool domainGiven = std::any_of(p.domainBounds.begin(), p.domainBounds.end(), [](float v) { return v != 0.0f; });
+  vtkDataArray* domain = vtkArrayDownCast<vtkDataArray>(fd ? fd->GetAbstractArray(contract::DomainBounds) : nullptr);
+  if (!domainGiven)
+  {
+    if (!(domain && domain->GetNumberOfValues() == 6))
+    {
+      this->ReportError("set DomainBounds (xmin xmax ymin ymax zmin zmax, metres); the input has no domain_bounds "
+                        "field data to take them from");
+      return false;
+    }
+    const int components = domain->GetNumberOfComponents();
+    for (int k = 0; k < 6; ++k)
+    {
+      p.domainBounds[k] = static_cast<float>(domain->GetComponent(k / components, k % components));
+    }
+  }
+  if (p.particleMass > 0.0f)
+  {
+    return true;
+  }
+  if (!(spacing > 0.0 && p.smoothingLength > 0.0f))
+  {
+    this->ReportError("set ParticleMass (kg) and SmoothingLength (m); the input has no particle_spacing field data "
+                      "to derive them from");
+    return false;
+  }
   try
   {
-    bool aborted = false;
-    const long long intervals = target - cache.OutputIndex;
+    p.particleMass = parafluid::sph::latticeParticleMass(
+      static_cast<float>(spacing), p.smoothingLength, p.restDensity, p.densityKernel());
+  }
+  catch (const std::exception& e)
+  {
+    this->ReportError(e.what());
+    return false;
+  }
+  return true;
+}
+
+bool vtkPFSPHStep::StartSimulation(vtkPointSet* input, vtkPolyData* surface)
+{
+  Cache& cache = *this->Cached;
+  cache.Solver.reset();
+  SPHParameters p;
+  if (!this->ResolveParameters(input->GetFieldData(), p))
+  {
+    return false;
+  }
+  std::shared_ptr<const parafluid::TriangleBoundary> boundary;
+  if (surface)
+  {
+    std::string problem;
+    boundary = parafluid::vtk::makeTriangleBoundary(surface, problem);
+    if (!boundary)
+    {
+      this->ReportError(problem);
+      return false;
+    }
+  }
+  try
+  {
+    cache.Solver.emplace(p, parafluid::vtk::readParticleState(input), std::move(boundary));
+  }
+  catch (const std::exception& e)
+  {
+    this->ReportError(e.what());
+    return false;
+  }
+  cache.OutputIndex = 0;
+  cache.FilterTime = this->GetMTime();
+  return true;
+}
+
+int vtkPFSPHStep::AdvanceTo(long long target)
+{
+  // One output interval at a time, so that the steps taken (and so the result) do not depend on
+  // which times were asked for before.
+  Cache& cache = *this->Cached;
+  const long long intervals = target - cache.OutputIndex;
+  bool aborted = false;
+  try
+  {
     for (long long k = 0; k < intervals && !aborted; ++k)
     {
-      this->StepsTakenLastUpdate += cache.Solver->advance(interval,
+      this->StepsTakenLastUpdate += cache.Solver->advance(this->OutputInterval,
         [this, &aborted, k, intervals](double fraction)
         {
           this->UpdateProgress((static_cast<double>(k) + fraction) / static_cast<double>(intervals));
@@ -292,130 +288,65 @@ int vtkPFSPHStep::RequestData(vtkInformation*, vtkInformationVector** inputVecto
           return !aborted;
         });
     }
-    if (aborted)
-    {
-      // The state is between output times now; drop it so the next update starts cleanly.
-      cache.Solver.reset();
-      return 1;
-    }
   }
   catch (const std::exception& e)
   {
     cache.Solver.reset();
-    vtkErrorMacro("SPH Step: " << e.what());
+    this->ReportError(e.what());
     return 0;
+  }
+  if (aborted)
+  {
+    cache.Solver.reset(); // it is between output times now
+    return -1;
   }
   this->MeanDensityError = cache.Solver->lastStep().meanCompression;
   cache.OutputIndex = target;
+  return 1;
+}
 
+void vtkPFSPHStep::WriteOutput(vtkPointSet* input, long long target, vtkPolyData* output)
+{
   // Output in the input's order and with the input's other arrays.
-  const ParticleState& s = cache.Solver->state();
-  const auto n = static_cast<vtkIdType>(s.size());
+  const SPHSolver& solver = *this->Cached->Solver;
   output->GetPointData()->ShallowCopy(input->GetPointData());
   output->GetFieldData()->ShallowCopy(input->GetFieldData());
-  vtkNew<vtkFloatArray> coordinates;
-  coordinates->SetNumberOfComponents(3);
-  coordinates->SetNumberOfTuples(n);
-  auto vector3 = [&](const char* name) {
-    vtkNew<vtkFloatArray> a;
-    a->SetName(name);
-    a->SetNumberOfComponents(3);
-    a->SetNumberOfTuples(n);
-    output->GetPointData()->AddArray(a);
-    return a->GetPointer(0);
-  };
-  auto scalar = [&](const char* name) {
-    vtkNew<vtkFloatArray> a;
-    a->SetName(name);
-    a->SetNumberOfValues(n);
-    output->GetPointData()->AddArray(a);
-    return a->GetPointer(0);
-  };
-  float* position = coordinates->GetPointer(0);
-  float* velocityOut = vector3("velocity");
-  float* density = scalar("density");
-  // Optional arrays: without them the input's arrays of that name (if any) are dropped too, as they
-  // would describe the start time.
-  float* acceleration = nullptr;
-  float* pressure = nullptr;
-  output->GetPointData()->RemoveArray("acceleration");
-  output->GetPointData()->RemoveArray("pressure");
-  if (this->OutputAcceleration)
-  {
-    acceleration = vector3("acceleration");
-  }
-  std::vector<float> pressureField;
+  std::vector<float> pressure;
+  std::vector<std::uint32_t> neighbours;
+  parafluid::vtk::ParticleOutputArrays extra;
+  extra.acceleration = this->OutputAcceleration;
   if (this->OutputPressure)
   {
-    pressure = scalar("pressure");
-    pressureField = cache.Solver->smoothedPressure();
+    pressure = solver.smoothedPressure();
+    extra.pressure = &pressure;
   }
-  std::vector<std::uint32_t> neighbours;
-  vtkNew<vtkIntArray> neighbourCount;
   if (this->OutputNeighbourCount)
   {
-    neighbours = cache.Solver->neighbourCounts();
-    neighbourCount->SetName("neighbour_count");
-    neighbourCount->SetNumberOfValues(n);
-    output->GetPointData()->AddArray(neighbourCount);
+    neighbours = solver.neighbourCounts();
+    extra.neighbourCount = &neighbours;
   }
-  vtkNew<vtkTypeInt64Array> ids;
-  ids->SetName("id");
-  ids->SetNumberOfValues(n);
-  output->GetPointData()->AddArray(ids);
-  for (vtkIdType k = 0; k < n; ++k)
-  {
-    const vtkIdType i = s.originalIndex[k];
-    position[3 * i + 0] = s.x[k];
-    position[3 * i + 1] = s.y[k];
-    position[3 * i + 2] = s.z[k];
-    velocityOut[3 * i + 0] = s.vx[k];
-    velocityOut[3 * i + 1] = s.vy[k];
-    velocityOut[3 * i + 2] = s.vz[k];
-    if (acceleration)
-    {
-      acceleration[3 * i + 0] = s.ax[k];
-      acceleration[3 * i + 1] = s.ay[k];
-      acceleration[3 * i + 2] = s.az[k];
-    }
-    if (pressure)
-    {
-      pressure[i] = pressureField[k];
-    }
-    if (!neighbours.empty())
-    {
-      neighbourCount->SetValue(i, static_cast<int>(neighbours[k]));
-    }
-    density[i] = s.density[k];
-    ids->SetValue(i, s.id[k]);
-  }
-  output->GetPointData()->SetActiveVectors("velocity");
-  vtkNew<vtkPoints> points;
-  points->SetData(coordinates);
-  output->SetPoints(points);
-  parafluid::vtk::setOneVertexPerPoint(output, n);
+  parafluid::vtk::writeParticleState(solver.state(), extra, output);
 
-  const double time = this->StartTime + static_cast<double>(target) * interval;
-  const SPHParameters& p = cache.Solver->parameters();
+  const double time = this->StartTime + static_cast<double>(target) * this->OutputInterval;
+  const SPHParameters& p = solver.parameters();
   const double h = p.smoothingLength, rho0 = p.restDensity, mass = p.particleMass;
   const double bounds[6] = { p.domainBounds[0], p.domainBounds[1], p.domainBounds[2], p.domainBounds[3],
     p.domainBounds[4], p.domainBounds[5] };
   vtkFieldData* fd = output->GetFieldData();
-  parafluid::vtk::setFieldValue(fd, "time", &time, 1);
-  parafluid::vtk::setFieldValue(fd, "smoothing_length", &h, 1);
-  parafluid::vtk::setFieldValue(fd, "rest_density", &rho0, 1);
-  parafluid::vtk::setFieldValue(fd, "particle_mass", &mass, 1);
-  parafluid::vtk::setFieldValue(fd, "domain_bounds", bounds, 6);
+  parafluid::vtk::setFieldValue(fd, contract::Time, &time, 1);
+  parafluid::vtk::setFieldValue(fd, contract::SmoothingLength, &h, 1);
+  parafluid::vtk::setFieldValue(fd, contract::RestDensity, &rho0, 1);
+  parafluid::vtk::setFieldValue(fd, contract::ParticleMass, &mass, 1);
+  parafluid::vtk::setFieldValue(fd, contract::DomainBounds, bounds, 6);
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
-  return 1;
 }
 
 void vtkPFSPHStep::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "SmoothingLength: " << this->SmoothingLength << "\n";
-  os << indent << "PressureSolver: " << (this->PressureSolver == 1 ? "DFSPH" : "WCSPH") << "\n";
-  os << indent << "AdaptiveTimeStep: " << this->AdaptiveTimeStep << "\n";
-  os << indent << "TimeStep: " << this->TimeStep << "\n";
+  os << indent << "SmoothingLength: " << this->Parameters.smoothingLength << "\n";
+  os << indent << "PressureSolver: " << (this->GetPressureSolver() == 1 ? "DFSPH" : "WCSPH") << "\n";
+  os << indent << "AdaptiveTimeStep: " << this->Parameters.adaptiveTimeStep << "\n";
+  os << indent << "TimeStep: " << this->Parameters.timeStep << "\n";
   os << indent << "OutputInterval: " << this->OutputInterval << "\n";
 }

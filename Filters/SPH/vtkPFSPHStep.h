@@ -20,62 +20,92 @@
 #define vtkPFSPHStep_h
 
 #include "ParaFluidSPHFiltersModule.h"
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkPFParticleAlgorithm.h"
 
-class vtkAlgorithmOutput;
+#include "parafluid/sph/SPHParameters.h"
 
 #include <memory>
 
-class PARAFLUIDSPHFILTERS_EXPORT vtkPFSPHStep : public vtkPolyDataAlgorithm
+class vtkAlgorithmOutput;
+class vtkFieldData;
+class vtkPointSet;
+
+class PARAFLUIDSPHFILTERS_EXPORT vtkPFSPHStep : public vtkPFParticleAlgorithm
 {
 public:
   static vtkPFSPHStep* New();
-  vtkTypeMacro(vtkPFSPHStep, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkPFSPHStep, vtkPFParticleAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  // The solver's parameters are fields of Parameters (parafluid/sph/SPHParameters.h, SI units);
+  // each setter writes its field. Zero SmoothingLength, ParticleMass and DomainBounds mean "from
+  // the input's field data" and are resolved when the simulation starts.
+
   /// Kernel support radius h [m]; 0 = the input's smoothing_length, else 2 particle spacings.
-  vtkSetMacro(SmoothingLength, double);
-  vtkGetMacro(SmoothingLength, double);
+  void SetSmoothingLength(double value) { this->SetParameter(this->Parameters.smoothingLength, value); }
+  double GetSmoothingLength() const { return this->Parameters.smoothingLength; }
   /// rho0 [kg/m^3].
-  vtkSetMacro(RestDensity, double);
-  vtkGetMacro(RestDensity, double);
+  void SetRestDensity(double value) { this->SetParameter(this->Parameters.restDensity, value); }
+  double GetRestDensity() const { return this->Parameters.restDensity; }
   /// k in p = k (rho - rho0) [m^2/s^2 = Pa m^3/kg]; sqrt(k) is the speed of sound.
-  vtkSetMacro(GasStiffness, double);
-  vtkGetMacro(GasStiffness, double);
+  void SetGasStiffness(double value) { this->SetParameter(this->Parameters.gasStiffness, value); }
+  double GetGasStiffness() const { return this->Parameters.gasStiffness; }
   /// Müller's viscosity coefficient mu [Pa s].
-  vtkSetMacro(Viscosity, double);
-  vtkGetMacro(Viscosity, double);
+  void SetViscosity(double value) { this->SetParameter(this->Parameters.viscosity, value); }
+  double GetViscosity() const { return this->Parameters.viscosity; }
   /// 0 = WCSPH (Müller's equation of state), 1 = DFSPH (divergence-free, incompressible).
-  vtkSetClampMacro(PressureSolver, int, 0, 1);
-  vtkGetMacro(PressureSolver, int);
+  void SetPressureSolver(int solver);
+  int GetPressureSolver() const { return static_cast<int>(this->Parameters.pressureSolver); }
   /// Surface tension sigma [N/m] (colour-field model); 0 skips the colour-field pass.
-  vtkSetMacro(SurfaceTension, double);
-  vtkGetMacro(SurfaceTension, double);
+  void SetSurfaceTension(double value) { this->SetParameter(this->Parameters.surfaceTension, value); }
+  double GetSurfaceTension() const { return this->Parameters.surfaceTension; }
   /// Choose each step from the CFL, viscous and force conditions (else use TimeStep).
-  vtkSetMacro(AdaptiveTimeStep, bool);
-  vtkGetMacro(AdaptiveTimeStep, bool);
-  vtkBooleanMacro(AdaptiveTimeStep, bool);
+  void SetAdaptiveTimeStep(bool value) { this->SetParameter(this->Parameters.adaptiveTimeStep, value); }
+  bool GetAdaptiveTimeStep() const { return this->Parameters.adaptiveTimeStep; }
   /// lambda in dt <= lambda h / (c + v_max).
-  vtkSetMacro(CFLNumber, double);
-  vtkGetMacro(CFLNumber, double);
+  void SetCFLNumber(double value) { this->SetParameter(this->Parameters.cflNumber, value); }
+  double GetCFLNumber() const { return this->Parameters.cflNumber; }
   /// Upper limit of the adaptive step [s].
-  vtkSetMacro(MaxTimeStep, double);
-  vtkGetMacro(MaxTimeStep, double);
+  void SetMaxTimeStep(double value) { this->SetParameter(this->Parameters.maxTimeStep, value); }
+  double GetMaxTimeStep() const { return this->Parameters.maxTimeStep; }
   /// Fixed dt [s] when AdaptiveTimeStep is off.
-  vtkSetMacro(TimeStep, double);
-  vtkGetMacro(TimeStep, double);
+  void SetTimeStep(double value) { this->SetParameter(this->Parameters.timeStep, value); }
+  double GetTimeStep() const { return this->Parameters.timeStep; }
+  /// DFSPH: mean density error the solver keeps below (fraction of rest density).
+  void SetDensityTolerance(double value) { this->SetParameter(this->Parameters.densityTolerance, value); }
+  double GetDensityTolerance() const { return this->Parameters.densityTolerance; }
+  /// DFSPH: iteration limit of each solve.
+  void SetMaxPressureIterations(int value) { this->SetParameter(this->Parameters.maxPressureIterations, value); }
+  int GetMaxPressureIterations() const { return this->Parameters.maxPressureIterations; }
+  /// Fraction of the normal velocity lost when a particle hits the Boundary mesh (0..1).
+  void SetBoundaryDamping(double value) { this->SetParameter(this->Parameters.boundaryDamping, value); }
+  double GetBoundaryDamping() const { return this->Parameters.boundaryDamping; }
+  /// [m/s^2]
+  void SetGravity(double x, double y, double z);
+  /// The box the fluid stays in [m]; all zero = the input's domain_bounds field data.
+  void SetDomainBounds(double x0, double x1, double y0, double y1, double z0, double z1);
+  /// [kg]; 0 = the mass that gives rest density on the input's particle_spacing lattice.
+  void SetParticleMass(double value) { this->SetParameter(this->Parameters.particleMass, value); }
+  double GetParticleMass() const { return this->Parameters.particleMass; }
+  /// Fraction of the normal velocity kept when a particle bounces off a wall (clamped to 0..1).
+  void SetWallRestitution(double value);
+  double GetWallRestitution() const { return this->Parameters.wallRestitution; }
+  /// Tangential stress of the walls: 0 free-slip, 1 no-slip (through the viscosity), 2 the
+  /// turbulent law of the wall with WallKinematicViscosity (see parafluid/sph/SPHParameters.h).
+  void SetWallFriction(int friction);
+  int GetWallFriction() const { return static_cast<int>(this->Parameters.wallFriction); }
+  /// Which walls WallFriction acts on (xmin xmax ymin ymax zmin zmax; 1 = on, 0 = free-slip).
+  void SetFrictionWalls(int x0, int x1, int y0, int y1, int z0, int z1);
+  /// [m^2/s] molecular kinematic viscosity for the law of the wall (water at 20 °C: 1e-6).
+  void SetWallKinematicViscosity(double value) { this->SetParameter(this->Parameters.wallKinematicViscosity, value); }
+  double GetWallKinematicViscosity() const { return this->Parameters.wallKinematicViscosity; }
+
   /// Simulated time between two output times [s].
   vtkSetMacro(OutputInterval, double);
   vtkGetMacro(OutputInterval, double);
-  /// DFSPH: mean density error the solver keeps below (fraction of rest density).
-  vtkSetMacro(DensityTolerance, double);
-  vtkGetMacro(DensityTolerance, double);
-  /// DFSPH: iteration limit of each solve.
-  vtkSetMacro(MaxPressureIterations, int);
-  vtkGetMacro(MaxPressureIterations, int);
-  /// Fraction of the normal velocity lost when a particle hits the Boundary mesh (0..1).
-  vtkSetMacro(BoundaryDamping, double);
-  vtkGetMacro(BoundaryDamping, double);
+  /// Number of output times after t0.
+  vtkSetClampMacro(NumberOfOutputs, int, 0, 1000000);
+  vtkGetMacro(NumberOfOutputs, int);
   /// Optional output arrays: computed (or copied) only when on.
   vtkSetMacro(OutputPressure, bool);
   vtkGetMacro(OutputPressure, bool);
@@ -86,31 +116,6 @@ public:
 
   /// Connects the optional boundary surface (input port 1).
   void SetBoundaryConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
-  /// Number of output times after t0.
-  vtkSetClampMacro(NumberOfOutputs, int, 0, 1000000);
-  vtkGetMacro(NumberOfOutputs, int);
-  /// [m/s^2]
-  vtkSetVector3Macro(Gravity, double);
-  vtkGetVector3Macro(Gravity, double);
-  /// The box the fluid stays in [m]; all zero = the input's domain_bounds field data.
-  vtkSetVector6Macro(DomainBounds, double);
-  vtkGetVector6Macro(DomainBounds, double);
-  /// [kg]; 0 = the mass that gives rest density on the input's particle_spacing lattice.
-  vtkSetMacro(ParticleMass, double);
-  vtkGetMacro(ParticleMass, double);
-  /// Fraction of the normal velocity kept when a particle bounces off a wall (0..1).
-  vtkSetClampMacro(WallRestitution, double, 0.0, 1.0);
-  vtkGetMacro(WallRestitution, double);
-  /// Tangential stress of the walls: 0 free-slip, 1 no-slip (through the viscosity), 2 the
-  /// turbulent law of the wall with WallKinematicViscosity (see parafluid/SPHParameters.h).
-  vtkSetClampMacro(WallFriction, int, 0, 2);
-  vtkGetMacro(WallFriction, int);
-  /// Which walls WallFriction acts on (xmin xmax ymin ymax zmin zmax; 1 = on, 0 = free-slip).
-  vtkSetVector6Macro(FrictionWalls, int);
-  vtkGetVector6Macro(FrictionWalls, int);
-  /// [m^2/s] molecular kinematic viscosity for the law of the wall (water at 20 °C: 1e-6).
-  vtkSetMacro(WallKinematicViscosity, double);
-  vtkGetMacro(WallKinematicViscosity, double);
 
   /// Number of SPH steps taken by the last update (0 when it was served from the cache).
   vtkGetMacro(StepsTakenLastUpdate, vtkIdType);
@@ -123,37 +128,41 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestParticles(const Particles& particles, vtkInformationVector** inputVector, vtkInformation* outInfo,
+    vtkPolyData* output) override;
 
 private:
   vtkPFSPHStep(const vtkPFSPHStep&) = delete;
   void operator=(const vtkPFSPHStep&) = delete;
 
-  double SmoothingLength = 0.0;
-  double RestDensity = 1000.0;
-  double GasStiffness = 1000.0;
-  double Viscosity = 3.5;
-  int PressureSolver = 0;
-  double SurfaceTension = 0.0;
-  bool AdaptiveTimeStep = true;
-  double CFLNumber = 0.2;
-  double MaxTimeStep = 0.005;
-  double TimeStep = 2.0e-4;
+  template <class Field, class Value>
+  void SetParameter(Field& field, Value value)
+  {
+    if (field != static_cast<Field>(value))
+    {
+      field = static_cast<Field>(value);
+      this->Modified();
+    }
+  }
+  /// The output index (0 .. NumberOfOutputs) of the time the pipeline asks for.
+  long long RequestedOutputIndex(vtkInformation* outInfo) const;
+  /// The parameters with the automatic values taken from the input's field data; false (after an
+  /// error that names the property to set) when the input cannot supply them.
+  bool ResolveParameters(vtkFieldData* fieldData, parafluid::sph::SPHParameters& resolved);
+  /// A new simulation from the input particles and the optional boundary surface.
+  bool StartSimulation(vtkPointSet* input, vtkPolyData* boundary);
+  /// Steps the cached simulation to output `target`, one output interval at a time: 1 when there,
+  /// 0 after an error, -1 when the user aborted (the simulation is dropped either way).
+  int AdvanceTo(long long target);
+  /// The simulated state into `output`, with the input's other arrays and the scene constants.
+  void WriteOutput(vtkPointSet* input, long long target, vtkPolyData* output);
+
+  parafluid::sph::SPHParameters Parameters;
   double OutputInterval = 0.01;
-  double DensityTolerance = 0.001;
-  int MaxPressureIterations = 100;
-  double BoundaryDamping = 0.5;
+  int NumberOfOutputs = 100;
   bool OutputPressure = true;
   bool OutputAcceleration = false;
   bool OutputNeighbourCount = false;
-  int NumberOfOutputs = 100;
-  double Gravity[3] = { 0.0, 0.0, -9.81 };
-  double DomainBounds[6] = { 0, 0, 0, 0, 0, 0 };
-  double ParticleMass = 0.0;
-  double WallRestitution = 0.5;
-  int WallFriction = 0;
-  int FrictionWalls[6] = { 1, 1, 1, 1, 1, 1 };
-  double WallKinematicViscosity = 1.0e-6;
 
   double StartTime = 0.0;
   bool InputHasTime = false;

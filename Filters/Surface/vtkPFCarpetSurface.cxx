@@ -1,7 +1,7 @@
 #include "vtkPFCarpetSurface.h"
 
-#include "vtkPFBathymetry.h"
-#include "vtkPFParticleArrays.h"
+#include "HeightFieldFromData.h"
+#include "ParticleArrays.h"
 #include "vtkPFSurfaceMeshOutput.h"
 
 #include "parafluid/common/HeightField.h"
@@ -20,7 +20,8 @@
 vtkStandardNewMacro(vtkPFCarpetSurface);
 
 vtkPFCarpetSurface::vtkPFCarpetSurface()
-  : Carpet(new parafluid::surface::CarpetSurface)
+  : vtkPFParticleAlgorithm("Carpet Surface")
+  , Carpet(new parafluid::surface::CarpetSurface)
 {
   this->SetNumberOfInputPorts(2);
 }
@@ -39,31 +40,19 @@ int vtkPFCarpetSurface::FillInputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
-int vtkPFCarpetSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkPFCarpetSurface::RequestParticles(
+  const Particles& particles, vtkInformationVector** inputVector, vtkInformation*, vtkPolyData* output)
 {
-  vtkPointSet* local = vtkPointSet::GetData(inputVector[0]);
   vtkDataObject* terrainData = inputVector[1]->GetNumberOfInformationObjects() > 0
     ? inputVector[1]->GetInformationObject(0)->Get(vtkDataObject::DATA_OBJECT())
     : nullptr;
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!local)
-  {
-    vtkErrorMacro("Carpet Surface: the input is not a point set (particles)");
-    return 0;
-  }
   if (!(this->FallAcceleration >= 0.0) || !(this->MinDepth >= 0.0))
   {
-    vtkErrorMacro("Carpet Surface: FallAcceleration and MinDepth must be zero or positive");
+    this->ReportError("FallAcceleration and MinDepth must be zero or positive");
     return 0;
   }
-  bool buildsHere = true;
-  vtkSmartPointer<vtkDataObject> gathered = parafluid::vtk::gatherToFirstProcess(local, buildsHere);
-  if (!buildsHere)
-  {
-    output->Initialize();
-    return 1;
-  }
-  vtkPointSet* input = vtkPointSet::SafeDownCast(gathered);
+  vtkPointSet* local = particles.Local;
+  vtkPointSet* input = particles.Gathered;
   const vtkIdType n = input ? input->GetNumberOfPoints() : 0;
   const double time = local->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP())
     ? local->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
@@ -82,10 +71,10 @@ int vtkPFCarpetSurface::RequestData(vtkInformation*, vtkInformationVector** inpu
       if (terrainData)
       {
         std::string error;
-        auto terrain = vtkPFBathymetryFrom(terrainData, 0.0, std::max(r, 64), error);
+        auto terrain = parafluid::vtk::heightFieldFrom(terrainData, 0.0, std::max(r, 64), error);
         if (!terrain)
         {
-          vtkErrorMacro("Carpet Surface: Terrain: " << error);
+          this->ReportError("Terrain: " + error);
           return 0;
         }
         double b[4];
@@ -104,7 +93,7 @@ int vtkPFCarpetSurface::RequestData(vtkInformation*, vtkInformationVector** inpu
       else
       {
         vtkDataArray* domain =
-          vtkArrayDownCast<vtkDataArray>(local->GetFieldData() ? local->GetFieldData()->GetAbstractArray("domain_bounds") : nullptr);
+          vtkArrayDownCast<vtkDataArray>(local->GetFieldData() ? local->GetFieldData()->GetAbstractArray(parafluid::contract::DomainBounds) : nullptr);
         if (domain && domain->GetNumberOfValues() == 6)
         {
           for (int k = 0; k < 6; ++k)
@@ -125,8 +114,8 @@ int vtkPFCarpetSurface::RequestData(vtkInformation*, vtkInformationVector** inpu
       }
       if (!(bounds[1] > bounds[0]) || !(bounds[3] > bounds[2]))
       {
-        vtkErrorMacro("Carpet Surface: the domain has no extent in x or y (" << bounds[0] << ".." << bounds[1] << ", "
-                                                                            << bounds[2] << ".." << bounds[3] << ")");
+        this->ReportError("the domain has no extent in x or y (" + std::to_string(bounds[0]) + ".." +
+          std::to_string(bounds[1]) + ", " + std::to_string(bounds[2]) + ".." + std::to_string(bounds[3]) + ")");
         return 0;
       }
       this->Carpet->setGrid(bounds[0], bounds[2], bounds[1], bounds[3], r, std::move(ground));
@@ -142,7 +131,7 @@ int vtkPFCarpetSurface::RequestData(vtkInformation*, vtkInformationVector** inpu
   catch (const std::exception& e)
   {
     this->HasState = false;
-    vtkErrorMacro("Carpet Surface: " << e.what());
+    this->ReportError(e.what());
     return 0;
   }
   std::vector<float> depth;

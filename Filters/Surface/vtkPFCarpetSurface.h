@@ -17,7 +17,7 @@
 #define vtkPFCarpetSurface_h
 
 #include "ParaFluidSurfaceFiltersModule.h"
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkPFParticleAlgorithm.h"
 
 #include <memory>
 
@@ -29,11 +29,11 @@ class CarpetSurface;
 }
 }
 
-class PARAFLUIDSURFACEFILTERS_EXPORT vtkPFCarpetSurface : public vtkPolyDataAlgorithm
+class PARAFLUIDSURFACEFILTERS_EXPORT vtkPFCarpetSurface : public vtkPFParticleAlgorithm
 {
 public:
   static vtkPFCarpetSurface* New();
-  vtkTypeMacro(vtkPFCarpetSurface, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkPFCarpetSurface, vtkPFParticleAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// The ground (port 1): a 2D height image or a terrain surface.
@@ -57,7 +57,8 @@ protected:
   vtkPFCarpetSurface();
   ~vtkPFCarpetSurface() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestParticles(const Particles& particles, vtkInformationVector** inputVector, vtkInformation* outInfo,
+    vtkPolyData* output) override;
 
   int Resolution = 256;
   double FallAcceleration = 9.81;

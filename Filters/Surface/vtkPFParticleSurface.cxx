@@ -1,6 +1,6 @@
 #include "vtkPFParticleSurface.h"
 
-#include "vtkPFParticleArrays.h"
+#include "ParticleArrays.h"
 #include "vtkPFSurfaceMeshOutput.h"
 
 #include "parafluid/surface/ParticleSurface.h"
@@ -13,7 +13,11 @@
 
 vtkStandardNewMacro(vtkPFParticleSurface);
 
-vtkPFParticleSurface::vtkPFParticleSurface() = default;
+vtkPFParticleSurface::vtkPFParticleSurface()
+  : vtkPFParticleAlgorithm("Particle Surface")
+{
+}
+
 vtkPFParticleSurface::~vtkPFParticleSurface() = default;
 
 void vtkPFParticleSurface::AddArrayToInterpolate(const char* name)
@@ -40,42 +44,25 @@ int vtkPFParticleSurface::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-int vtkPFParticleSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkPFParticleSurface::RequestParticles(
+  const Particles& particles, vtkInformationVector**, vtkInformation*, vtkPolyData* output)
 {
-  vtkPointSet* local = vtkPointSet::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  if (!local)
+  vtkPointSet* input = particles.Gathered;
+  parafluid::surface::ParticleSurfaceParameters p;
+  p.particleSpacing = this->ParticleSpacingOr(this->ParticleSpacing, particles.Local, "ParticleSpacing");
+  if (!(p.particleSpacing > 0.0))
   {
-    vtkErrorMacro("Particle Surface: the input is not a point set (particles)");
     return 0;
   }
-  bool buildsHere = true;
-  vtkSmartPointer<vtkDataObject> gathered = parafluid::vtk::gatherToFirstProcess(local, buildsHere);
-  if (!buildsHere)
-  {
-    output->Initialize();
-    return 1;
-  }
-  vtkPointSet* input = vtkPointSet::SafeDownCast(gathered);
-  parafluid::surface::ParticleSurfaceParameters p;
-  p.particleSpacing = this->ParticleSpacing > 0.0
-    ? this->ParticleSpacing
-    : parafluid::vtk::fieldValue(local->GetFieldData(), "particle_spacing", 0.0);
   p.cellSize = this->CellSize;
   p.kernelRadius = this->KernelRadius;
   p.isoValue = this->IsoValue;
   p.smoothingIterations = this->Smoothing;
   p.computeNormals = this->ComputeNormals;
-  if (!(p.particleSpacing > 0.0))
-  {
-    vtkErrorMacro("Particle Surface: set ParticleSpacing (the distance between neighbouring particles, metres); the "
-                  "input has no particle_spacing field data to take it from");
-    return 0;
-  }
   const std::string problem = parafluid::surface::validate(p);
   if (!problem.empty())
   {
-    vtkErrorMacro("Particle Surface: " << problem);
+    this->ReportError(problem);
     return 0;
   }
   // The arrays to interpolate, checked before the long part.
@@ -85,7 +72,7 @@ int vtkPFParticleSurface::RequestData(vtkInformation*, vtkInformationVector** in
     vtkDataArray* array = input ? input->GetPointData()->GetArray(name.c_str()) : nullptr;
     if (!array && input && input->GetNumberOfPoints() > 0)
     {
-      vtkErrorMacro("Particle Surface: the particles have no numeric point array '" << name << "' to interpolate");
+      this->ReportError("the particles have no numeric point array '" + name + "' to interpolate");
       return 0;
     }
     if (array)
@@ -107,7 +94,7 @@ int vtkPFParticleSurface::RequestData(vtkInformation*, vtkInformationVector** in
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro("Particle Surface: " << e.what());
+    this->ReportError(e.what());
     return 0;
   }
   parafluid::vtk::meshToPolyData(mesh, output);

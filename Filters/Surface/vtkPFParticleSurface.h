@@ -15,16 +15,16 @@
 #define vtkPFParticleSurface_h
 
 #include "ParaFluidSurfaceFiltersModule.h"
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkPFParticleAlgorithm.h"
 
 #include <string>
 #include <vector>
 
-class PARAFLUIDSURFACEFILTERS_EXPORT vtkPFParticleSurface : public vtkPolyDataAlgorithm
+class PARAFLUIDSURFACEFILTERS_EXPORT vtkPFParticleSurface : public vtkPFParticleAlgorithm
 {
 public:
   static vtkPFParticleSurface* New();
-  vtkTypeMacro(vtkPFParticleSurface, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkPFParticleSurface, vtkPFParticleAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Particle spacing d [m]; 0 takes it from the input's particle_spacing field data.
@@ -60,7 +60,8 @@ protected:
   vtkPFParticleSurface();
   ~vtkPFParticleSurface() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestParticles(const Particles& particles, vtkInformationVector** inputVector, vtkInformation* outInfo,
+    vtkPolyData* output) override;
 
   double ParticleSpacing = 0.0;
   double CellSize = 0.5;

@@ -29,6 +29,8 @@
 #include "vtkMapper.h"
 
 #include <memory>
+#include "ParticleContract.h"
+
 #include <string>
 
 class vtkOpenGLRenderWindow;
@@ -218,8 +220,8 @@ private:
   int StrokeSeedStride = 3;
   double StrokeDuration = 0.3;
   int MaxStrokes = 4000;
-  std::string StrokeVelocityArray = "velocity";
-  std::string StrokeColorArray = "density";
+  std::string StrokeVelocityArray = parafluid::contract::Velocity;
+  std::string StrokeColorArray = parafluid::contract::Density;
   vtkIdType LastStrokeCount = 0;
   vtkIdType LastStrokeSegmentCount = 0;
   int LastPassCount = 0;

@@ -2,7 +2,7 @@
 
 #include "vtkPFScreenSpaceFluidActor.h"
 #include "vtkPFScreenSpaceFluidMapper.h"
-#include "vtkPFParticleArrays.h"
+#include "ParticleArrays.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkAppendPolyData.h"
@@ -253,7 +253,7 @@ void vtkPFScreenSpaceFluidRepresentation::UpdateRadius(vtkPolyData* particles)
     radius = 1.0;
     if (particles && particles->GetNumberOfPoints() > 0)
     {
-      const double spacing = parafluid::vtk::fieldValue(particles->GetFieldData(), "particle_spacing", 0.0);
+      const double spacing = parafluid::vtk::fieldValue(particles->GetFieldData(), parafluid::contract::ParticleSpacing, 0.0);
       if (spacing > 0.0)
       {
         radius = 0.6 * spacing;

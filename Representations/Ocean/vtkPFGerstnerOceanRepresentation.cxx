@@ -5,7 +5,7 @@
 #include "GerstnerOceanWaves.h"
 #include "vtkPFOceanExposure.h"
 #include "vtkPFOceanTextures.h"
-#include "vtkPFParticleArrays.h"
+#include "ParticleArrays.h"
 
 #include "parafluid/ocean/Bathymetry.h"
 #include "parafluid/ocean/GerstnerOcean.h"

@@ -14,7 +14,7 @@ using namespace parafluid;
 using namespace parafluid;
 using namespace parafluid::sph;
 
-SPHSolver damBreak(std::size_t particles, int threads, PressureSolver solverKind = PressureSolver::WCSPH,
+SPHSolver damBreak(std::size_t particles, int threads, PressureSolverType solverKind = PressureSolverType::WCSPH,
   float surfaceTension = 0.0f, bool adaptive = false)
 {
   // Block of a x 2a x a (x, z, y) layers of spacing d: particles = 2 a^3 / d^3.
@@ -84,7 +84,7 @@ BENCHMARK(BM_SPHStep)
 /// The colour-field pass costs this much when on; with sigma = 0 it is not compiled into the loop.
 void BM_SPHStepWithSurfaceTension(benchmark::State& state)
 {
-  SPHSolver solver = damBreak(static_cast<std::size_t>(state.range(0)), 2, PressureSolver::WCSPH,
+  SPHSolver solver = damBreak(static_cast<std::size_t>(state.range(0)), 2, PressureSolverType::WCSPH,
     state.range(1) ? 0.0728f : 0.0f);
   for (auto _ : state)
   {
@@ -105,7 +105,7 @@ BENCHMARK(BM_SPHStepWithSurfaceTension)
 /// output interval of a dam break (DFSPH takes fewer, dearer steps).
 void BM_AdvanceOutputInterval(benchmark::State& state)
 {
-  const auto kind = state.range(1) ? PressureSolver::DFSPH : PressureSolver::WCSPH;
+  const auto kind = state.range(1) ? PressureSolverType::DFSPH : PressureSolverType::WCSPH;
   SPHSolver solver = damBreak(static_cast<std::size_t>(state.range(0)), 2, kind, 0.0f, true);
   std::int64_t steps = 0;
   for (auto _ : state)

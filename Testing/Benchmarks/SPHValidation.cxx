@@ -30,9 +30,9 @@ namespace
 constexpr float kGravity = 9.81f;  // [m/s^2]
 constexpr float kRho0 = 1000.0f;   // [kg/m^3]
 
-const char* name(PressureSolver s)
+const char* name(PressureSolverType s)
 {
-  return s == PressureSolver::DFSPH ? "DFSPH" : "WCSPH";
+  return s == PressureSolverType::DFSPH ? "DFSPH" : "WCSPH";
 }
 
 /// Water with h = 2 spacings; a slab four particles thick in y between free-slip mirror walls,
@@ -50,7 +50,7 @@ float gColumnWidth = 0.05715f;
 // glass under water, whose boundary layer the law of the wall models (see TurbulentWallLaw.h).
 WallFriction gWallFriction = WallFriction::LogLaw;
 
-SPHParameters water(PressureSolver solver, float spacing, const std::array<float, 6>& domain)
+SPHParameters water(PressureSolverType solver, float spacing, const std::array<float, 6>& domain)
 {
   SPHParameters p;
   p.pressureSolver = solver;
@@ -90,7 +90,7 @@ struct Hydrostatic
 /// Column of width and height 0.2 m, `across` particles wide. Settles for 0.4 s, then pressure is
 /// averaged over 20 samples 0.005 s apart (WCSPH's pressure rings acoustically with a period of
 /// about 4 H / c = 0.025 s) and compared with rho0 g (H - z).
-Hydrostatic hydrostatic(PressureSolver solver, int across, std::ofstream* profile)
+Hydrostatic hydrostatic(PressureSolverType solver, int across, std::ofstream* profile)
 {
   const float width = 0.2f, height = 0.2f;
   const float d = width / static_cast<float>(across);
@@ -166,7 +166,7 @@ struct DamBreak
 
 /// Column a wide (--width) and 2a high in a tank 6a long. The front is the largest x of any particle
 /// plus half a spacing (the edge of the particle's share of volume).
-DamBreak damBreak(PressureSolver solver, int across, double endT, std::ofstream& curve)
+DamBreak damBreak(PressureSolverType solver, int across, double endT, std::ofstream& curve)
 {
   const float a = gColumnWidth;
   const float d = a / static_cast<float>(across);
@@ -245,7 +245,7 @@ int main(int argc, char** argv)
   const std::string dir = argv[1];
   bool quick = false;
   std::string scene = "all";
-  std::vector<PressureSolver> solvers = { PressureSolver::WCSPH, PressureSolver::DFSPH };
+  std::vector<PressureSolverType> solvers = { PressureSolverType::WCSPH, PressureSolverType::DFSPH };
   std::vector<int> resolutions;
   for (int k = 2; k < argc; ++k)
   {
@@ -297,7 +297,7 @@ int main(int argc, char** argv)
     else if (option == "--solver" && k + 1 < argc)
     {
       const std::string v = argv[++k];
-      solvers = { v == "DFSPH" ? PressureSolver::DFSPH : PressureSolver::WCSPH };
+      solvers = { v == "DFSPH" ? PressureSolverType::DFSPH : PressureSolverType::WCSPH };
     }
     else if (option == "--resolutions" && k + 1 < argc)
     {
@@ -326,7 +326,7 @@ int main(int argc, char** argv)
   std::ofstream profile(dir + "/hydrostatic_profile.csv");
   hydro << "solver,particles_across,particles,steps,wall_s,relative_l2_error,profile_relative_l2_error,mean_compression\n";
   profile << "solver,particles_across,z,pressure,reference\n";
-  for (PressureSolver solver : solvers)
+  for (PressureSolverType solver : solvers)
   {
     for (int across : resolutions)
     {
@@ -348,7 +348,7 @@ int main(int argc, char** argv)
   curve << "solver,particles_across,T,Z\n";
   summary << "solver,particles_across,particles,steps,wall_s,mean_relative_error,max_relative_error,"
              "mean_compression,max_compression,density_iterations,divergence_iterations\n";
-  for (PressureSolver solver : solvers)
+  for (PressureSolverType solver : solvers)
   {
     for (int across : resolutions)
     {

@@ -19,7 +19,7 @@ using namespace parafluid::sph;
 
 constexpr float kSpacing = 0.02f; // [m]
 
-SPHParameters water(PressureSolver solver = PressureSolver::WCSPH)
+SPHParameters water(PressureSolverType solver = PressureSolverType::WCSPH)
 {
   SPHParameters p;
   p.pressureSolver = solver;
@@ -99,7 +99,7 @@ TEST(AdaptiveTimeStep, RespectsTheCFLConditionAndLandsExactlyOnTheEndTime)
 
 TEST(AdaptiveTimeStep, TakesLargerStepsForDFSPHWhichHasNoSoundSpeedLimit)
 {
-  SPHParameters w = water(PressureSolver::WCSPH), d = water(PressureSolver::DFSPH);
+  SPHParameters w = water(PressureSolverType::WCSPH), d = water(PressureSolverType::DFSPH);
   w.domainBounds = d.domainBounds = { 0, 0.6f, 0, 0.1f, 0, 0.5f };
   SPHSolver wc(w, block({ 0, 0.2, 0, 0.1, 0, 0.3 }));
   SPHSolver df(d, block({ 0, 0.2, 0, 0.1, 0, 0.3 }));
@@ -109,7 +109,7 @@ TEST(AdaptiveTimeStep, TakesLargerStepsForDFSPHWhichHasNoSoundSpeedLimit)
 
 TEST(DFSPH, KeepsTheMeanDensityErrorBelowTheToleranceInADamBreak)
 {
-  SPHParameters p = water(PressureSolver::DFSPH);
+  SPHParameters p = water(PressureSolverType::DFSPH);
   p.domainBounds = { 0, 0.6f, 0, 0.1f, 0, 0.5f };
   SPHSolver solver(p, block({ 0, 0.2, 0, 0.1, 0, 0.4 }));
   double worst = 0.0, average = 0.0;
@@ -137,7 +137,7 @@ TEST(DFSPH, KeepsTheMeanDensityErrorBelowTheToleranceInADamBreak)
 
 TEST(DFSPH, ConservesMomentumWithoutWallsOrGravity)
 {
-  SPHParameters p = water(PressureSolver::DFSPH);
+  SPHParameters p = water(PressureSolverType::DFSPH);
   p.gravity = { 0, 0, 0 };
   p.viscosity = 0.0f;
   p.domainBounds = { -10, 10, -10, 10, -10, 10 };
@@ -170,7 +170,7 @@ TEST(DFSPH, ConservesMomentumWithoutWallsOrGravity)
 
 TEST(DFSPH, RestingColumnHasHydrostaticPressure)
 {
-  SPHParameters p = water(PressureSolver::DFSPH);
+  SPHParameters p = water(PressureSolverType::DFSPH);
   const float height = 0.2f;
   p.domainBounds = { 0, 0.2f, 0, 4 * kSpacing, 0, 0.4f };
   SPHSolver solver(p, block({ 0, 0.2, 0, 4 * kSpacing, 0, height }));

@@ -216,7 +216,7 @@ TEST(SPHSolver, AdvanceOutputsEachParticlesTimeWeightedMeanPressure)
 {
   // The same dam break, once by advance() and once step by step with the same steps, summing
   // p dt per particle by hand (the state is re-sorted every step, so by original index).
-  for (PressureSolver solver : { PressureSolver::WCSPH, PressureSolver::DFSPH })
+  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH })
   {
     SPHParameters p = waterParameters();
     p.pressureSolver = solver;

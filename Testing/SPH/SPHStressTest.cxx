@@ -21,7 +21,7 @@ using namespace parafluid::sph;
 
 constexpr float kSpacing = 0.01f; // [m]
 
-SPHParameters water(PressureSolver solver)
+SPHParameters water(PressureSolverType solver)
 {
   SPHParameters p;
   p.pressureSolver = solver;
@@ -84,7 +84,7 @@ double mechanicalEnergy(const SPHSolver& s)
   return potential + s.kineticEnergy();
 }
 
-void runTenThousandSteps(PressureSolver solver)
+void runTenThousandSteps(PressureSolverType solver)
 {
   const SPHParameters p = water(solver);
   SPHSolver s(p, damBreakBlock(), obstacle());
@@ -118,12 +118,12 @@ void runTenThousandSteps(PressureSolver solver)
 
 TEST(SPHStress, WCSPHDamBreakTenThousandStepsPastAPillarOverARamp)
 {
-  runTenThousandSteps(PressureSolver::WCSPH);
+  runTenThousandSteps(PressureSolverType::WCSPH);
 }
 
 TEST(SPHStress, DFSPHDamBreakTenThousandStepsPastAPillarOverARamp)
 {
-  runTenThousandSteps(PressureSolver::DFSPH);
+  runTenThousandSteps(PressureSolverType::DFSPH);
 }
 
 /// Runs `steps` steps; returns the error message, or "" when it ran through. Fails the test on NaN.
@@ -161,11 +161,11 @@ ParticleState smallBlock()
 
 TEST(SPHStress, HundredTimesTooLargeFixedStepStopsWithAClearError)
 {
-  for (PressureSolver solver : { PressureSolver::WCSPH, PressureSolver::DFSPH })
+  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH })
   {
     SPHParameters p = water(solver);
     p.adaptiveTimeStep = false;
-    p.timeStep = solver == PressureSolver::WCSPH ? 1e-2f : 0.1f; // 100 x the adaptive step
+    p.timeStep = solver == PressureSolverType::WCSPH ? 1e-2f : 0.1f; // 100 x the adaptive step
     const std::string outcome = runOrStop(p, smallBlock(), 300);
     // Either it stopped and said why, or it ran stably (checked for NaN inside).
     if (!outcome.empty())
@@ -178,7 +178,7 @@ TEST(SPHStress, HundredTimesTooLargeFixedStepStopsWithAClearError)
 
 TEST(SPHStress, ThousandTimesStifferRunsStablyWithAdaptiveSteps)
 {
-  SPHParameters p = water(PressureSolver::WCSPH);
+  SPHParameters p = water(PressureSolverType::WCSPH);
   p.gasStiffness *= 1000.0f;
   SPHSolver solver(p, smallBlock());
   const std::int64_t steps = solver.advance(0.01);
@@ -194,19 +194,19 @@ TEST(SPHStress, DFSPHRefusesKernelsWiderThanItsSolveConvergesFor)
 {
   // At h = 3 spacings the DFSPH density solve diverges within the first step; it is refused up
   // front with a message naming the limit, and WCSPH runs the same scene.
-  SPHParameters p = water(PressureSolver::DFSPH);
+  SPHParameters p = water(PressureSolverType::DFSPH);
   p.smoothingLength = 3.0f * kSpacing;
   p.particleMass = latticeParticleMass(kSpacing, p.smoothingLength, p.restDensity, p.densityKernel());
   const std::string message = runOrStop(p, smallBlock(), 5);
   EXPECT_NE(message.find("at most 2.25 particle spacings"), std::string::npos) << message;
-  p.pressureSolver = PressureSolver::WCSPH;
+  p.pressureSolver = PressureSolverType::WCSPH;
   p.particleMass = latticeParticleMass(kSpacing, p.smoothingLength, p.restDensity, p.densityKernel());
   EXPECT_EQ(runOrStop(p, smallBlock(), 20), "");
 }
 
 TEST(SPHStress, ZeroViscositySkipsThePassAndStaysBounded)
 {
-  for (PressureSolver solver : { PressureSolver::WCSPH, PressureSolver::DFSPH })
+  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH })
   {
     SPHParameters p = water(solver);
     p.viscosity = 0.0f;
@@ -215,8 +215,8 @@ TEST(SPHStress, ZeroViscositySkipsThePassAndStaysBounded)
     s.advance(0.3);
     // DFSPH stays within its bound. Müller's WCSPH without viscosity gains energy (its pressure
     // force is not the gradient of the poly6 density's internal energy): bounded, not conserved.
-    const double bound = solver == PressureSolver::DFSPH ? 1.05 : 2.0;
-    EXPECT_LT(mechanicalEnergy(s), bound * initial) << (solver == PressureSolver::DFSPH ? "DFSPH" : "WCSPH");
+    const double bound = solver == PressureSolverType::DFSPH ? 1.05 : 2.0;
+    EXPECT_LT(mechanicalEnergy(s), bound * initial) << (solver == PressureSolverType::DFSPH ? "DFSPH" : "WCSPH");
   }
 }
 
@@ -225,9 +225,9 @@ TEST(SPHStress, WallFrictionAtExtremesOnlyTakesEnergyAndNeverBlowsUp)
   // The small block (10 x 5 x 15 particles) collapses onto walls that stick: no-slip under a
   // viscosity of 200 Pa s, and the law of the wall for a fluid a million times more viscous than
   // water. Friction only takes energy out, whatever its strength.
-  for (PressureSolver solver : { PressureSolver::WCSPH, PressureSolver::DFSPH })
+  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH })
   {
-    const char* name = solver == PressureSolver::DFSPH ? "DFSPH" : "WCSPH";
+    const char* name = solver == PressureSolverType::DFSPH ? "DFSPH" : "WCSPH";
     for (WallFriction friction : { WallFriction::FreeSlip, WallFriction::NoSlip, WallFriction::LogLaw })
     {
       SPHParameters p = water(solver);
@@ -248,7 +248,7 @@ TEST(SPHStress, WallFrictionAtExtremesOnlyTakesEnergyAndNeverBlowsUp)
       // A step 100 times too large with adaptivity off: the implicit wall law cannot make it worse
       // than free-slip walls do; it runs or stops with the usual message.
       p.adaptiveTimeStep = false;
-      p.timeStep = solver == PressureSolver::WCSPH ? 1e-2f : 0.1f;
+      p.timeStep = solver == PressureSolverType::WCSPH ? 1e-2f : 0.1f;
       const std::string outcome = runOrStop(p, smallBlock(), 300);
       if (!outcome.empty())
       {
@@ -260,7 +260,7 @@ TEST(SPHStress, WallFrictionAtExtremesOnlyTakesEnergyAndNeverBlowsUp)
 
 TEST(SPHStress, ParticlesOnTopOfEachOtherAreSeparatedOrAtLeastStayFinite)
 {
-  for (PressureSolver solver : { PressureSolver::WCSPH, PressureSolver::DFSPH })
+  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH })
   {
     ParticleState s = smallBlock();
     for (std::size_t i = 1; i < s.size(); i += 2) // every other particle onto its neighbour
@@ -276,7 +276,7 @@ TEST(SPHStress, ParticlesOnTopOfEachOtherAreSeparatedOrAtLeastStayFinite)
 
 TEST(SPHStress, ASingleParticleFallsFreelyAndZeroParticlesAreFine)
 {
-  for (PressureSolver solver : { PressureSolver::WCSPH, PressureSolver::DFSPH })
+  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH })
   {
     SPHParameters p = water(solver);
     SPHSolver one(p, ParticleState::atRest({ 0.3f }, { 0.05f }, { 0.35f }));

@@ -17,9 +17,9 @@ using namespace parafluid;
 using namespace parafluid;
 using namespace parafluid::sph;
 
-const char* solverName(PressureSolver solver)
+const char* solverName(PressureSolverType solver)
 {
-  return solver == PressureSolver::DFSPH ? "DFSPH" : "WCSPH";
+  return solver == PressureSolverType::DFSPH ? "DFSPH" : "WCSPH";
 }
 
 /// u* from the log layer u = u* (ln(y u* / nu) / kappa + B) by bisection, an independent check of
@@ -129,7 +129,7 @@ struct SlidingSlab
   static constexpr float spacing = 0.005f, speed = 1.0f;
   static constexpr double length = 0.1, width = 0.02, depth = 0.06;
 
-  static SPHParameters parameters(PressureSolver solver, WallFriction friction, float viscosity)
+  static SPHParameters parameters(PressureSolverType solver, WallFriction friction, float viscosity)
   {
     SPHParameters p;
     p.pressureSolver = solver;
@@ -168,7 +168,7 @@ struct SlidingSlab
 
 TEST(WallFriction, FreeSlipFloorKeepsTheSlidingMomentum)
 {
-  for (PressureSolver solver : { PressureSolver::WCSPH, PressureSolver::DFSPH })
+  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH })
   {
     const SPHParameters p = SlidingSlab::parameters(solver, WallFriction::FreeSlip, 3.5f);
     const double start = SlidingSlab::initialMomentum(p);
@@ -184,7 +184,7 @@ TEST(WallFriction, NoSlipFloorTakesMomentumAsStokesFirstProblem)
   const float mu = 50.0f; // [Pa s]
   const double t = 0.02, nu = mu / 1000.0;
   const double expected = 2.0 * 1000.0 * SlidingSlab::speed * std::sqrt(nu * t / 3.14159265358979);
-  for (PressureSolver solver : { PressureSolver::WCSPH, PressureSolver::DFSPH })
+  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH })
   {
     const SPHParameters p = SlidingSlab::parameters(solver, WallFriction::NoSlip, mu);
     const double lost = SlidingSlab::initialMomentum(p) - SlidingSlab::momentumAfter(p, t);
@@ -206,7 +206,7 @@ TEST(WallFriction, LogLawFloorTakesMomentumAtTheWallShearStress)
   const double t = 0.02;
   const double ustar = TurbulentWallLaw::frictionVelocity(SlidingSlab::speed, 0.5f * SlidingSlab::spacing, 1.0e-6f);
   const double expected = 1000.0 * ustar * ustar * t;
-  for (PressureSolver solver : { PressureSolver::WCSPH, PressureSolver::DFSPH })
+  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH })
   {
     const SPHParameters p = SlidingSlab::parameters(solver, WallFriction::LogLaw, 3.5f);
     const double lost = SlidingSlab::initialMomentum(p) - SlidingSlab::momentumAfter(p, t);

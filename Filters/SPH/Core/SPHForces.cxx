@@ -1,5 +1,6 @@
 // Müller et al. (2003) forces: poly6 density, the equation of state, spiky pressure gradient,
-// viscosity-kernel Laplacian and colour-field surface tension; and the WCSPH leapfrog step.
+// viscosity-kernel Laplacian and colour-field surface tension: the forces both pressure solvers
+// share (WCSPH adds its pressure to the same pair sums).
 #include "parafluid/sph/SPHSolver.h"
 
 #include "parafluid/common/Kernels.h"
@@ -14,52 +15,6 @@ namespace parafluid::sph
 using detail::CandidateBuffer;
 using detail::forEachParticleByCell;
 using detail::threadCount;
-
-void SPHSolver::stepWCSPH(double dt)
-{
-  const auto h = static_cast<float>(dt);
-  this->kick(0.5f * h);
-  this->drift(h);
-  this->sortByCell();
-  this->computeDensityAndPressure();
-  this->computeAccelerations(true);
-  this->kick(0.5f * h);
-  this->applyWallFriction(h);
-  this->Last.timeStep = dt;
-  this->Time += dt;
-}
-
-void SPHSolver::computeDensityAndPressure()
-{
-  ParticleState& s = this->State;
-  const SPHParameters& p = this->Parameters;
-  const Poly6Kernel w(p.smoothingLength);
-  const float densityScale = p.particleMass * w.coefficient;
-  const float k = p.gasStiffness;
-  const float rho0 = p.restDensity;
-  const bool clamp = p.clampNegativePressure;
-  forEachParticleByCell(this->Grid, s, p.smoothingLength, threadCount(p), {},
-    [&](const CandidateBuffer& candidates, std::uint32_t i)
-    {
-      const float position[3] = { s.x[i], s.y[i], s.z[i] };
-      float sum = candidates.poly6Sum(position, w.h2); // includes the particle itself (r = 0)
-      // Near walls the mirrored fluid fills the cut-off neighbourhood: |x_i - R x_j| = |R x_i - x_j|.
-      const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, p.smoothingLength);
-      for (int m = 0; m < mirrors.count; ++m)
-      {
-        float image[3];
-        for (int a = 0; a < 3; ++a)
-        {
-          image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
-        }
-        sum += candidates.poly6Sum(image, w.h2);
-      }
-      const float rho = densityScale * sum;
-      s.density[i] = rho;
-      const float pressure = k * (rho - rho0);
-      s.pressure[i] = clamp ? std::max(pressure, 0.0f) : pressure;
-    });
-}
 
 namespace
 {

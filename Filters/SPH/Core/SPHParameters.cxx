@@ -103,7 +103,7 @@ std::string SPHParameters::validate() const
   {
     return "threads must be 0 (default) or positive";
   }
-  if (pressureSolver == PressureSolver::DFSPH)
+  if (pressureSolver == PressureSolverType::DFSPH)
   {
     // The Jacobi pressure solves use a diagonal factor that is tight enough at h = 2 spacings; with
     // wider kernels they overshoot and diverge within a step (h = 3 spacings blows up at once, and

@@ -71,21 +71,14 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial, std
   this->sortByCell();
   const SPHParameters& p = this->Parameters;
   this->ParticleSpacing = latticeSpacingForMass(p.particleMass, p.smoothingLength, p.restDensity, p.densityKernel());
-  if (this->Parameters.pressureSolver == PressureSolver::DFSPH)
-  {
-    this->GradientCorrection = latticeGradientCorrection(this->ParticleSpacing, p.smoothingLength, p.densityKernel());
-    this->DensityStiffness.assign(n, 0.0f);
-    this->DivergenceStiffness.assign(n, 0.0f);
-    this->computeDensityAndFactor();
-    this->computeAccelerations(false);
-  }
-  else
-  {
-    this->computeDensityAndPressure();
-    this->computeAccelerations(true);
-  }
+  this->Pressure = makePressureSolver(p.pressureSolver);
+  this->Pressure->start(*this);
   this->measureCompression();
 }
+
+SPHSolver::~SPHSolver() = default;
+SPHSolver::SPHSolver(SPHSolver&&) noexcept = default;
+SPHSolver& SPHSolver::operator=(SPHSolver&&) noexcept = default;
 
 std::int64_t SPHSolver::advance(double duration, const std::function<bool(double)>& progress)
 {
@@ -146,14 +139,7 @@ double SPHSolver::step(double maxStep)
 {
   try
   {
-    if (this->Parameters.pressureSolver == PressureSolver::DFSPH)
-    {
-      this->stepDFSPH(maxStep);
-    }
-    else
-    {
-      this->stepWCSPH(this->chooseTimeStep(maxStep));
-    }
+    this->Pressure->step(*this, maxStep);
   }
   catch (const std::invalid_argument&)
   {
@@ -199,7 +185,7 @@ double SPHSolver::proposedTimeStep() const
   double dt = p.maxTimeStep;
   // CFL: information (sound for WCSPH, the flow itself for incompressible DFSPH) may cross only a
   // fraction lambda of the kernel radius per step.
-  const double c = p.pressureSolver == PressureSolver::WCSPH ? std::sqrt(static_cast<double>(p.gasStiffness)) : 0.0;
+  const double c = this->Pressure->signalSpeed(p);
   const double speed = c + std::sqrt(static_cast<double>(v2));
   if (speed > 0.0)
   {
@@ -293,17 +279,9 @@ void SPHSolver::sortByCell()
   {
     permute(this->PressureImpulse, this->ScratchFloat, order, threads);
   }
-  if (this->Parameters.pressureSolver == PressureSolver::DFSPH)
+  if (this->Pressure) // not yet while the constructor sorts the initial state
   {
-    // DFSPH sorts in the middle of a step: the accelerations summed so far and the warm starts move
-    // with their particles.
-    for (auto* a : { &s.ax, &s.ay, &s.az, &this->DensityStiffness, &this->DivergenceStiffness })
-    {
-      if (a->size() == s.size())
-      {
-        permute(*a, this->ScratchFloat, order, threads);
-      }
-    }
+    this->Pressure->permute(*this, order, this->ScratchFloat, threads);
   }
   permute(s.id, this->ScratchId, order, threads);
   permute(s.originalIndex, this->ScratchIndex, order, threads);
@@ -481,13 +459,7 @@ double SPHSolver::bytesPerParticle() const
   }
   std::size_t total = this->State.bytes() + this->ScratchFloat.capacity() * sizeof(float) +
     this->ScratchId.capacity() * sizeof(std::int64_t) + this->ScratchIndex.capacity() * sizeof(std::uint32_t) +
-    this->InverseDensity.capacity() * sizeof(float) + this->Grid.bytes() +
-    this->NeighbourCount.capacity() * sizeof(std::uint16_t);
-  for (const auto* a : { &this->Factor, &this->DensityRate, &this->Stiffness, &this->DensityStiffness,
-         &this->DivergenceStiffness })
-  {
-    total += a->capacity() * sizeof(float);
-  }
+    this->InverseDensity.capacity() * sizeof(float) + this->Grid.bytes() + this->Pressure->bytes();
   return static_cast<double>(total) / static_cast<double>(n);
 }
 } // namespace parafluid::sph

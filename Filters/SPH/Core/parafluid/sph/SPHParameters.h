@@ -8,7 +8,7 @@
 
 namespace parafluid::sph
 {
-enum class PressureSolver
+enum class PressureSolverType
 {
   WCSPH, // Müller's equation of state p = k (rho - rho0), explicit
   DFSPH  // divergence-free SPH: density and divergence solves, incompressible within a tolerance
@@ -23,7 +23,7 @@ enum class WallFriction
 
 struct SPHParameters
 {
-  PressureSolver pressureSolver = PressureSolver::WCSPH;
+  PressureSolverType pressureSolver = PressureSolverType::WCSPH;
   float smoothingLength = 0.04f;  // h [m]: kernel support radius (about 2 particle spacings)
   float restDensity = 1000.0f;    // rho0 [kg/m^3]
   float gasStiffness = 1000.0f;   // k [m^2/s^2] in p = k (rho - rho0); sqrt(k) is the sound speed (WCSPH)
@@ -77,7 +77,7 @@ struct SPHParameters
   /// The kernel that measures density for the chosen pressure solver.
   DensityKernel densityKernel() const
   {
-    return pressureSolver == PressureSolver::DFSPH ? DensityKernel::CubicSpline : DensityKernel::Poly6;
+    return pressureSolver == PressureSolverType::DFSPH ? DensityKernel::CubicSpline : DensityKernel::Poly6;
   }
   /// The walls whose images carry the no-slip velocity (all false unless wallFriction is NoSlip).
   std::array<bool, 6> noSlipWalls() const

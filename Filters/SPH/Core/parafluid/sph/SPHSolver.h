@@ -1,6 +1,6 @@
 #pragma once
 // SPH fluid in an axis-aligned box, optionally with a triangle-mesh boundary, advanced by one of two
-// pressure solvers (SPHParameters::pressureSolver):
+// pressure solvers (SPHParameters::pressureSolver; PressureSolver.h, one class each):
 //  - WCSPH, Müller, Charypar & Gross (SCA 2003): density by poly6, p = k (rho - rho0) with the spiky
 //    gradient, velocity-Verlet leapfrog (kick-drift-kick);
 //  - DFSPH, Bender & Koschier (SCA 2015 / TVCG 2017): cubic-spline kernel, a density solve before
@@ -11,6 +11,7 @@
 // The state is kept sorted by grid cell so neighbour loops read memory contiguously.
 #include "parafluid/common/NeighbourGrid.h"
 #include "parafluid/common/ParticleState.h"
+#include "parafluid/sph/PressureSolver.h"
 #include "parafluid/sph/SPHParameters.h"
 
 #include <cstdint>
@@ -31,6 +32,9 @@ public:
   /// boundary mesh. Throws std::invalid_argument for bad parameters or non-finite input.
   SPHSolver(const SPHParameters& parameters, ParticleState initial,
     std::shared_ptr<const TriangleBoundary> boundary = nullptr);
+  ~SPHSolver();
+  SPHSolver(SPHSolver&&) noexcept;
+  SPHSolver& operator=(SPHSolver&&) noexcept;
 
   /// Advances exactly `duration` seconds in as many steps as the time-step control needs (the last
   /// steps are shortened to land on the end time). `progress(fraction)` is called every few steps
@@ -85,23 +89,14 @@ private:
   void applyWallFriction(float dt);
   void measureCompression();
 
-  // WCSPH (SPHForces.cxx)
-  void stepWCSPH(double dt);
-  void computeDensityAndPressure();
   /// Viscosity, surface tension, gravity and (when withPressure) the equation-of-state pressure
-  /// into State.a*; each pass is compiled in only when its coefficient is non-zero.
+  /// into State.a*; each pass is compiled in only when its coefficient is non-zero (SPHForces.cxx).
   void computeAccelerations(bool withPressure);
 
-  // DFSPH (DivergenceFreeSolver.cxx)
-  void stepDFSPH(double remaining);
-  void computeDensityAndFactor();
-  void warmStart(std::vector<float>& accumulated, float dt);
-  int solveDensity(float dt);
-  int solveDivergence(float dt);
-  /// Sum over neighbours j of m (v_i - v_j) . grad W_ij into DensityRate (D rho / D t).
-  void computeDensityRate();
-  /// v_i -= dt sum_j m (k_i + k_j) grad W_ij with k = Stiffness.
-  void applyPressureImpulse(float dt);
+  // The pressure solvers advance the simulation through its shared parts (grid, walls, forces,
+  // time-step control) and keep their own per-particle arrays.
+  friend class WCSPHSolver;
+  friend class DFSPHSolver;
 
   SPHParameters Parameters;
   ParticleState State;
@@ -111,15 +106,11 @@ private:
   std::vector<std::int64_t> ScratchId;
   std::vector<std::uint32_t> ScratchIndex;
   std::vector<float> InverseDensity;
-  // DFSPH: alpha factor, D rho / D t, the stiffness of the current iteration, and the accumulated
-  // stiffness of both solves (the warm start of the next step; p = rho k).
-  std::vector<float> Factor, DensityRate, Stiffness, DensityStiffness, DivergenceStiffness;
-  std::vector<std::uint16_t> NeighbourCount; // DFSPH: neighbours incl. images, for the surface test
   std::vector<float> PressureImpulse; // sum of p dt over the steps of advance() [Pa s]
-  float GradientCorrection = 1.0f; // DFSPH pressure forces, see latticeGradientCorrection
   float ParticleSpacing = 0.0f;    // [m] edge of the cube a particle fills at rest density
   std::int64_t Steps = 0;
   double Time = 0.0;
   StepStatistics Last;
+  std::unique_ptr<PressureSolver> Pressure; // WCSPH or DFSPH (SPHParameters::pressureSolver)
 };
 } // namespace parafluid::sph

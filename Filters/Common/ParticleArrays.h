@@ -1,6 +1,8 @@
 #pragma once
-// The particle data contract shared by readers and filters: scene constants in field data and
-// particle polydata with one vertex per particle.
+// Helpers for the particle data contract (ParticleContract.h): positions and arrays as flat floats,
+// field-data scene constants, one vertex per particle, and the gather of all pieces under MPI.
+#include "ParticleContract.h"
+
 #include "vtkCellArray.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"

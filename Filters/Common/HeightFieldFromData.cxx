@@ -1,6 +1,6 @@
-#include "vtkPFBathymetry.h"
+#include "HeightFieldFromData.h"
 
-#include "parafluid/ocean/Bathymetry.h"
+#include "parafluid/common/HeightField.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -15,10 +15,10 @@
 #include <stdexcept>
 #include <vector>
 
-std::shared_ptr<parafluid::ocean::Bathymetry> vtkPFBathymetryFrom(
-  vtkDataObject* data, double seaLevel, int resolution, std::string& error)
+namespace parafluid::vtk
 {
-  using parafluid::ocean::Bathymetry;
+std::shared_ptr<HeightField> heightFieldFrom(vtkDataObject* data, double seaLevel, int resolution, std::string& error)
+{
   try
   {
     if (auto* image = vtkImageData::SafeDownCast(data))
@@ -27,7 +27,7 @@ std::shared_ptr<parafluid::ocean::Bathymetry> vtkPFBathymetryFrom(
       image->GetDimensions(dims);
       if (dims[2] != 1)
       {
-        error = "Bathymetry image must be 2D (one layer of points in z), got " + std::to_string(dims[2]) + " layers";
+        error = "the image must be 2D (one layer of points in z), got " + std::to_string(dims[2]) + " layers";
         return nullptr;
       }
       vtkDataArray* scalars = image->GetPointData()->GetScalars();
@@ -37,7 +37,7 @@ std::shared_ptr<parafluid::ocean::Bathymetry> vtkPFBathymetryFrom(
       }
       if (!scalars)
       {
-        error = "Bathymetry image has no point array to read the floor elevation from";
+        error = "the image has no point array to read the floor elevation from";
         return nullptr;
       }
       std::vector<float> elevation(static_cast<std::size_t>(scalars->GetNumberOfTuples()));
@@ -47,14 +47,14 @@ std::shared_ptr<parafluid::ocean::Bathymetry> vtkPFBathymetryFrom(
       }
       const double* origin = image->GetOrigin();
       const double* spacing = image->GetSpacing();
-      return std::make_shared<Bathymetry>(
+      return std::make_shared<HeightField>(
         std::move(elevation), dims[0], dims[1], origin[0], origin[1], spacing[0], spacing[1], seaLevel);
     }
     if (auto* surface = vtkPolyData::SafeDownCast(data))
     {
       if (surface->GetNumberOfPolys() + surface->GetNumberOfStrips() == 0)
       {
-        error = "Bathymetry surface has no polygons (give a terrain surface or a height-field image)";
+        error = "the surface has no polygons (give a terrain surface or a height-field image)";
         return nullptr;
       }
       vtkNew<vtkTriangleFilter> triangulate;
@@ -85,9 +85,9 @@ std::shared_ptr<parafluid::ocean::Bathymetry> vtkPFBathymetryFrom(
             { static_cast<std::uint32_t>(ids[0]), static_cast<std::uint32_t>(ids[1]), static_cast<std::uint32_t>(ids[2]) });
         }
       }
-      return std::make_shared<Bathymetry>(Bathymetry::fromTriangles(points, triangles, resolution, resolution, seaLevel));
+      return std::make_shared<HeightField>(HeightField::fromTriangles(points, triangles, resolution, resolution, seaLevel));
     }
-    error = std::string("Bathymetry must be an image (height field) or a surface, got ") +
+    error = std::string("it must be an image (height field) or a surface, got ") +
       (data ? data->GetClassName() : "nothing");
   }
   catch (const std::exception& e)
@@ -96,3 +96,4 @@ std::shared_ptr<parafluid::ocean::Bathymetry> vtkPFBathymetryFrom(
   }
   return nullptr;
 }
+} // namespace parafluid::vtk

@@ -5,6 +5,8 @@
 // Both solves are Jacobi iterations on per-particle stiffnesses k_i (= p_i / rho_i^2), warm-started
 // with the previous step's sums. Density and its gradient use the cubic spline, so what the solver
 // predicts is what the next density pass measures.
+#include "parafluid/sph/DFSPHSolver.h"
+
 #include "parafluid/sph/SPHSolver.h"
 
 #include "parafluid/common/Kernels.h"
@@ -73,16 +75,53 @@ void withImages(const float position[3], const SPHParameters& p, F&& f)
 }
 } // namespace
 
-void SPHSolver::computeDensityAndFactor()
+void DFSPHSolver::start(SPHSolver& sim)
 {
-  ParticleState& s = this->State;
-  const SPHParameters& p = this->Parameters;
+  const SPHParameters& p = sim.Parameters;
+  const std::size_t n = sim.State.size();
+  this->GradientCorrection = latticeGradientCorrection(sim.ParticleSpacing, p.smoothingLength, p.densityKernel());
+  this->DensityStiffness.assign(n, 0.0f);
+  this->DivergenceStiffness.assign(n, 0.0f);
+  this->computeDensityAndFactor(sim);
+  sim.computeAccelerations(false);
+}
+
+void DFSPHSolver::permute(
+  SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch, int threads)
+{
+  // DFSPH sorts in the middle of a step: the accelerations summed so far and the warm starts move
+  // with their particles.
+  ParticleState& s = sim.State;
+  for (auto* a : { &s.ax, &s.ay, &s.az, &this->DensityStiffness, &this->DivergenceStiffness })
+  {
+    if (a->size() == s.size())
+    {
+      detail::permute(*a, scratch, order, threads);
+    }
+  }
+}
+
+std::size_t DFSPHSolver::bytes() const
+{
+  std::size_t total = this->NeighbourCount.capacity() * sizeof(std::uint16_t);
+  for (const auto* a : { &this->Factor, &this->DensityRate, &this->Stiffness, &this->DensityStiffness,
+         &this->DivergenceStiffness })
+  {
+    total += a->capacity() * sizeof(float);
+  }
+  return total;
+}
+
+void DFSPHSolver::computeDensityAndFactor(SPHSolver& sim)
+{
+  ParticleState& s = sim.State;
+  const SPHParameters& p = sim.Parameters;
   const std::size_t n = s.size();
   this->Factor.resize(n);
   this->NeighbourCount.resize(n);
   const CubicPair w(p.smoothingLength);
   const float m = p.particleMass;
-  forEachParticleByCell(this->Grid, s, p.smoothingLength, threadCount(p), {},
+  forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p), {},
     [&](CandidateBuffer& c, std::uint32_t i)
     {
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
@@ -126,14 +165,14 @@ void SPHSolver::computeDensityAndFactor()
     });
 }
 
-void SPHSolver::computeDensityRate()
+void DFSPHSolver::computeDensityRate(SPHSolver& sim)
 {
-  ParticleState& s = this->State;
-  const SPHParameters& p = this->Parameters;
+  ParticleState& s = sim.State;
+  const SPHParameters& p = sim.Parameters;
   this->DensityRate.resize(s.size());
   const CubicPair w(p.smoothingLength);
   const float m = p.particleMass;
-  forEachParticleByCell(this->Grid, s, p.smoothingLength, threadCount(p), { s.vx.data(), s.vy.data(), s.vz.data() },
+  forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p), { s.vx.data(), s.vy.data(), s.vz.data() },
     [&](CandidateBuffer& c, std::uint32_t i)
     {
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
@@ -163,16 +202,16 @@ void SPHSolver::computeDensityRate()
     });
 }
 
-void SPHSolver::applyPressureImpulse(float dt)
+void DFSPHSolver::applyPressureImpulse(SPHSolver& sim, float dt)
 {
-  ParticleState& s = this->State;
-  const SPHParameters& p = this->Parameters;
+  ParticleState& s = sim.State;
+  const SPHParameters& p = sim.Parameters;
   const CubicPair w(p.smoothingLength);
   // The pressure force uses the gradient corrected to be exact for a linear field on the rest
   // lattice; the prediction (density rate) keeps the plain one, which matches the measured density.
   const float m = p.particleMass * this->GradientCorrection;
   // Velocities change in place: the pass reads the stiffnesses only, never the velocities.
-  forEachParticleByCell(this->Grid, s, p.smoothingLength, threadCount(p), { this->Stiffness.data() },
+  forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p), { this->Stiffness.data() },
     [&](CandidateBuffer& c, std::uint32_t i)
     {
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
@@ -211,32 +250,32 @@ void SPHSolver::applyPressureImpulse(float dt)
     });
 }
 
-void SPHSolver::warmStart(std::vector<float>& accumulated, float dt)
+void DFSPHSolver::warmStart(SPHSolver& sim, std::vector<float>& accumulated, float dt)
 {
   // Half the previous step's pressure starts this one: a good guess that still decays when it was
   // too high (the iterations only ever add pressure, never take it away).
   const auto n = static_cast<std::int64_t>(accumulated.size());
-#pragma omp parallel for schedule(static) num_threads(threadCount(this->Parameters))
+#pragma omp parallel for schedule(static) num_threads(threadCount(sim.Parameters))
   for (std::int64_t i = 0; i < n; ++i)
   {
     accumulated[i] *= 0.5f;
   }
   this->Stiffness = accumulated;
-  this->applyPressureImpulse(dt);
+  this->applyPressureImpulse(sim, dt);
 }
 
-int SPHSolver::solveDensity(float dt)
+int DFSPHSolver::solveDensity(SPHSolver& sim, float dt)
 {
-  ParticleState& s = this->State;
-  const SPHParameters& p = this->Parameters;
+  ParticleState& s = sim.State;
+  const SPHParameters& p = sim.Parameters;
   const auto n = static_cast<std::int64_t>(s.size());
   const int threads = threadCount(p);
   const float rho0 = p.restDensity;
-  this->warmStart(this->DensityStiffness, dt);
+  this->warmStart(sim, this->DensityStiffness, dt);
   int iterations = 0;
   while (iterations < p.maxPressureIterations)
   {
-    this->computeDensityRate();
+    this->computeDensityRate(sim);
     double error = 0.0;
     const float scale = 1.0f / (dt * dt);
 #pragma omp parallel for schedule(static) reduction(+ : error) num_threads(threads)
@@ -252,7 +291,7 @@ int SPHSolver::solveDensity(float dt)
     {
       break;
     }
-    this->applyPressureImpulse(dt);
+    this->applyPressureImpulse(sim, dt);
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (std::int64_t i = 0; i < n; ++i)
     {
@@ -263,18 +302,18 @@ int SPHSolver::solveDensity(float dt)
   return iterations;
 }
 
-int SPHSolver::solveDivergence(float dt)
+int DFSPHSolver::solveDivergence(SPHSolver& sim, float dt)
 {
-  ParticleState& s = this->State;
-  const SPHParameters& p = this->Parameters;
+  ParticleState& s = sim.State;
+  const SPHParameters& p = sim.Parameters;
   const auto n = static_cast<std::int64_t>(s.size());
   const int threads = threadCount(p);
   const float rho0 = p.restDensity;
-  this->warmStart(this->DivergenceStiffness, dt);
+  this->warmStart(sim, this->DivergenceStiffness, dt);
   int iterations = 0;
   while (iterations < p.maxPressureIterations)
   {
-    this->computeDensityRate();
+    this->computeDensityRate(sim);
     double error = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : error) num_threads(threads)
     for (std::int64_t i = 0; i < n; ++i)
@@ -288,7 +327,7 @@ int SPHSolver::solveDivergence(float dt)
     {
       break;
     }
-    this->applyPressureImpulse(dt);
+    this->applyPressureImpulse(sim, dt);
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (std::int64_t i = 0; i < n; ++i)
     {
@@ -299,28 +338,29 @@ int SPHSolver::solveDivergence(float dt)
   return iterations;
 }
 
-void SPHSolver::stepDFSPH(double remaining)
+double DFSPHSolver::step(SPHSolver& sim, double remaining)
 {
-  ParticleState& s = this->State;
+  ParticleState& s = sim.State;
   // Non-pressure accelerations at the current state decide the step and predict the velocities.
-  this->computeAccelerations(false);
-  const double dt = this->chooseTimeStep(remaining);
+  sim.computeAccelerations(false);
+  const double dt = sim.chooseTimeStep(remaining);
   const auto h = static_cast<float>(dt);
-  this->kick(h);
-  this->applyWallFriction(h);
-  this->Last.densityIterations = this->solveDensity(h);
-  this->drift(h);
-  this->sortByCell();
-  this->computeDensityAndFactor();
-  this->Last.divergenceIterations = this->solveDivergence(h);
+  sim.kick(h);
+  sim.applyWallFriction(h);
+  sim.Last.densityIterations = this->solveDensity(sim, h);
+  sim.drift(h);
+  sim.sortByCell();
+  this->computeDensityAndFactor(sim);
+  sim.Last.divergenceIterations = this->solveDivergence(sim, h);
   const auto n = static_cast<std::int64_t>(s.size());
-#pragma omp parallel for schedule(static) num_threads(threadCount(this->Parameters))
+#pragma omp parallel for schedule(static) num_threads(threadCount(sim.Parameters))
   for (std::int64_t i = 0; i < n; ++i)
   {
     // Both solves' impulses over the step amount to the pressure p_i = rho_i^2 k_i.
     s.pressure[i] = s.density[i] * s.density[i] * (this->DensityStiffness[i] + this->DivergenceStiffness[i]);
   }
-  this->Last.timeStep = dt;
-  this->Time += dt;
+  sim.Last.timeStep = dt;
+  sim.Time += dt;
+  return dt;
 }
 } // namespace parafluid::sph

@@ -1,0 +1,73 @@
+#include "vtkPFParticleAlgorithm.h"
+
+#include "ParticleArrays.h"
+
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkPointSet.h"
+#include "vtkPolyData.h"
+
+vtkPFParticleAlgorithm::vtkPFParticleAlgorithm(const char* label)
+  : Label(label)
+{
+}
+
+vtkPFParticleAlgorithm::~vtkPFParticleAlgorithm() = default;
+
+void vtkPFParticleAlgorithm::ReportError(const std::string& message)
+{
+  vtkErrorMacro(<< this->Label << ": " << message);
+}
+
+double vtkPFParticleAlgorithm::ParticleSpacingOr(double property, vtkPointSet* input, const char* propertyName)
+{
+  const double d = property > 0.0
+    ? property
+    : parafluid::vtk::fieldValue(input->GetFieldData(), parafluid::contract::ParticleSpacing, 0.0);
+  if (!(d > 0.0))
+  {
+    this->ReportError(std::string("set ") + propertyName +
+      " (the distance between neighbouring particles, metres); the input has no particle_spacing field data to "
+      "take it from");
+    return 0.0;
+  }
+  return d;
+}
+
+int vtkPFParticleAlgorithm::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPointSet* local = vtkPointSet::GetData(inputVector[0]);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkPolyData* output = vtkPolyData::GetData(outInfo);
+  if (!local)
+  {
+    this->ReportError("the input is not a point set (particles)");
+    return 0;
+  }
+  // A particle needs its neighbours from every piece: under MPI the pieces are gathered on process
+  // 0, which does the work (ghost exchange would let each process keep its own). Every process
+  // takes part in every gather before any of them returns.
+  bool holdsAll = true;
+  vtkSmartPointer<vtkDataObject> gathered = parafluid::vtk::gatherToFirstProcess(local, holdsAll);
+  vtkSmartPointer<vtkDataObject> gatheredExtra;
+  vtkPointSet* localExtra = this->GatheredInputPort >= 0 &&
+      inputVector[this->GatheredInputPort]->GetNumberOfInformationObjects() > 0
+    ? vtkPointSet::GetData(inputVector[this->GatheredInputPort])
+    : nullptr;
+  if (localExtra)
+  {
+    bool extraHere = true;
+    gatheredExtra = parafluid::vtk::gatherToFirstProcess(localExtra, extraHere);
+  }
+  if (!holdsAll)
+  {
+    output->Initialize();
+    return 1;
+  }
+  Particles particles;
+  particles.Gathered = vtkPointSet::SafeDownCast(gathered);
+  particles.Local = local;
+  particles.Extra = vtkPointSet::SafeDownCast(gatheredExtra);
+  return this->RequestParticles(particles, inputVector, outInfo, output);
+}

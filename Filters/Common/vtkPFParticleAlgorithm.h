@@ -1,0 +1,63 @@
+/**
+ * @class vtkPFParticleAlgorithm
+ * @brief Base of the filters that need every particle at once (SPH Step, the particle surfaces,
+ * the flow lines): it owns their common preamble.
+ *
+ * RequestData checks that input 0 is a point set, gathers the pieces of all processes on process
+ * 0 under MPI (as well as those of the extra ports named by SetGatheredInputPort), leaves the
+ * output empty on the other processes, and hands the gathered particles to RequestParticles.
+ * Errors are reported with the filter's GUI label in front, so the user knows which filter
+ * speaks.
+ */
+#ifndef vtkPFParticleAlgorithm_h
+#define vtkPFParticleAlgorithm_h
+
+#include "ParaFluidFiltersCommonModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+#include <string>
+
+class vtkPointSet;
+
+class PARAFLUIDFILTERSCOMMON_EXPORT vtkPFParticleAlgorithm : public vtkPolyDataAlgorithm
+{
+public:
+  vtkTypeMacro(vtkPFParticleAlgorithm, vtkPolyDataAlgorithm);
+
+protected:
+  /// `label`: the filter's name in the GUI ("SPH Step"), put before every error.
+  explicit vtkPFParticleAlgorithm(const char* label);
+  ~vtkPFParticleAlgorithm() override;
+
+  /// The particles of the whole pipeline, on the process that holds them all.
+  struct Particles
+  {
+    vtkPointSet* Gathered = nullptr; ///< every process's piece (the input itself in serial); never null
+    vtkPointSet* Local = nullptr;    ///< this process's own piece: its MTime and time say what changed
+    vtkPointSet* Extra = nullptr;    ///< the gathered points of the extra port, or null
+  };
+  /// The filter's work, called on the process that holds all the particles (process 0).
+  virtual int RequestParticles(const Particles& particles, vtkInformationVector** inputVector,
+    vtkInformation* outInfo, vtkPolyData* output) = 0;
+
+  /// An optional input port whose points are gathered too (seeds); -1: none.
+  void SetGatheredInputPort(int port) { this->GatheredInputPort = port; }
+
+  /// The particle spacing d [m]: `property` when positive, else the input's particle_spacing field
+  /// data, else 0 after an error that names `propertyName`.
+  double ParticleSpacingOr(double property, vtkPointSet* input, const char* propertyName);
+
+  /// vtkErrorMacro with the filter's label in front.
+  void ReportError(const std::string& message);
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) final;
+
+private:
+  vtkPFParticleAlgorithm(const vtkPFParticleAlgorithm&) = delete;
+  void operator=(const vtkPFParticleAlgorithm&) = delete;
+
+  std::string Label;
+  int GatheredInputPort = -1;
+};
+
+#endif

@@ -1,0 +1,78 @@
+// Weakly compressible SPH (Müller et al. 2003): the poly6 density, the equation of state and the
+// kick-drift-kick leapfrog step; the spiky pressure gradient is summed with the other forces in
+// SPHSolver::computeAccelerations (SPHForces.cxx).
+#include "parafluid/sph/WCSPHSolver.h"
+
+#include "parafluid/common/Kernels.h"
+#include "parafluid/sph/SPHSolver.h"
+#include "parafluid/sph/WallMirrors.h"
+#include "private/NeighbourCandidates.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace parafluid::sph
+{
+using detail::CandidateBuffer;
+using detail::forEachParticleByCell;
+using detail::threadCount;
+
+void WCSPHSolver::start(SPHSolver& sim)
+{
+  this->computeDensityAndPressure(sim);
+  sim.computeAccelerations(true);
+}
+
+double WCSPHSolver::signalSpeed(const SPHParameters& p) const
+{
+  return std::sqrt(static_cast<double>(p.gasStiffness));
+}
+
+double WCSPHSolver::step(SPHSolver& sim, double remaining)
+{
+  const double dt = sim.chooseTimeStep(remaining);
+  const auto h = static_cast<float>(dt);
+  sim.kick(0.5f * h);
+  sim.drift(h);
+  sim.sortByCell();
+  this->computeDensityAndPressure(sim);
+  sim.computeAccelerations(true);
+  sim.kick(0.5f * h);
+  sim.applyWallFriction(h);
+  sim.Last.timeStep = dt;
+  sim.Time += dt;
+  return dt;
+}
+
+void WCSPHSolver::computeDensityAndPressure(SPHSolver& sim)
+{
+  ParticleState& s = sim.State;
+  const SPHParameters& p = sim.Parameters;
+  const Poly6Kernel w(p.smoothingLength);
+  const float densityScale = p.particleMass * w.coefficient;
+  const float k = p.gasStiffness;
+  const float rho0 = p.restDensity;
+  const bool clamp = p.clampNegativePressure;
+  forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p), {},
+    [&](const CandidateBuffer& candidates, std::uint32_t i)
+    {
+      const float position[3] = { s.x[i], s.y[i], s.z[i] };
+      float sum = candidates.poly6Sum(position, w.h2); // includes the particle itself (r = 0)
+      // Near walls the mirrored fluid fills the cut-off neighbourhood: |x_i - R x_j| = |R x_i - x_j|.
+      const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, p.smoothingLength);
+      for (int m = 0; m < mirrors.count; ++m)
+      {
+        float image[3];
+        for (int a = 0; a < 3; ++a)
+        {
+          image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
+        }
+        sum += candidates.poly6Sum(image, w.h2);
+      }
+      const float rho = densityScale * sum;
+      s.density[i] = rho;
+      const float pressure = k * (rho - rho0);
+      s.pressure[i] = clamp ? std::max(pressure, 0.0f) : pressure;
+    });
+}
+} // namespace parafluid::sph

@@ -1,0 +1,41 @@
+#pragma once
+// A pressure solver of the SPH simulation (in the manner of SPlisHSPlasH's TimeStep classes): it
+// owns the per-particle arrays only it needs and advances the simulation it is handed by one step,
+// using the simulation's shared parts (neighbour grid, walls, non-pressure forces, time-step control).
+//
+// Adding a solver: a class deriving from PressureSolver (one file pair beside WCSPHSolver), a value
+// of PressureSolverType, one line in makePressureSolver (PressureSolver.cxx), and the enumeration
+// entry of SPH Step's PressureSolver property (Plugins/ParaFluid/ParaFluidSPH.xml).
+#include "parafluid/sph/SPHParameters.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace parafluid::sph
+{
+class SPHSolver;
+
+class PressureSolver
+{
+public:
+  virtual ~PressureSolver() = default;
+  /// Densities, pressures and accelerations of the initial state (sorted by cell).
+  virtual void start(SPHSolver& simulation) = 0;
+  /// One step of at most `remaining` seconds, its length chosen by the simulation's time-step
+  /// control; returns the step taken [s]. Leaves each particle's pressure of that step.
+  virtual double step(SPHSolver& simulation, double remaining) = 0;
+  /// The speed [m/s] the CFL condition adds to the flow speed: the sound speed of a weakly
+  /// compressible fluid, 0 for an incompressible one.
+  virtual double signalSpeed(const SPHParameters& parameters) const = 0;
+  /// Reorders the per-particle arrays this solver carries from step to step after the simulation
+  /// sorted its particles by grid cell (`order[k]`: the old index of new particle k).
+  virtual void permute(SPHSolver& simulation, const std::vector<std::uint32_t>& order, std::vector<float>& scratch, int threads) = 0;
+  /// Bytes held by this solver's arrays.
+  virtual std::size_t bytes() const = 0;
+};
+
+/// The solver `type` names.
+std::unique_ptr<PressureSolver> makePressureSolver(PressureSolverType type);
+} // namespace parafluid::sph
