@@ -2,22 +2,27 @@
  * @class vtkPFScreenSpaceFluidMapper
  * @brief Draws particles as a smooth liquid surface in screen space, on the GPU.
  *
- * Passes, each a GPU pass over the part of the viewport the fluid covers (its bounds projected,
- * plus the filter's margin), none run that the settings do not need:
- *  1. depth splats: every particle an exact ray-traced sphere (constant radius or a point array),
- *     writing the eye-space distance of the nearest surface (and the particle colour when
- *     colouring by an array);
- *  2. smoothing of that depth, SmoothingIterations times: the narrow-range filter (Truong &
- *     Yuksel 2018) and the bilateral filter as separable pairs of 1D passes, or screen-space
- *     curvature flow (van der Laan et al. 2009), one pass per step;
- *  3. thickness (transparent fluid and thickness display only): additive chord lengths, blurred
- *     by a separable Gaussian;
- *  4. toon display only: the structure tensor of the depth (blurred), a difference of Gaussians
- *     across its edges and its average along them (flow-guided DoG) into line coverage;
- *  5. the shading pass into the view: normals from the smoothed depth, Fresnel reflection of the
+ * Render is a sequencer of pass classes, in this order; each GPU pass covers only the part of the
+ * viewport the fluid covers (its bounds projected, plus the filters' margin), and none runs that
+ * the settings do not need:
+ *  1. FluidParticleBuffers: the particles to the GPU when they changed (brush strokes: their
+ *     layout, parafluid::npr::layoutBrushStrokes);
+ *  2. FluidFootprint: where the fluid lands on screen (CPU), and whether point sprites are safe;
+ *  3. FluidScreenTargets: the targets, and a copy of the opaque scene drawn so far;
+ *  4. FluidSplatPass: every particle an exact ray-traced sphere, writing the eye-space distance of
+ *     the nearest surface (and the particle colour when colouring by an array); for transparent
+ *     fluid and the thickness display also the additive chord lengths at reduced resolution;
+ *  5. FluidThicknessBlurPass: that thickness blurred by a separable Gaussian;
+ *  6. FluidDepthSmoothingPass: the depth smoothed SmoothingIterations times: the narrow-range
+ *     filter (Truong & Yuksel 2018) or the bilateral filter as separable pairs of 1D passes, or
+ *     screen-space curvature flow (van der Laan et al. 2009), one pass per step;
+ *  7. FluidToonLinePass (toon display): the structure tensor of the depth (blurred), a difference
+ *     of Gaussians across its edges and its average along them (flow-guided DoG) into lines;
+ *  8. FluidShadePass, into the view: normals from the smoothed depth, Fresnel reflection of the
  *     environment, refraction of the opaque scene behind with Beer-Lambert attenuation, specular
  *     from the renderer's lights (or toon bands and lines), and the surface's depth so it
- *     composites with the scene.
+ *     composites with the scene;
+ *  9. FluidBrushStrokePass (brush-stroke display): strokes over the shaded fluid.
  *
  * The opaque scene must have been drawn first: use it with vtkPFScreenSpaceFluidActor, which
  * renders it after all opaque, translucent and volumetric geometry.
@@ -36,6 +41,10 @@
 class vtkOpenGLRenderWindow;
 class vtkPointSet;
 class vtkTexture;
+namespace parafluid
+{
+struct FluidFrame;
+}
 
 class PARAFLUIDFLUIDREPRESENTATIONS_EXPORT vtkPFScreenSpaceFluidMapper : public vtkMapper
 {
@@ -193,6 +202,13 @@ private:
 
   double ParticleRadius = 0.01;
   std::string RadiusArray;
+  // Render's parts. The particles (and for brush strokes their layout) to the GPU when they
+  // changed; false when no particle can be drawn.
+  bool UploadParticles(vtkPointSet* input, vtkOpenGLRenderWindow* window);
+  // The camera and where the fluid lands on screen into `frame`; false when it is not on screen.
+  bool PlaceOnScreen(vtkRenderer* renderer, vtkActor* actor, parafluid::FluidFrame& frame);
+  // Full-resolution pixels per thickness pixel, each way: 2, or 4 for particles small on screen.
+  int ChooseThicknessFactor(const parafluid::FluidFrame& frame) const;
   // Brush-stroke display: lays the strokes out for `input` and uploads them.
   void LayOutStrokes(vtkPointSet* input, vtkUnsignedCharArray* colors, vtkOpenGLRenderWindow* window);
   int SmoothingMethod = NarrowRange;

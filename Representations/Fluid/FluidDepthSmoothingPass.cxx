@@ -1,0 +1,58 @@
+#include "FluidDepthSmoothingPass.h"
+
+#include "FluidBilateralFS.h"
+#include "FluidCurvatureFlowFS.h"
+#include "FluidNarrowRangeFS.h"
+#include "FluidScreenQuad.h"
+#include "FluidScreenTargets.h"
+
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkShaderProgram.h"
+
+namespace parafluid
+{
+FluidDepthSmoothingPass::FluidDepthSmoothingPass() = default;
+FluidDepthSmoothingPass::~FluidDepthSmoothingPass() = default;
+
+int FluidDepthSmoothingPass::Run(FluidFrame& frame, FluidScreenTargets& targets, const Settings& settings)
+{
+  static const char* const bodies[3] = { FluidNarrowRangeFS, FluidBilateralFS, FluidCurvatureFlowFS };
+  const int method = settings.Method >= NarrowRange && settings.Method <= CurvatureFlow ? settings.Method : NarrowRange;
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Quads[method];
+  vtkShaderProgram* program = readyScreenQuad(quad, frame, bodies[method]);
+  // The filters work in the radius of the particles on screen: the largest one is the safe
+  // choice for the band of depths that count as one surface.
+  program->SetUniformf("particleRadius", static_cast<float>(frame.MaxRadius));
+  program->SetUniformf("rangeFactor", static_cast<float>(settings.DepthRange));
+  int current = 0;
+  if (method == CurvatureFlow)
+  {
+    program->SetUniformf("stepFactor", static_cast<float>(settings.CurvatureFlowStep));
+    for (int i = 0; i < settings.Iterations; ++i)
+    {
+      runScreenQuad(frame, quad.get(), targets.Depth[current], targets.Depth[1 - current], "depthTex");
+      current = 1 - current;
+    }
+    return current;
+  }
+  program->SetUniformf("filterSize", static_cast<float>(settings.FilterSize));
+  program->SetUniformi("maxRadius", settings.MaxFilterRadius);
+  const int dx[2] = { 1, 0 }, dy[2] = { 0, 1 };
+  for (int i = 0; i < settings.Iterations; ++i)
+  {
+    program->SetUniform2i("stepDir", dx);
+    runScreenQuad(frame, quad.get(), targets.Depth[0], targets.Depth[1], "depthTex");
+    program->SetUniform2i("stepDir", dy);
+    runScreenQuad(frame, quad.get(), targets.Depth[1], targets.Depth[0], "depthTex");
+  }
+  return current;
+}
+
+void FluidDepthSmoothingPass::Release(vtkWindow* window)
+{
+  for (auto& quad : this->Quads)
+  {
+    releaseScreenQuad(quad, window);
+  }
+}
+} // namespace parafluid

@@ -1,0 +1,44 @@
+#pragma once
+// Pass 2 of the screen-space fluid: smoothing of the splatted depth, one strategy chosen by the
+// method: the narrow-range filter (Truong & Yuksel 2018) or the bilateral filter as separable
+// pairs of 1D passes per iteration, or screen-space curvature flow (van der Laan et al. 2009),
+// one pass per iteration. Depth steps larger than the depth range stay edges.
+#include <memory>
+
+class vtkOpenGLQuadHelper;
+class vtkWindow;
+
+namespace parafluid
+{
+class FluidScreenTargets;
+struct FluidFrame;
+
+class FluidDepthSmoothingPass
+{
+public:
+  FluidDepthSmoothingPass();
+  ~FluidDepthSmoothingPass(); // where vtkOpenGLQuadHelper is complete
+  enum Method
+  {
+    NarrowRange = 0,
+    Bilateral = 1,
+    CurvatureFlow = 2
+  };
+  struct Settings
+  {
+    int Method = NarrowRange;
+    int Iterations = 3;
+    double FilterSize = 4.0;        // narrow-range and bilateral: width in particle radii
+    int MaxFilterRadius = 12;       // ... at most this many pixels each side
+    double DepthRange = 2.0;        // particle radii of depth that count as one surface
+    double CurvatureFlowStep = 0.8; // fraction of the explicit scheme's stability limit
+  };
+  /// Smooths targets.Depth[0] (ping-ponging with Depth[1]); returns the index of the target that
+  /// holds the result.
+  int Run(FluidFrame& frame, FluidScreenTargets& targets, const Settings& settings);
+  void Release(vtkWindow* window);
+
+private:
+  std::unique_ptr<vtkOpenGLQuadHelper> Quads[3]; // one program per method, built when first used
+};
+} // namespace parafluid
