@@ -29,7 +29,7 @@ std::vector<hsize_t> numericShape(hid_t group, const std::string& name)
 {
   H5O_info_t info;
   if (H5Oget_info_by_name2(group, name.c_str(), &info, H5O_INFO_BASIC, H5P_DEFAULT) < 0 ||
-    info.type != H5O_TYPE_DATASET)
+      info.type != H5O_TYPE_DATASET)
   {
     return {};
   }
@@ -59,7 +59,8 @@ std::vector<hsize_t> numericShape(hid_t group, const std::string& name)
 std::string vectorBaseOfX(const std::string& name)
 {
   static const std::map<std::string, std::string> shortNames = { { "vx", "velocity" },
-    { "ax", "acceleration" }, { "fx", "force" } };
+                                                                 { "ax", "acceleration" },
+                                                                 { "fx", "force" } };
   const auto found = shortNames.find(name);
   if (found != shortNames.end())
   {
@@ -175,7 +176,8 @@ StepLayout describeStep(hid_t file, const std::string& groupName)
     return layout;
   }
 
-  auto isVector3 = [&](const std::string& n) {
+  auto isVector3 = [&](const std::string& n)
+  {
     const auto s = shapes.find(n);
     return s != shapes.end() && s->second.size() == 2 && s->second[1] == 3;
   };
@@ -188,7 +190,8 @@ StepLayout describeStep(hid_t file, const std::string& groupName)
       if (shapes[axis].size() != 1 || shapes[axis][0] != layout.particles)
       {
         layout.error = groupName + ": coordinate datasets x, y, z must be 1-D and of equal length (x has " +
-          std::to_string(layout.particles) + " values, " + axis + " has " + std::to_string(shapes[axis][0]) + ")";
+                       std::to_string(layout.particles) + " values, " + axis + " has " +
+                       std::to_string(shapes[axis][0]) + ")";
         return layout;
       }
     }
@@ -211,7 +214,7 @@ StepLayout describeStep(hid_t file, const std::string& groupName)
     if (shapes["id"].size() != 1 || shapes["id"][0] != layout.particles)
     {
       layout.error = groupName + ": dataset id has " + std::to_string(shapes["id"][0]) + " values for " +
-        std::to_string(layout.particles) + " particles";
+                     std::to_string(layout.particles) + " particles";
       return layout;
     }
     layout.idDataset = "id";
@@ -236,7 +239,7 @@ StepLayout describeStep(hid_t file, const std::string& groupName)
     if (shape[0] != layout.particles)
     {
       layout.error = groupName + ": datasets " + name + ", " + yName + ", " + zName + " have " +
-        std::to_string(shape[0]) + " values for " + std::to_string(layout.particles) + " particles";
+                     std::to_string(shape[0]) + " values for " + std::to_string(layout.particles) + " particles";
       return layout;
     }
     layout.arrays.push_back({ base, { name, yName, zName }, 3 });
@@ -251,7 +254,7 @@ StepLayout describeStep(hid_t file, const std::string& groupName)
     if (shape[0] != layout.particles)
     {
       layout.error = groupName + ": dataset " + name + " has " + std::to_string(shape[0]) + " values for " +
-        std::to_string(layout.particles) + " particles";
+                     std::to_string(layout.particles) + " particles";
       return layout;
     }
     const int components = shape.size() == 2 ? static_cast<int>(shape[1]) : 1;

@@ -16,8 +16,8 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkTypeInt64Array.h"
 #include "vtkStringArray.h"
+#include "vtkTypeInt64Array.h"
 
 #include <algorithm>
 #include <cmath>
@@ -56,8 +56,8 @@ vtkSmartPointer<vtkDataArray> arrayForDataset(hid_t dataset, hid_t& memoryType)
 /// (of `stride` columns) of `target`. A component of a vector (x of the points, vx of velocity)
 /// is read contiguously and then interleaved: HDF5's own strided scatter is several times slower
 /// on chunked, compressed datasets.
-bool readSlice(hid_t group, const std::string& name, hid_t memoryType, hsize_t offset, hsize_t count,
-  void* target, hsize_t stride, hsize_t column)
+bool readSlice(hid_t group, const std::string& name, hid_t memoryType, hsize_t offset, hsize_t count, void* target,
+               hsize_t stride, hsize_t column)
 {
   Handle dataset(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose);
   if (!dataset.valid())
@@ -277,10 +277,10 @@ int vtkPFH5PartReader::RequestInformation(vtkInformation*, vtkInformationVector*
   vtkInformation* info = outputVector->GetInformationObject(0);
   info->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
   if (std::is_sorted(this->StepTimes.begin(), this->StepTimes.end()) &&
-    std::adjacent_find(this->StepTimes.begin(), this->StepTimes.end()) == this->StepTimes.end())
+      std::adjacent_find(this->StepTimes.begin(), this->StepTimes.end()) == this->StepTimes.end())
   {
     info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), this->StepTimes.data(),
-      static_cast<int>(this->StepTimes.size()));
+              static_cast<int>(this->StepTimes.size()));
     const double range[2] = { this->StepTimes.front(), this->StepTimes.back() };
     info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
   }
@@ -292,7 +292,7 @@ int vtkPFH5PartReader::RequestInformation(vtkInformation*, vtkInformationVector*
       this->StepTimes[k] = static_cast<double>(k);
     }
     info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), this->StepTimes.data(),
-      static_cast<int>(this->StepTimes.size()));
+              static_cast<int>(this->StepTimes.size()));
     const double range[2] = { 0.0, static_cast<double>(this->StepTimes.size() - 1) };
     info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
   }
@@ -305,8 +305,8 @@ int vtkPFH5PartReader::RequestData(vtkInformation*, vtkInformationVector**, vtkI
   vtkPolyData* output = vtkPolyData::GetData(info);
   if (this->StepGroups.empty())
   {
-    vtkErrorMacro("ParaFluid H5Part Reader: "
-      << (this->InformationError.empty() ? std::string("no steps to read") : this->InformationError));
+    vtkErrorMacro("ParaFluid H5Part Reader: " << (this->InformationError.empty() ? std::string("no steps to read")
+                                                                                 : this->InformationError));
     return 0;
   }
   std::string error;
@@ -344,11 +344,11 @@ int vtkPFH5PartReader::RequestData(vtkInformation*, vtkInformationVector**, vtkI
 
   // This piece's contiguous slice of the particles.
   const int piece = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    : 0;
+                      ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+                      : 0;
   const int pieces = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-    ? std::max(1, info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
-    : 1;
+                       ? std::max(1, info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
+                       : 1;
   const hsize_t total = layout.particles;
   const hsize_t begin = total * static_cast<hsize_t>(piece) / static_cast<hsize_t>(pieces);
   const hsize_t end = total * static_cast<hsize_t>(piece + 1) / static_cast<hsize_t>(pieces);
@@ -373,7 +373,7 @@ int vtkPFH5PartReader::RequestData(vtkInformation*, vtkInformationVector**, vtkI
   for (std::size_t c = 0; c < layout.coordinateDatasets.size(); ++c)
   {
     ok = ok &&
-      readSlice(group, layout.coordinateDatasets[c], memoryType, begin, count, coordinates->GetVoidPointer(0), 3, c);
+         readSlice(group, layout.coordinateDatasets[c], memoryType, begin, count, coordinates->GetVoidPointer(0), 3, c);
   }
   if (!ok)
   {
@@ -430,11 +430,11 @@ int vtkPFH5PartReader::RequestData(vtkInformation*, vtkInformationVector**, vtkI
     for (std::size_t c = 0; c < source.datasets.size() && ok; ++c)
     {
       ok = readSlice(group, source.datasets[c], type, begin, count, array->GetVoidPointer(0),
-        static_cast<hsize_t>(source.components), source.datasets.size() > 1 ? c : 0);
+                     static_cast<hsize_t>(source.components), source.datasets.size() > 1 ? c : 0);
     }
     output->GetPointData()->AddArray(array);
     this->UpdateProgress(0.1 + 0.9 * static_cast<double>(&source - layout.arrays.data() + 1) /
-        static_cast<double>(layout.arrays.size()));
+                                 static_cast<double>(layout.arrays.size()));
   }
   if (!ok)
   {

@@ -10,8 +10,7 @@
  * smoothing_length, rest_density, ...) go to field data. Output: one vertex per particle and an
  * int64 "id" array (the id dataset, else the particle's index in the file).
  */
-#ifndef vtkPFH5PartReader_h
-#define vtkPFH5PartReader_h
+#pragma once
 
 #include "ParaFluidReadersModule.h"
 #include "vtkNew.h"
@@ -60,5 +59,3 @@ private:
   std::vector<double> StepTimes;
   std::string InformationError; // why RequestInformation failed, repeated by RequestData
 };
-
-#endif

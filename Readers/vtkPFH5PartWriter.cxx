@@ -13,9 +13,9 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
-#include "vtkPoints.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
@@ -33,8 +33,8 @@ struct vtkPFH5PartWriter::OpenFile
 namespace
 {
 /// Writes n x components values of the given memory type as dataset `name` of `group`.
-bool writeDataset(hid_t group, const std::string& name, hid_t memoryType, hid_t fileType, const void* data,
-  hsize_t n, hsize_t components, int compression)
+bool writeDataset(hid_t group, const std::string& name, hid_t memoryType, hid_t fileType, const void* data, hsize_t n,
+                  hsize_t components, int compression)
 {
   const hsize_t dims[2] = { n, components };
   const int rank = components == 1 ? 1 : 2;
@@ -52,8 +52,7 @@ bool writeDataset(hid_t group, const std::string& name, hid_t memoryType, hid_t 
       H5Pset_deflate(properties, static_cast<unsigned>(compression));
     }
   }
-  Handle dataset(
-    H5Dcreate2(group, name.c_str(), fileType, space, H5P_DEFAULT, properties, H5P_DEFAULT), H5Dclose);
+  Handle dataset(H5Dcreate2(group, name.c_str(), fileType, space, H5P_DEFAULT, properties, H5P_DEFAULT), H5Dclose);
   if (!dataset.valid())
   {
     return false;
@@ -116,8 +115,8 @@ int vtkPFH5PartWriter::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-vtkTypeBool vtkPFH5PartWriter::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+vtkTypeBool vtkPFH5PartWriter::ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
+                                              vtkInformationVector* outputVector)
 {
   vtkInformation* inputInfo = inputVector[0]->GetInformationObject(0);
   if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_INFORMATION()))
@@ -211,8 +210,8 @@ bool vtkPFH5PartWriter::BeginFile()
   parafluid::h5::QuietErrors quiet;
   this->File = std::make_unique<OpenFile>();
   this->File->TemporaryName = this->FileName + ".tmp-" + std::to_string(::getpid());
-  this->File->File = Handle(
-    H5Fcreate(this->File->TemporaryName.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  this->File->File =
+    Handle(H5Fcreate(this->File->TemporaryName.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
   if (!this->File->File.valid())
   {
     vtkErrorMacro("ParaFluid H5Part Writer: cannot create '" << this->File->TemporaryName
@@ -257,9 +256,10 @@ bool vtkPFH5PartWriter::WriteStep(vtkDataObject* input, int stepIndex, double ti
       component[i] = coordinates->GetComponent(static_cast<vtkIdType>(i), a);
       componentFloat[i] = static_cast<float>(component[i]);
     }
-    const bool ok = doublePrecision
-      ? writeDataset(group, axes[a], H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, component.data(), n, 1, level)
-      : writeDataset(group, axes[a], H5T_NATIVE_FLOAT, H5T_IEEE_F32LE, componentFloat.data(), n, 1, level);
+    const bool ok =
+      doublePrecision
+        ? writeDataset(group, axes[a], H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, component.data(), n, 1, level)
+        : writeDataset(group, axes[a], H5T_NATIVE_FLOAT, H5T_IEEE_F32LE, componentFloat.data(), n, 1, level);
     if (!ok)
     {
       vtkErrorMacro("ParaFluid H5Part Writer: failed writing coordinates of " << groupName);
@@ -297,7 +297,7 @@ bool vtkPFH5PartWriter::WriteStep(vtkDataObject* input, int stepIndex, double ti
       typesFor(source, memoryType, fileType);
     }
     if (!writeDataset(group, name, memoryType, fileType, source->GetVoidPointer(0), n,
-          static_cast<hsize_t>(source->GetNumberOfComponents()), level))
+                      static_cast<hsize_t>(source->GetNumberOfComponents()), level))
     {
       vtkErrorMacro("ParaFluid H5Part Writer: failed writing array '" << name << "' of " << groupName);
       return false;
@@ -310,7 +310,8 @@ bool vtkPFH5PartWriter::WriteStep(vtkDataObject* input, int stepIndex, double ti
     for (int k = 0; fieldData && k < fieldData->GetNumberOfArrays(); ++k)
     {
       vtkDataArray* array = fieldData->GetArray(k);
-      if (!array || !array->GetName() || std::string(array->GetName()) == parafluid::contract::Time || array->GetNumberOfValues() == 0)
+      if (!array || !array->GetName() || std::string(array->GetName()) == parafluid::contract::Time ||
+          array->GetNumberOfValues() == 0)
       {
         continue;
       }

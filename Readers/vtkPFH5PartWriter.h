@@ -9,8 +9,7 @@
  * over the target only once complete, so a failed write never destroys an existing file.
  * With WriteAllTimeSteps, every time step of the input goes into one file.
  */
-#ifndef vtkPFH5PartWriter_h
-#define vtkPFH5PartWriter_h
+#pragma once
 
 #include "ParaFluidReadersModule.h"
 #include "vtkWriter.h"
@@ -64,5 +63,3 @@ private:
   std::vector<double> InputTimes;
   int CurrentStep = 0;
 };
-
-#endif

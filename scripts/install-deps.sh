@@ -6,6 +6,8 @@ set -euo pipefail
 packages=(
   # build tools and the numerical core
   build-essential cmake ninja-build pkg-config libeigen3-dev libgtest-dev libbenchmark-dev
+  # the formatter .clang-format is checked with (pinned: scripts/check-format.sh)
+  clang-format-14
   # ParaView 5.11 itself, its Python and development files
   paraview paraview-dev python3-paraview
   # what find_package(ParaView) pulls in on Debian 12 (see ../shared/ARCHITECTURE.md)

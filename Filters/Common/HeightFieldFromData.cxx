@@ -47,8 +47,8 @@ std::shared_ptr<HeightField> heightFieldFrom(vtkDataObject* data, double seaLeve
       }
       const double* origin = image->GetOrigin();
       const double* spacing = image->GetSpacing();
-      return std::make_shared<HeightField>(
-        std::move(elevation), dims[0], dims[1], origin[0], origin[1], spacing[0], spacing[1], seaLevel);
+      return std::make_shared<HeightField>(std::move(elevation), dims[0], dims[1], origin[0], origin[1], spacing[0],
+                                           spacing[1], seaLevel);
     }
     if (auto* surface = vtkPolyData::SafeDownCast(data))
     {
@@ -81,14 +81,15 @@ std::shared_ptr<HeightField> heightFieldFrom(vtkDataObject* data, double seaLeve
       {
         if (count == 3)
         {
-          triangles.insert(triangles.end(),
-            { static_cast<std::uint32_t>(ids[0]), static_cast<std::uint32_t>(ids[1]), static_cast<std::uint32_t>(ids[2]) });
+          triangles.insert(triangles.end(), { static_cast<std::uint32_t>(ids[0]), static_cast<std::uint32_t>(ids[1]),
+                                              static_cast<std::uint32_t>(ids[2]) });
         }
       }
-      return std::make_shared<HeightField>(HeightField::fromTriangles(points, triangles, resolution, resolution, seaLevel));
+      return std::make_shared<HeightField>(
+        HeightField::fromTriangles(points, triangles, resolution, resolution, seaLevel));
     }
-    error = std::string("it must be an image (height field) or a surface, got ") +
-      (data ? data->GetClassName() : "nothing");
+    error =
+      std::string("it must be an image (height field) or a surface, got ") + (data ? data->GetClassName() : "nothing");
   }
   catch (const std::exception& e)
   {

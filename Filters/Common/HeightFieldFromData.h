@@ -17,6 +17,6 @@ namespace parafluid::vtk
 {
 /// Returns the height field, or null with `error` set to a message for the user (no scalars, a 3D
 /// image, a surface without polygons, ...). `resolution`: raster points per side for a surface.
-PARAFLUIDFILTERSCOMMON_EXPORT std::shared_ptr<HeightField> heightFieldFrom(
-  vtkDataObject* data, double seaLevel, int resolution, std::string& error);
+PARAFLUIDFILTERSCOMMON_EXPORT std::shared_ptr<HeightField> heightFieldFrom(vtkDataObject* data, double seaLevel,
+                                                                           int resolution, std::string& error);
 } // namespace parafluid::vtk

@@ -31,6 +31,6 @@ struct ParticleOutputArrays
 /// (state.originalIndex): points, one vertex per particle, `velocity` (active vectors), `density`,
 /// `id` and the arrays `extra` asks for. Arrays of the output of other names are kept; an
 /// `acceleration` or `pressure` array not asked for is removed (it would describe another time).
-PARAFLUIDFILTERSCOMMON_EXPORT void writeParticleState(
-  const ParticleState& state, const ParticleOutputArrays& extra, vtkPolyData* output);
+PARAFLUIDFILTERSCOMMON_EXPORT void writeParticleState(const ParticleState& state, const ParticleOutputArrays& extra,
+                                                      vtkPolyData* output);
 } // namespace parafluid::vtk

@@ -22,11 +22,12 @@ void vtkPFParticleAlgorithm::ReportError(const std::string& message)
 double vtkPFParticleAlgorithm::ParticleSpacingOr(double property, vtkPointSet* input, const char* propertyName)
 {
   const double d = property > 0.0
-    ? property
-    : parafluid::vtk::fieldValue(input->GetFieldData(), parafluid::contract::ParticleSpacing, 0.0);
+                     ? property
+                     : parafluid::vtk::fieldValue(input->GetFieldData(), parafluid::contract::ParticleSpacing, 0.0);
   if (!(d > 0.0))
   {
-    this->ReportError(std::string("set ") + propertyName +
+    this->ReportError(
+      std::string("set ") + propertyName +
       " (the distance between neighbouring particles, metres); the input has no particle_spacing field data to "
       "take it from");
     return 0.0;
@@ -34,8 +35,8 @@ double vtkPFParticleAlgorithm::ParticleSpacingOr(double property, vtkPointSet* i
   return d;
 }
 
-int vtkPFParticleAlgorithm::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkPFParticleAlgorithm::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                        vtkInformationVector* outputVector)
 {
   vtkPointSet* local = vtkPointSet::GetData(inputVector[0]);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
@@ -51,10 +52,10 @@ int vtkPFParticleAlgorithm::RequestData(
   bool holdsAll = true;
   vtkSmartPointer<vtkDataObject> gathered = parafluid::vtk::gatherToFirstProcess(local, holdsAll);
   vtkSmartPointer<vtkDataObject> gatheredExtra;
-  vtkPointSet* localExtra = this->GatheredInputPort >= 0 &&
-      inputVector[this->GatheredInputPort]->GetNumberOfInformationObjects() > 0
-    ? vtkPointSet::GetData(inputVector[this->GatheredInputPort])
-    : nullptr;
+  vtkPointSet* localExtra =
+    this->GatheredInputPort >= 0 && inputVector[this->GatheredInputPort]->GetNumberOfInformationObjects() > 0
+      ? vtkPointSet::GetData(inputVector[this->GatheredInputPort])
+      : nullptr;
   if (localExtra)
   {
     bool extraHere = true;

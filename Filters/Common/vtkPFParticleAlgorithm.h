@@ -9,8 +9,7 @@
  * Errors are reported with the filter's GUI label in front, so the user knows which filter
  * speaks.
  */
-#ifndef vtkPFParticleAlgorithm_h
-#define vtkPFParticleAlgorithm_h
+#pragma once
 
 #include "ParaFluidFiltersCommonModule.h"
 #include "vtkPolyDataAlgorithm.h"
@@ -37,8 +36,8 @@ protected:
     vtkPointSet* Extra = nullptr;    ///< the gathered points of the extra port, or null
   };
   /// The filter's work, called on the process that holds all the particles (process 0).
-  virtual int RequestParticles(const Particles& particles, vtkInformationVector** inputVector,
-    vtkInformation* outInfo, vtkPolyData* output) = 0;
+  virtual int RequestParticles(const Particles& particles, vtkInformationVector** inputVector, vtkInformation* outInfo,
+                               vtkPolyData* output) = 0;
 
   /// An optional input port whose points are gathered too (seeds); -1: none.
   void SetGatheredInputPort(int port) { this->GatheredInputPort = port; }
@@ -59,5 +58,3 @@ private:
   std::string Label;
   int GatheredInputPort = -1;
 };
-
-#endif

@@ -43,8 +43,8 @@ int vtkPFFluidFlowLines::FillInputPortInformation(int port, vtkInformation* info
   return 1;
 }
 
-int vtkPFFluidFlowLines::RequestParticles(
-  const Particles& particles, vtkInformationVector**, vtkInformation*, vtkPolyData* output)
+int vtkPFFluidFlowLines::RequestParticles(const Particles& particles, vtkInformationVector**, vtkInformation*,
+                                          vtkPolyData* output)
 {
   vtkPointSet* input = particles.Gathered;
   vtkPointSet* seeds = particles.Extra;
@@ -78,23 +78,25 @@ int vtkPFFluidFlowLines::RequestParticles(
   if (!velocityArray || velocityArray->GetNumberOfComponents() != 3)
   {
     this->ReportError("the particles have no 3-component point array '" + this->VelocityArray +
-      "' (choose it in VelocityArray)");
+                      "' (choose it in VelocityArray)");
     return 0;
   }
   std::vector<float> positionStorage, seedStorage;
   const float* xyz = parafluid::vtk::positionsAsFloat(input, positionStorage);
   const std::vector<float> velocity = parafluid::vtk::tuplesAsFloat(velocityArray);
-  const float* seedXYZ = seeds && seeds->GetNumberOfPoints() > 0 ? parafluid::vtk::positionsAsFloat(seeds, seedStorage) : nullptr;
+  const float* seedXYZ =
+    seeds && seeds->GetNumberOfPoints() > 0 ? parafluid::vtk::positionsAsFloat(seeds, seedStorage) : nullptr;
   const std::size_t seedCount = seedXYZ ? static_cast<std::size_t>(seeds->GetNumberOfPoints()) : 0;
 
   parafluid::npr::FlowLineSet lines;
   try
   {
     lines = parafluid::npr::traceFlowLines(xyz, velocity.data(), static_cast<std::size_t>(n), p, seedXYZ, seedCount,
-      [this](double fraction) {
-        this->UpdateProgress(fraction);
-        return this->GetAbortExecute() == 0;
-      });
+                                           [this](double fraction)
+                                           {
+                                             this->UpdateProgress(fraction);
+                                             return this->GetAbortExecute() == 0;
+                                           });
   }
   catch (const std::exception& e)
   {

@@ -11,8 +11,7 @@
  * `curvature` [1/m], and cell arrays `length` [m], `turning` [rad] and `seed`. Under MPI the
  * particles are gathered on process 0, which traces all lines.
  */
-#ifndef vtkPFFluidFlowLines_h
-#define vtkPFFluidFlowLines_h
+#pragma once
 
 #include "ParaFluidNPRFiltersModule.h"
 #include "vtkPFParticleAlgorithm.h"
@@ -57,7 +56,7 @@ protected:
   ~vtkPFFluidFlowLines() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestParticles(const Particles& particles, vtkInformationVector** inputVector, vtkInformation* outInfo,
-    vtkPolyData* output) override;
+                       vtkPolyData* output) override;
 
   std::string VelocityArray = parafluid::contract::Velocity;
   double ParticleSpacing = 0.0;
@@ -72,5 +71,3 @@ private:
   vtkPFFluidFlowLines(const vtkPFFluidFlowLines&) = delete;
   void operator=(const vtkPFFluidFlowLines&) = delete;
 };
-
-#endif

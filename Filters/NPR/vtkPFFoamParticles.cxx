@@ -37,7 +37,8 @@ int vtkPFFoamParticles::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                    vtkInformationVector* outputVector)
 {
   vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
   vtkPointSet* output = vtkPointSet::GetData(outputVector);
@@ -49,8 +50,8 @@ int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inpu
   output->ShallowCopy(input);
   const vtkIdType n = input->GetNumberOfPoints();
   const double d = this->ParticleSpacing > 0.0
-    ? this->ParticleSpacing
-    : parafluid::vtk::fieldValue(input->GetFieldData(), parafluid::contract::ParticleSpacing, 0.0);
+                     ? this->ParticleSpacing
+                     : parafluid::vtk::fieldValue(input->GetFieldData(), parafluid::contract::ParticleSpacing, 0.0);
   if (n > 0 && !(d > 0.0))
   {
     vtkErrorMacro("Foam Particles: set ParticleSpacing (the distance between neighbouring particles, metres); the "
@@ -75,8 +76,8 @@ int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inpu
   if (n > 0 && !idArray)
   {
     vtkWarningMacro("Foam Particles: no point array '" << this->IdArray
-                                                      << "' of particle ids; using point order, so foam follows "
-                                                         "particles only if their order never changes");
+                                                       << "' of particle ids; using point order, so foam follows "
+                                                          "particles only if their order never changes");
   }
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -100,8 +101,8 @@ int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inpu
   // The hysteresis continues forward in time under unchanged settings; the same time again redoes
   // the last step; anything else starts again.
   const double time = input->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP())
-    ? input->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
-    : 0.0;
+                        ? input->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
+                        : 0.0;
   const vtkMTimeType settings = this->GetMTime();
   const bool sameSettings = this->HasState && settings == this->StateSettings;
   if (sameSettings && time == this->LastTime)

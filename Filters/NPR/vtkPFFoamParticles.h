@@ -12,14 +12,13 @@
  * (0/1) and `foam_score`. Under MPI each process scores its own piece (particles at a piece's
  * border see only that piece's neighbours).
  */
-#ifndef vtkPFFoamParticles_h
-#define vtkPFFoamParticles_h
+#pragma once
 
 #include "ParaFluidNPRFiltersModule.h"
 #include "vtkPassInputTypeAlgorithm.h"
 
-#include <memory>
 #include "ParticleContract.h"
+#include <memory>
 
 #include <string>
 
@@ -82,5 +81,3 @@ private:
   double LastTime = 0.0;
   vtkMTimeType StateSettings = 0;
 };
-
-#endif

@@ -21,8 +21,8 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
-#include <memory>
 #include <cmath>
+#include <memory>
 #include <string>
 
 vtkStandardNewMacro(vtkPFGerstnerOcean);
@@ -36,31 +36,21 @@ vtkPFGerstnerOcean::vtkPFGerstnerOcean()
   this->SetNumberOfOutputPorts(1);
 }
 
-void vtkPFGerstnerOcean::SetWave(
-  int index, double amplitude, double wavelength, double direction, double steepness, double phase)
+void vtkPFGerstnerOcean::SetWave(int index, double amplitude, double wavelength, double direction, double steepness,
+                                 double phase)
 {
-  if (index < 0)
-  {
-    return;
-  }
-  const std::size_t needed = 5 * (static_cast<std::size_t>(index) + 1);
-  if (this->Waves.size() < needed)
-  {
-    this->Waves.resize(needed, 0.0);
-  }
   const double values[5] = { amplitude, wavelength, direction, steepness, phase };
-  if (!std::equal(values, values + 5, this->Waves.begin() + 5 * index))
+  if (this->Sea.setWave(index, values))
   {
-    std::copy(values, values + 5, this->Waves.begin() + 5 * index);
     this->Modified();
   }
 }
 
 void vtkPFGerstnerOcean::RemoveAllWaves()
 {
-  if (!this->Waves.empty())
+  if (!this->Sea.waves.empty())
   {
-    this->Waves.clear();
+    this->Sea.waves.clear();
     this->Modified();
   }
 }
@@ -102,14 +92,15 @@ int vtkPFGerstnerOcean::RequestInformation(vtkInformation*, vtkInformationVector
   return 1;
 }
 
-int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                    vtkInformationVector* outputVector)
 {
   using namespace parafluid::ocean;
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkPolyData* output = vtkPolyData::GetData(outInfo);
   const double time = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-    : 0.0;
+                        ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+                        : 0.0;
   const int nx = this->Resolution[0], ny = this->Resolution[1];
   if (nx < 2 || ny < 2 || static_cast<double>(nx) * ny > 1.0e8)
   {
@@ -122,27 +113,19 @@ int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inpu
     return 0;
   }
 
-  OceanParameters p;
-  p.waves = chooseWaves(this->SeaState, this->Waves, this->WindDirection);
-  if (this->SeaState == CUSTOM && p.waves.empty())
+  const OceanParameters p = this->Sea.parameters();
+  if (this->Sea.seaState == CUSTOM && p.waves.empty())
   {
     vtkWarningMacro("Sea State is Custom but the wave list is empty: the sea is flat");
   }
-  p.depth = this->WaterDepth > 0.0 ? this->WaterDepth : kDeepWater;
-  p.maxSteepness = this->MaxSteepness;
-  p.windDirection = this->WindDirection;
-  p.windLean = this->WindLean;
-  p.breakingDepthRatio = this->BreakingDepthRatio;
-  p.breakingStretch = this->BreakingStretch;
-  p.breakingLean = this->BreakingLean;
-  p.breakingShift = this->BreakingShift;
 
   std::shared_ptr<Bathymetry> floor;
-  vtkDataObject* floorData = this->GetNumberOfInputConnections(1) > 0 ? vtkDataObject::GetData(inputVector[1], 0) : nullptr;
+  vtkDataObject* floorData =
+    this->GetNumberOfInputConnections(1) > 0 ? vtkDataObject::GetData(inputVector[1], 0) : nullptr;
   if (floorData)
   {
     std::string error;
-    floor = parafluid::vtk::heightFieldFrom(floorData, this->SeaLevel, this->BathymetryResolution, error);
+    floor = parafluid::vtk::heightFieldFrom(floorData, this->Sea.seaLevel, this->Sea.bathymetryResolution, error);
     if (!floor)
     {
       vtkErrorMacro("Bathymetry: " << error);
@@ -150,7 +133,7 @@ int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inpu
     }
   }
   const double region[4] = { this->Origin[0], this->Origin[0] + this->Size[0], this->Origin[1],
-    this->Origin[1] + this->Size[1] };
+                             this->Origin[1] + this->Size[1] };
   std::unique_ptr<GerstnerOcean> ocean;
   try
   {
@@ -186,15 +169,15 @@ int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inpu
   foam->SetNumberOfTuples(n);
   depth->SetName("depth");
   depth->SetNumberOfTuples(n);
-  const bool hasBottom = floor || this->WaterDepth > 0.0;
+  const bool hasBottom = floor || this->Sea.waterDepth > 0.0;
   const int blocks = std::min(ny, 32);
   for (int b = 0; b < blocks && !this->AbortExecute; ++b)
   {
     const std::size_t first = static_cast<std::size_t>(ny) * b / blocks * nx;
     const std::size_t last = static_cast<std::size_t>(ny) * (b + 1) / blocks * nx;
     ocean->evaluate(xs.data() + first, ys.data() + first, last - first, time, displacement->GetPointer(3 * first),
-      normals->GetPointer(3 * first), jacobian->GetPointer(first), foam->GetPointer(first),
-      depth->GetPointer(first));
+                    normals->GetPointer(3 * first), jacobian->GetPointer(first), foam->GetPointer(first),
+                    depth->GetPointer(first));
     this->UpdateProgress(static_cast<double>(b + 1) / blocks);
   }
   if (this->AbortExecute)
@@ -207,7 +190,7 @@ int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inpu
   points->SetNumberOfPoints(n);
   float* xyz = static_cast<float*>(points->GetVoidPointer(0));
   const float* d = displacement->GetPointer(0);
-  const auto level = static_cast<float>(this->SeaLevel);
+  const auto level = static_cast<float>(this->Sea.seaLevel);
   for (vtkIdType k = 0; k < n; ++k)
   {
     xyz[3 * k] = xs[static_cast<std::size_t>(k)] + d[3 * k];
@@ -260,6 +243,6 @@ void vtkPFGerstnerOcean::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Origin: " << this->Origin[0] << ", " << this->Origin[1] << "\n";
   os << indent << "Size: " << this->Size[0] << ", " << this->Size[1] << "\n";
   os << indent << "Resolution: " << this->Resolution[0] << " x " << this->Resolution[1] << "\n";
-  os << indent << "SeaState: " << this->SeaState << ", waves in list: " << this->GetNumberOfWaves() << "\n";
-  os << indent << "WaterDepth: " << this->WaterDepth << "\n";
+  os << indent << "SeaState: " << this->Sea.seaState << ", waves in list: " << this->GetNumberOfWaves() << "\n";
+  os << indent << "WaterDepth: " << this->Sea.waterDepth << "\n";
 }

@@ -14,11 +14,12 @@
  * (0..1: breaking crests and squeezed surface) and, where the water has a bottom, `depth` [m].
  * Time-aware: time steps every 1 / FrameRate seconds over [0, Duration]; any time can be asked for.
  */
-#ifndef vtkPFGerstnerOcean_h
-#define vtkPFGerstnerOcean_h
+#pragma once
 
 #include "ParaFluidOceanFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
+
+#include "parafluid/ocean/SeaSettings.h"
 
 #include <vector>
 
@@ -49,43 +50,46 @@ public:
   /// Grid points in x and y (at least 2 each).
   vtkSetVector2Macro(Resolution, int);
   vtkGetVector2Macro(Resolution, int);
+  /// Direction the wind blows towards [degrees, counter-clockwise from +x]; presets spread their
+  /// waves about it.
+  void SetWindDirection(double value) { this->SetSea(this->Sea.windDirection, value); }
+  double GetWindDirection() const { return this->Sea.windDirection; }
+  /// How far crests lean downwind, 0 to 0.5.
+  void SetWindLean(double value) { this->SetSea(this->Sea.windLean, value); }
+  double GetWindLean() const { return this->Sea.windLean; }
+  /// Uniform water depth without a sea floor [m]; 0 means deep water.
+  void SetWaterDepth(double value) { this->SetSea(this->Sea.waterDepth, value); }
+  double GetWaterDepth() const { return this->Sea.waterDepth; }
+  /// Cap on the summed horizontal steepness; 1 is where the surface folds.
+  void SetMaxSteepness(double value) { this->SetSea(this->Sea.maxSteepness, value); }
+  double GetMaxSteepness() const { return this->Sea.maxSteepness; }
+  /// Wave height over depth at which waves break (0.78, McCowan).
+  void SetBreakingDepthRatio(double value) { this->SetSea(this->Sea.breakingDepthRatio, value); }
+  double GetBreakingDepthRatio() const { return this->Sea.breakingDepthRatio; }
+  /// Breaking crest: raised by this fraction of its amplitude, tilted forward by BreakingLean
+  /// [rad], thrown forward by BreakingShift amplitudes.
+  void SetBreakingStretch(double value) { this->SetSea(this->Sea.breakingStretch, value); }
+  double GetBreakingStretch() const { return this->Sea.breakingStretch; }
+  void SetBreakingLean(double value) { this->SetSea(this->Sea.breakingLean, value); }
+  double GetBreakingLean() const { return this->Sea.breakingLean; }
+  void SetBreakingShift(double value) { this->SetSea(this->Sea.breakingShift, value); }
+  double GetBreakingShift() const { return this->Sea.breakingShift; }
   /// Height of the still water surface [m].
-  vtkSetMacro(SeaLevel, double);
-  vtkGetMacro(SeaLevel, double);
-  /// CUSTOM uses the wave list; the presets ignore it.
-  vtkSetClampMacro(SeaState, int, CUSTOM, STORM);
-  vtkGetMacro(SeaState, int);
+  void SetSeaLevel(double value) { this->SetSea(this->Sea.seaLevel, value); }
+  double GetSeaLevel() const { return this->Sea.seaLevel; }
+  /// 0 (custom) uses the wave list; the presets 1 calm, 2 swell, 3 storm ignore it.
+  void SetSeaState(int value) { this->SetSea(this->Sea.seaState, value < 0 ? 0 : (value > 3 ? 3 : value)); }
+  int GetSeaState() const { return this->Sea.seaState; }
   /// Wave list: amplitude [m], wavelength [m], direction [degrees], steepness Q [0, 1], phase [rad].
   void SetWave(int index, double amplitude, double wavelength, double direction, double steepness, double phase);
   void RemoveAllWaves();
-  int GetNumberOfWaves() const { return static_cast<int>(this->Waves.size() / 5); }
-  /// Direction the wind blows towards [degrees, counter-clockwise from +x]; presets spread their
-  /// waves about it.
-  vtkSetMacro(WindDirection, double);
-  vtkGetMacro(WindDirection, double);
-  /// How far crests lean downwind, 0 to 0.5.
-  vtkSetMacro(WindLean, double);
-  vtkGetMacro(WindLean, double);
-  /// Uniform water depth without a Bathymetry input [m]; 0 means deep water.
-  vtkSetMacro(WaterDepth, double);
-  vtkGetMacro(WaterDepth, double);
-  /// Cap on the summed horizontal steepness; 1 is where the surface folds.
-  vtkSetMacro(MaxSteepness, double);
-  vtkGetMacro(MaxSteepness, double);
-  /// Wave height over depth at which waves break (0.78, McCowan).
-  vtkSetMacro(BreakingDepthRatio, double);
-  vtkGetMacro(BreakingDepthRatio, double);
-  /// Breaking crest: raised by this fraction of its amplitude, tilted forward by BreakingLean
-  /// [rad], thrown forward by BreakingShift amplitudes.
-  vtkSetMacro(BreakingStretch, double);
-  vtkGetMacro(BreakingStretch, double);
-  vtkSetMacro(BreakingLean, double);
-  vtkGetMacro(BreakingLean, double);
-  vtkSetMacro(BreakingShift, double);
-  vtkGetMacro(BreakingShift, double);
+  int GetNumberOfWaves() const { return static_cast<int>(this->Sea.waves.size() / 5); }
   /// Raster resolution for a terrain-surface Bathymetry (points per side).
-  vtkSetClampMacro(BathymetryResolution, int, 2, 8192);
-  vtkGetMacro(BathymetryResolution, int);
+  void SetBathymetryResolution(int value)
+  {
+    this->SetSea(this->Sea.bathymetryResolution, value < 2 ? 2 : (value > 8192 ? 8192 : value));
+  }
+  int GetBathymetryResolution() const { return this->Sea.bathymetryResolution; }
   /// Time span advertised to the animation [s] and time steps per second.
   vtkSetMacro(Duration, double);
   vtkGetMacro(Duration, double);
@@ -102,24 +106,21 @@ protected:
 private:
   vtkPFGerstnerOcean(const vtkPFGerstnerOcean&) = delete;
   void operator=(const vtkPFGerstnerOcean&) = delete;
+  template<class Field, class Value>
+  void SetSea(Field& field, Value value)
+  {
+    if (field != static_cast<Field>(value))
+    {
+      field = static_cast<Field>(value);
+      this->Modified();
+    }
+  }
+  /// The sea, shared in form with the Gerstner Ocean representation (parafluid/ocean/SeaSettings.h).
+  parafluid::ocean::SeaSettings Sea;
 
   double Origin[2] = { 0.0, 0.0 };
   double Size[2] = { 200.0, 200.0 };
   int Resolution[2] = { 256, 256 };
-  double SeaLevel = 0.0;
-  int SeaState = SWELL;
-  std::vector<double> Waves; // five numbers per wave
-  double WindDirection = 0.0;
-  double WindLean = 0.2;
-  double WaterDepth = 0.0;
-  double MaxSteepness = 0.9;
-  double BreakingDepthRatio = 0.78;
-  double BreakingStretch = 0.6;
-  double BreakingLean = 0.6;
-  double BreakingShift = 0.8;
-  int BathymetryResolution = 256;
   double Duration = 20.0;
   double FrameRate = 30.0;
 };
-
-#endif

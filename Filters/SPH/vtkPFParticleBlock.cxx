@@ -30,12 +30,11 @@ int vtkPFParticleBlock::RequestData(vtkInformation*, vtkInformationVector**, vtk
   float mass = 0.0f;
   try
   {
-    lattice = parafluid::fillBoxWithLattice(
-      { this->BlockBounds[0], this->BlockBounds[1], this->BlockBounds[2], this->BlockBounds[3],
-        this->BlockBounds[4], this->BlockBounds[5] },
-      this->Spacing);
-    mass = parafluid::sph::latticeParticleMass(
-      static_cast<float>(this->Spacing), static_cast<float>(h), static_cast<float>(this->RestDensity));
+    lattice = parafluid::fillBoxWithLattice({ this->BlockBounds[0], this->BlockBounds[1], this->BlockBounds[2],
+                                              this->BlockBounds[3], this->BlockBounds[4], this->BlockBounds[5] },
+                                            this->Spacing);
+    mass = parafluid::sph::latticeParticleMass(static_cast<float>(this->Spacing), static_cast<float>(h),
+                                               static_cast<float>(this->RestDensity));
   }
   catch (const std::exception& e)
   {
@@ -58,7 +57,8 @@ int vtkPFParticleBlock::RequestData(vtkInformation*, vtkInformationVector**, vtk
   output->SetPoints(points);
   parafluid::vtk::setOneVertexPerPoint(output, n);
 
-  auto addScalar = [&](const char* name, float value) {
+  auto addScalar = [&](const char* name, float value)
+  {
     vtkNew<vtkFloatArray> a;
     a->SetName(name);
     a->SetNumberOfValues(n);

@@ -6,8 +6,7 @@
  * (zero), mass, int64 id, and field data particle_spacing, smoothing_length (2 spacings),
  * rest_density and domain_bounds, which the SPH Step filter picks up.
  */
-#ifndef vtkPFParticleBlock_h
-#define vtkPFParticleBlock_h
+#pragma once
 
 #include "ParaFluidSPHFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
@@ -46,5 +45,3 @@ private:
   double DomainBounds[6] = { 0.0, 0.8, 0.0, 0.1, 0.0, 0.6 };
   double RestDensity = 1000.0;
 };
-
-#endif

@@ -2,7 +2,7 @@
 
 #include "ParticleArrays.h"
 #include "ParticleStateArrays.h"
-#include "vtkPFTriangleBoundary.h"
+#include "TriangleBoundaryFromSurface.h"
 
 #include "parafluid/sph/SPHParameters.h"
 #include "parafluid/sph/SPHSolver.h"
@@ -31,10 +31,10 @@ using parafluid::sph::WallFriction;
 struct vtkPFSPHStep::Cache
 {
   std::optional<SPHSolver> Solver;
-  long long OutputIndex = 0;   // the output time the solver's state belongs to
-  vtkMTimeType InputTime = 0;  // the input data object's MTime it started from
+  long long OutputIndex = 0;     // the output time the solver's state belongs to
+  vtkMTimeType InputTime = 0;    // the input data object's MTime it started from
   vtkMTimeType BoundaryTime = 0; // the boundary surface's MTime (0 without one)
-  vtkMTimeType FilterTime = 0; // this filter's MTime (its properties) it started with
+  vtkMTimeType FilterTime = 0;   // this filter's MTime (its properties) it started with
 };
 
 vtkStandardNewMacro(vtkPFSPHStep);
@@ -108,13 +108,13 @@ int vtkPFSPHStep::FillInputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
-int vtkPFSPHStep::RequestInformation(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkPFSPHStep::RequestInformation(vtkInformation*, vtkInformationVector** inputVector,
+                                     vtkInformationVector* outputVector)
 {
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   this->InputHasTime = inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) &&
-    inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) > 0;
+                       inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) > 0;
   this->StartTime = this->InputHasTime ? inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[0] : 0.0;
   const double interval = this->OutputInterval > 0.0 ? this->OutputInterval : 1.0;
   std::vector<double> times(static_cast<std::size_t>(this->NumberOfOutputs) + 1);
@@ -128,8 +128,7 @@ int vtkPFSPHStep::RequestInformation(
   return 1;
 }
 
-int vtkPFSPHStep::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+int vtkPFSPHStep::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   // Whatever time is asked of this filter, the simulation starts from the input at t0.
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
@@ -151,13 +150,14 @@ long long vtkPFSPHStep::RequestedOutputIndex(vtkInformation* outInfo) const
   return std::max(0LL, std::min<long long>(index, this->NumberOfOutputs));
 }
 
-int vtkPFSPHStep::RequestParticles(
-  const Particles& particles, vtkInformationVector** inputVector, vtkInformation* outInfo, vtkPolyData* output)
+int vtkPFSPHStep::RequestParticles(const Particles& particles, vtkInformationVector** inputVector,
+                                   vtkInformation* outInfo, vtkPolyData* output)
 {
   this->StepsTakenLastUpdate = 0;
   if (!(this->OutputInterval > 0.0) || !std::isfinite(this->OutputInterval))
   {
-    this->ReportError("OutputInterval must be a positive number of seconds, got " + std::to_string(this->OutputInterval));
+    this->ReportError("OutputInterval must be a positive number of seconds, got " +
+                      std::to_string(this->OutputInterval));
     return 0;
   }
   const long long target = this->RequestedOutputIndex(outInfo);
@@ -169,7 +169,7 @@ int vtkPFSPHStep::RequestParticles(
   const vtkMTimeType inputTime = particles.Local->GetMTime();
   const vtkMTimeType boundaryTime = boundary ? boundary->GetMTime() : 0;
   const bool reusable = cache.Solver && cache.InputTime == inputTime && cache.BoundaryTime == boundaryTime &&
-    cache.FilterTime == this->GetMTime() && cache.OutputIndex <= target;
+                        cache.FilterTime == this->GetMTime() && cache.OutputIndex <= target;
   if (!reusable)
   {
     if (!this->StartSimulation(particles.Gathered, boundary))
@@ -224,8 +224,8 @@ bool vtkPFSPHStep::ResolveParameters(vtkFieldData* fd, SPHParameters& p)
   }
   try
   {
-    p.particleMass = parafluid::sph::latticeParticleMass(
-      static_cast<float>(spacing), p.smoothingLength, p.restDensity, p.densityKernel());
+    p.particleMass = parafluid::sph::latticeParticleMass(static_cast<float>(spacing), p.smoothingLength, p.restDensity,
+                                                         p.densityKernel());
   }
   catch (const std::exception& e)
   {
@@ -281,12 +281,13 @@ int vtkPFSPHStep::AdvanceTo(long long target)
     for (long long k = 0; k < intervals && !aborted; ++k)
     {
       this->StepsTakenLastUpdate += cache.Solver->advance(this->OutputInterval,
-        [this, &aborted, k, intervals](double fraction)
-        {
-          this->UpdateProgress((static_cast<double>(k) + fraction) / static_cast<double>(intervals));
-          aborted = this->CheckAbort() != 0;
-          return !aborted;
-        });
+                                                          [this, &aborted, k, intervals](double fraction)
+                                                          {
+                                                            this->UpdateProgress((static_cast<double>(k) + fraction) /
+                                                                                 static_cast<double>(intervals));
+                                                            aborted = this->CheckAbort() != 0;
+                                                            return !aborted;
+                                                          });
     }
   }
   catch (const std::exception& e)
@@ -330,8 +331,8 @@ void vtkPFSPHStep::WriteOutput(vtkPointSet* input, long long target, vtkPolyData
   const double time = this->StartTime + static_cast<double>(target) * this->OutputInterval;
   const SPHParameters& p = solver.parameters();
   const double h = p.smoothingLength, rho0 = p.restDensity, mass = p.particleMass;
-  const double bounds[6] = { p.domainBounds[0], p.domainBounds[1], p.domainBounds[2], p.domainBounds[3],
-    p.domainBounds[4], p.domainBounds[5] };
+  const double bounds[6] = { p.domainBounds[0], p.domainBounds[1], p.domainBounds[2],
+                             p.domainBounds[3], p.domainBounds[4], p.domainBounds[5] };
   vtkFieldData* fd = output->GetFieldData();
   parafluid::vtk::setFieldValue(fd, contract::Time, &time, 1);
   parafluid::vtk::setFieldValue(fd, contract::SmoothingLength, &h, 1);

@@ -16,8 +16,7 @@
  * (smoothing_length, particle_spacing, domain_bounds, as the ParaFluid reader and the Particle
  * Block source provide).
  */
-#ifndef vtkPFSPHStep_h
-#define vtkPFSPHStep_h
+#pragma once
 
 #include "ParaFluidSPHFiltersModule.h"
 #include "vtkPFParticleAlgorithm.h"
@@ -129,13 +128,13 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestParticles(const Particles& particles, vtkInformationVector** inputVector, vtkInformation* outInfo,
-    vtkPolyData* output) override;
+                       vtkPolyData* output) override;
 
 private:
   vtkPFSPHStep(const vtkPFSPHStep&) = delete;
   void operator=(const vtkPFSPHStep&) = delete;
 
-  template <class Field, class Value>
+  template<class Field, class Value>
   void SetParameter(Field& field, Value value)
   {
     if (field != static_cast<Field>(value))
@@ -172,5 +171,3 @@ private:
   struct Cache;
   std::unique_ptr<Cache> Cached;
 };
-
-#endif

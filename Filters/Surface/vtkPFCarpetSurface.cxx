@@ -2,7 +2,7 @@
 
 #include "HeightFieldFromData.h"
 #include "ParticleArrays.h"
-#include "vtkPFSurfaceMeshOutput.h"
+#include "SurfaceMeshOutput.h"
 
 #include "parafluid/common/HeightField.h"
 #include "parafluid/surface/CarpetSurface.h"
@@ -40,12 +40,12 @@ int vtkPFCarpetSurface::FillInputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
-int vtkPFCarpetSurface::RequestParticles(
-  const Particles& particles, vtkInformationVector** inputVector, vtkInformation*, vtkPolyData* output)
+int vtkPFCarpetSurface::RequestParticles(const Particles& particles, vtkInformationVector** inputVector,
+                                         vtkInformation*, vtkPolyData* output)
 {
   vtkDataObject* terrainData = inputVector[1]->GetNumberOfInformationObjects() > 0
-    ? inputVector[1]->GetInformationObject(0)->Get(vtkDataObject::DATA_OBJECT())
-    : nullptr;
+                                 ? inputVector[1]->GetInformationObject(0)->Get(vtkDataObject::DATA_OBJECT())
+                                 : nullptr;
   if (!(this->FallAcceleration >= 0.0) || !(this->MinDepth >= 0.0))
   {
     this->ReportError("FallAcceleration and MinDepth must be zero or positive");
@@ -55,8 +55,8 @@ int vtkPFCarpetSurface::RequestParticles(
   vtkPointSet* input = particles.Gathered;
   const vtkIdType n = input ? input->GetNumberOfPoints() : 0;
   const double time = local->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP())
-    ? local->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
-    : 0.0;
+                        ? local->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
+                        : 0.0;
 
   // The state continues only forward in time, under unchanged properties and terrain.
   const vtkMTimeType settings = std::max(this->GetMTime(), terrainData ? terrainData->GetMTime() : 0);
@@ -92,8 +92,8 @@ int vtkPFCarpetSurface::RequestParticles(
       }
       else
       {
-        vtkDataArray* domain =
-          vtkArrayDownCast<vtkDataArray>(local->GetFieldData() ? local->GetFieldData()->GetAbstractArray(parafluid::contract::DomainBounds) : nullptr);
+        vtkDataArray* domain = vtkArrayDownCast<vtkDataArray>(
+          local->GetFieldData() ? local->GetFieldData()->GetAbstractArray(parafluid::contract::DomainBounds) : nullptr);
         if (domain && domain->GetNumberOfValues() == 6)
         {
           for (int k = 0; k < 6; ++k)
@@ -115,7 +115,8 @@ int vtkPFCarpetSurface::RequestParticles(
       if (!(bounds[1] > bounds[0]) || !(bounds[3] > bounds[2]))
       {
         this->ReportError("the domain has no extent in x or y (" + std::to_string(bounds[0]) + ".." +
-          std::to_string(bounds[1]) + ", " + std::to_string(bounds[2]) + ".." + std::to_string(bounds[3]) + ")");
+                          std::to_string(bounds[1]) + ", " + std::to_string(bounds[2]) + ".." +
+                          std::to_string(bounds[3]) + ")");
         return 0;
       }
       this->Carpet->setGrid(bounds[0], bounds[2], bounds[1], bounds[3], r, std::move(ground));
@@ -123,7 +124,8 @@ int vtkPFCarpetSurface::RequestParticles(
     }
     std::vector<float> positionStorage;
     const float* xyz = n > 0 ? parafluid::vtk::positionsAsFloat(input, positionStorage) : nullptr;
-    this->Carpet->advance(xyz, static_cast<std::size_t>(n), time - this->LastTime, this->FallAcceleration, this->MinDepth);
+    this->Carpet->advance(xyz, static_cast<std::size_t>(n), time - this->LastTime, this->FallAcceleration,
+                          this->MinDepth);
     this->LastTime = time;
     this->StateTime = settings;
     this->HasState = true;

@@ -13,8 +13,7 @@
  * field data (else the particles' extent at the first time) with a flat floor at its bottom.
  * Output: triangles where the fluid is above the terrain, with Normals and `depth` [m].
  */
-#ifndef vtkPFCarpetSurface_h
-#define vtkPFCarpetSurface_h
+#pragma once
 
 #include "ParaFluidSurfaceFiltersModule.h"
 #include "vtkPFParticleAlgorithm.h"
@@ -58,7 +57,7 @@ protected:
   ~vtkPFCarpetSurface() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestParticles(const Particles& particles, vtkInformationVector** inputVector, vtkInformation* outInfo,
-    vtkPolyData* output) override;
+                       vtkPolyData* output) override;
 
   int Resolution = 256;
   double FallAcceleration = 9.81;
@@ -74,5 +73,3 @@ private:
   vtkMTimeType StateTime = 0; // this filter's and the terrain's MTime the state was built under
   bool HasState = false;
 };
-
-#endif

@@ -1,7 +1,7 @@
 #include "vtkPFParticleSurface.h"
 
 #include "ParticleArrays.h"
-#include "vtkPFSurfaceMeshOutput.h"
+#include "SurfaceMeshOutput.h"
 
 #include "parafluid/surface/ParticleSurface.h"
 
@@ -44,8 +44,8 @@ int vtkPFParticleSurface::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-int vtkPFParticleSurface::RequestParticles(
-  const Particles& particles, vtkInformationVector**, vtkInformation*, vtkPolyData* output)
+int vtkPFParticleSurface::RequestParticles(const Particles& particles, vtkInformationVector**, vtkInformation*,
+                                           vtkPolyData* output)
 {
   vtkPointSet* input = particles.Gathered;
   parafluid::surface::ParticleSurfaceParameters p;
@@ -87,10 +87,12 @@ int vtkPFParticleSurface::RequestParticles(
   parafluid::surface::SurfaceMesh mesh;
   try
   {
-    mesh = surface.extract(xyz, static_cast<std::size_t>(n), p, [this](double fraction) {
-      this->UpdateProgress(0.9 * fraction);
-      return this->GetAbortExecute() == 0;
-    });
+    mesh = surface.extract(xyz, static_cast<std::size_t>(n), p,
+                           [this](double fraction)
+                           {
+                             this->UpdateProgress(0.9 * fraction);
+                             return this->GetAbortExecute() == 0;
+                           });
   }
   catch (const std::exception& e)
   {

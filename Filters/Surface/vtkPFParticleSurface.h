@@ -11,8 +11,7 @@
  * smoothing, and the chosen particle arrays interpolated to the vertices (kernel-weighted mean).
  * Under MPI the pieces are gathered on process 0, which builds the whole surface.
  */
-#ifndef vtkPFParticleSurface_h
-#define vtkPFParticleSurface_h
+#pragma once
 
 #include "ParaFluidSurfaceFiltersModule.h"
 #include "vtkPFParticleAlgorithm.h"
@@ -61,7 +60,7 @@ protected:
   ~vtkPFParticleSurface() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestParticles(const Particles& particles, vtkInformationVector** inputVector, vtkInformation* outInfo,
-    vtkPolyData* output) override;
+                       vtkPolyData* output) override;
 
   double ParticleSpacing = 0.0;
   double CellSize = 0.5;
@@ -76,5 +75,3 @@ private:
   vtkPFParticleSurface(const vtkPFParticleSurface&) = delete;
   void operator=(const vtkPFParticleSurface&) = delete;
 };
-
-#endif

@@ -18,8 +18,8 @@
 
 namespace parafluid
 {
-void FluidBrushStrokePass::Upload(
-  vtkOpenGLRenderWindow* window, const npr::BrushStrokeSet& strokes, const std::vector<float>& rgb)
+void FluidBrushStrokePass::Upload(vtkOpenGLRenderWindow* window, const npr::BrushStrokeSet& strokes,
+                                  const std::vector<float>& rgb)
 {
   // Three texels per segment: (start, fraction), (end, fraction), (colour, seed hash).
   std::vector<float> texels;
@@ -31,8 +31,9 @@ void FluidBrushStrokePass::Upload(
     {
       const float* a = &strokes.points[3 * (q - 1)];
       const float* b = &strokes.points[3 * q];
-      fraction[q - first] = fraction[q - first - 1] + std::sqrt((b[0] - a[0]) * (b[0] - a[0]) +
-        (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
+      fraction[q - first] =
+        fraction[q - first - 1] +
+        std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
     }
     const double total = fraction.back();
     if (!(total > 0.0))
@@ -45,9 +46,9 @@ void FluidBrushStrokePass::Upload(
     {
       const float* a = &strokes.points[3 * (q - 1)];
       const float* b = &strokes.points[3 * q];
-      texels.insert(texels.end(),
-        { a[0], a[1], a[2], static_cast<float>(fraction[q - 1 - first] / total), b[0], b[1], b[2],
-          static_cast<float>(fraction[q - first] / total), rgb[3 * s], rgb[3 * s + 1], rgb[3 * s + 2], seed });
+      texels.insert(texels.end(), { a[0], a[1], a[2], static_cast<float>(fraction[q - 1 - first] / total), b[0], b[1],
+                                    b[2], static_cast<float>(fraction[q - first] / total), rgb[3 * s], rgb[3 * s + 1],
+                                    rgb[3 * s + 2], seed });
     }
   }
   this->Strokes = strokes.strokeCount();
@@ -69,7 +70,7 @@ void FluidBrushStrokePass::Upload(
 }
 
 bool FluidBrushStrokePass::Draw(vtkOpenGLRenderWindow* window, const View& view, vtkTextureObject* depth,
-  unsigned int emptyVAO, double widthPixels, double hideDepth)
+                                unsigned int emptyVAO, double widthPixels, double hideDepth)
 {
   if (this->Segments == 0)
   {

@@ -3,8 +3,7 @@
  * screen-space fluid, kept to its footprint and its visible surface (FluidStrokeVS/FS.glsl).
  * Owned by vtkPFScreenSpaceFluidMapper; not a VTK class and not wrapped.
  */
-#ifndef FluidBrushStrokePass_h
-#define FluidBrushStrokePass_h
+#pragma once
 
 #include "vtkSmartPointer.h"
 
@@ -37,8 +36,8 @@ public:
   {
     vtkMatrix4x4* MCVC; // VTK key matrices (transposed, as given to SetUniformMatrix)
     vtkMatrix4x4* VCDC;
-    int Size[2];   // viewport, pixels
-    int Origin[2]; // its first pixel in the framebuffer
+    int Size[2];                // viewport, pixels
+    int Origin[2];              // its first pixel in the framebuffer
     int RectMin[2], RectMax[2]; // the fluid's rectangle in the depth target
     bool Parallel;
     float Projection[4];
@@ -47,7 +46,7 @@ public:
   /// for the footprint test; the caller sets viewport, scissor, depth test and blending.
   /// `emptyVAO` is a vertex array without attributes. False when the shader did not build.
   bool Draw(vtkOpenGLRenderWindow* window, const View& view, vtkTextureObject* depth, unsigned int emptyVAO,
-    double widthPixels, double hideDepth);
+            double widthPixels, double hideDepth);
 
   void Release(vtkWindow* window);
 
@@ -59,5 +58,3 @@ private:
   std::size_t Segments = 0;
 };
 } // namespace parafluid
-
-#endif

@@ -34,7 +34,8 @@ FluidFootprint computeFluidFootprint(const FluidFootprintQuery& q)
   for (int corner = 0; corner < 8; ++corner)
   {
     const double x[3] = { q.Bounds[(corner & 1) ? 1 : 0] + ((corner & 1) ? r : -r),
-      q.Bounds[(corner & 2) ? 3 : 2] + ((corner & 2) ? r : -r), q.Bounds[(corner & 4) ? 5 : 4] + ((corner & 4) ? r : -r) };
+                          q.Bounds[(corner & 2) ? 3 : 2] + ((corner & 2) ? r : -r),
+                          q.Bounds[(corner & 4) ? 5 : 4] + ((corner & 4) ? r : -r) };
     const auto eye = transformPoint(q.ModelView, x);
     const double distance = -eye[2];
     nearest = std::min(nearest, distance);

@@ -7,7 +7,7 @@ namespace parafluid
 struct FluidFootprintQuery
 {
   double Bounds[6] = { 0, 0, 0, 0, 0, 0 }; // of the particle centres [world units]
-  double MaxRadius = 0.0;                   // largest particle radius [world units]
+  double MaxRadius = 0.0;                  // largest particle radius [world units]
   /// VTK's key matrices model -> view and view -> clip, element (r, c) at [4 r + c]. VTK stores
   /// them transposed for OpenGL: a point x maps to sum_r x_r M(r, c) + M(3, c).
   double ModelView[16] = {};

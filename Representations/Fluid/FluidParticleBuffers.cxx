@@ -16,8 +16,8 @@
 
 namespace parafluid
 {
-void FluidParticleBuffers::Update(vtkOpenGLRenderWindow* window, vtkPointSet* input, vtkDataArray* radii,
-  double radius, vtkUnsignedCharArray* colors, vtkMTimeType key)
+void FluidParticleBuffers::Update(vtkOpenGLRenderWindow* window, vtkPointSet* input, vtkDataArray* radii, double radius,
+                                  vtkUnsignedCharArray* colors, vtkMTimeType key)
 {
   if (key == this->Key && (colors != nullptr) == this->Colored && this->ParticleTexture)
   {

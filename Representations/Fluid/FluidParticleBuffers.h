@@ -21,7 +21,7 @@ public:
   /// Uploads `input` when `key` (an MTime) or whether there are colours changed. `radii`: a point
   /// array of radii, or null for `radius` everywhere; `colors`: one RGB(A) tuple per point or null.
   void Update(vtkOpenGLRenderWindow* window, vtkPointSet* input, vtkDataArray* radii, double radius,
-    vtkUnsignedCharArray* colors, vtkMTimeType key);
+              vtkUnsignedCharArray* colors, vtkMTimeType key);
 
   vtkTextureObject* Particles() const { return this->ParticleTexture; }
   vtkTextureObject* Colors() const { return this->ColorTexture; }

@@ -13,8 +13,8 @@
 
 namespace parafluid
 {
-vtkShaderProgram* readyScreenQuad(
-  std::unique_ptr<vtkOpenGLQuadHelper>& quad, const FluidFrame& frame, const char* body, const char* defines)
+vtkShaderProgram* readyScreenQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad, const FluidFrame& frame, const char* body,
+                                  const char* defines)
 {
   if (!quad)
   {
@@ -36,7 +36,7 @@ vtkShaderProgram* readyScreenQuad(
 }
 
 void runScreenQuad(FluidFrame& frame, vtkOpenGLQuadHelper* quad, vtkTextureObject* source, vtkTextureObject* target,
-  const char* sourceName)
+                   const char* sourceName)
 {
   frame.Framebuffer->AddColorAttachment(0, target);
   source->Activate();

@@ -15,13 +15,13 @@ namespace parafluid
 /// Builds `quad` from FluidScreenCommon.glsl, `defines` and `body` the first time, readies its
 /// program after that, and sets the uniforms every screen pass reads (rectangle, viewport size,
 /// projection). Returns the program.
-vtkShaderProgram* readyScreenQuad(
-  std::unique_ptr<vtkOpenGLQuadHelper>& quad, const FluidFrame& frame, const char* body, const char* defines = "");
+vtkShaderProgram* readyScreenQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad, const FluidFrame& frame, const char* body,
+                                  const char* defines = "");
 
 /// One pass of `quad` from `source` (bound as the sampler `sourceName`) into `target`, through the
 /// frame's framebuffer; counts it.
 void runScreenQuad(FluidFrame& frame, vtkOpenGLQuadHelper* quad, vtkTextureObject* source, vtkTextureObject* target,
-  const char* sourceName);
+                   const char* sourceName);
 
 void releaseScreenQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad, vtkWindow* window);
 } // namespace parafluid

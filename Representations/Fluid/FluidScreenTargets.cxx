@@ -21,8 +21,8 @@ vtkSmartPointer<vtkTextureObject> makeScreenTexture(vtkOpenGLRenderWindow* windo
   return texture;
 }
 
-void FluidScreenTargets::Ensure(
-  vtkOpenGLRenderWindow* window, int width, int height, int thicknessFactor, bool colors, bool toon)
+void FluidScreenTargets::Ensure(vtkOpenGLRenderWindow* window, int width, int height, int thicknessFactor, bool colors,
+                                bool toon)
 {
   if (!this->Framebuffer)
   {
@@ -32,7 +32,8 @@ void FluidScreenTargets::Ensure(
   }
   const bool resize = width != this->Width || height != this->Height;
   const bool resizeThickness = resize || thicknessFactor != this->ThicknessFactor;
-  auto single = [&](vtkSmartPointer<vtkTextureObject>& t, int w, int h, bool linear, bool changed) {
+  auto single = [&](vtkSmartPointer<vtkTextureObject>& t, int w, int h, bool linear, bool changed)
+  {
     if (!t)
     {
       t = makeScreenTexture(window);
@@ -56,7 +57,8 @@ void FluidScreenTargets::Ensure(
   single(this->Thickness[0], tw, th, true, resizeThickness);
   single(this->Thickness[1], tw, th, true, resizeThickness);
   this->ThicknessFactor = thicknessFactor;
-  auto depth = [&](vtkSmartPointer<vtkTextureObject>& t) {
+  auto depth = [&](vtkSmartPointer<vtkTextureObject>& t)
+  {
     if (!t)
     {
       t = makeScreenTexture(window);
@@ -69,7 +71,8 @@ void FluidScreenTargets::Ensure(
   };
   depth(this->OpaqueDepth);
   depth(this->SplatDepth);
-  auto rgba = [&](vtkSmartPointer<vtkTextureObject>& t) {
+  auto rgba = [&](vtkSmartPointer<vtkTextureObject>& t)
+  {
     if (!t)
     {
       t = makeScreenTexture(window);
@@ -118,10 +121,11 @@ void FluidScreenTargets::CopyOpaqueScene(const FluidFrame& frame, bool withColor
   state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawFramebuffer);
   // (vtkTextureObject::CopyFromFrameBuffer re-creates the texture at the copied size; the
   // targets must keep the viewport's size, so copy into the rectangle ourselves.)
-  auto copyRect = [&](vtkTextureObject* target) {
+  auto copyRect = [&](vtkTextureObject* target)
+  {
     target->Bind();
     glCopyTexSubImage2D(GL_TEXTURE_2D, 0, frame.RectMin[0], frame.RectMin[1], frame.Origin[0] + frame.RectMin[0],
-      frame.Origin[1] + frame.RectMin[1], frame.RectWidth(), frame.RectHeight());
+                        frame.Origin[1] + frame.RectMin[1], frame.RectWidth(), frame.RectHeight());
     target->Deactivate();
   };
   copyRect(this->OpaqueDepth);
@@ -134,9 +138,10 @@ void FluidScreenTargets::CopyOpaqueScene(const FluidFrame& frame, bool withColor
 
 void FluidScreenTargets::Release(vtkWindow* window)
 {
-  for (vtkTextureObject* t : { this->OpaqueDepth.Get(), this->OpaqueColor.Get(), this->SplatDepth.Get(),
-         this->ParticleColors.Get(), this->Depth[0].Get(), this->Depth[1].Get(), this->Thickness[0].Get(),
-         this->Thickness[1].Get(), this->Tensor[0].Get(), this->Tensor[1].Get(), this->Lines.Get() })
+  for (vtkTextureObject* t :
+       { this->OpaqueDepth.Get(), this->OpaqueColor.Get(), this->SplatDepth.Get(), this->ParticleColors.Get(),
+         this->Depth[0].Get(), this->Depth[1].Get(), this->Thickness[0].Get(), this->Thickness[1].Get(),
+         this->Tensor[0].Get(), this->Tensor[1].Get(), this->Lines.Get() })
   {
     if (t)
     {

@@ -107,14 +107,14 @@ void setEyeToCube(vtkShaderProgram* shade, vtkRenderer* renderer, vtkTexture* en
 }
 } // namespace
 
-void FluidShadePass::Run(
-  FluidFrame& frame, FluidScreenTargets& targets, const Inputs& inputs, vtkTexture* environment, const Settings& s)
+void FluidShadePass::Run(FluidFrame& frame, FluidScreenTargets& targets, const Inputs& inputs, vtkTexture* environment,
+                         const Settings& s)
 {
   vtkOpenGLState* state = frame.State;
   vtkRenderer* renderer = frame.Renderer;
   state->vtkglViewport(frame.Origin[0], frame.Origin[1], frame.Size[0], frame.Size[1]);
-  state->vtkglScissor(
-    frame.Origin[0] + frame.RectMin[0], frame.Origin[1] + frame.RectMin[1], frame.RectWidth(), frame.RectHeight());
+  state->vtkglScissor(frame.Origin[0] + frame.RectMin[0], frame.Origin[1] + frame.RectMin[1], frame.RectWidth(),
+                      frame.RectHeight());
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_LEQUAL);
   state->vtkglDepthMask(GL_TRUE);
@@ -143,7 +143,7 @@ void FluidShadePass::Run(
   shade->SetUniformf("ambient", static_cast<float>(s.Ambient));
   shade->SetUniformf("colorMix", static_cast<float>(s.ColorMix));
   const float depthRange[2] = { static_cast<float>(std::max(frame.Nearest, frame.NearDistance)),
-    static_cast<float>(frame.Farthest) };
+                                static_cast<float>(frame.Farthest) };
   shade->SetUniform2f("depthRange", depthRange);
 
   vtkMatrix4x4* view = renderer->GetActiveCamera()->GetViewTransformMatrix();
@@ -196,7 +196,7 @@ void FluidShadePass::Run(
   {
     const int f = targets.ThicknessFactor;
     const float toThickness[2] = { 1.0f / (f * ((frame.Size[0] + f - 1) / f)),
-      1.0f / (f * ((frame.Size[1] + f - 1) / f)) };
+                                   1.0f / (f * ((frame.Size[1] + f - 1) / f)) };
     shade->SetUniform2f("thicknessScale", toThickness);
   }
   shade->SetUniformi("hasParticleColors", inputs.ParticleColors ? 1 : 0);

@@ -48,7 +48,7 @@ public:
   /// the depth test on and depth writes on. `environment`: the mapper's cube map or null (then the
   /// renderer's environment cube map, else the background colours).
   void Run(FluidFrame& frame, FluidScreenTargets& targets, const Inputs& inputs, vtkTexture* environment,
-    const Settings& settings);
+           const Settings& settings);
   void Release(vtkWindow* window);
 
 private:

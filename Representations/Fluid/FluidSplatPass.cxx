@@ -20,8 +20,8 @@
 
 namespace parafluid
 {
-vtkShaderProgram* FluidSplatPass::Ready(
-  const FluidFrame& frame, const FluidParticleBuffers& particles, const FluidScreenTargets& targets, int which)
+vtkShaderProgram* FluidSplatPass::Ready(const FluidFrame& frame, const FluidParticleBuffers& particles,
+                                        const FluidScreenTargets& targets, int which)
 {
   vtkShaderProgram*& program = this->Programs[which + (frame.PointSprites ? 2 : 0)];
   if (!program)
@@ -46,8 +46,8 @@ vtkShaderProgram* FluidSplatPass::Ready(
   program->SetUniformi("particles", particles.Particles()->GetTextureUnit());
   program->SetUniformi("hasColors", particles.HasColors() ? 1 : 0);
   // Unused without colours, but a sampler left on unit 0 could alias a different sampler type.
-  program->SetUniformi(
-    "particleColors", (particles.HasColors() ? particles.Colors() : particles.Particles())->GetTextureUnit());
+  program->SetUniformi("particleColors",
+                       (particles.HasColors() ? particles.Colors() : particles.Particles())->GetTextureUnit());
   program->SetUniformi("opaqueDepth", targets.OpaqueDepth->GetTextureUnit());
   program->SetUniformi("useOpaqueDepth", 1);
   program->SetUniformf("opaqueDepthScale", 1.0f);
@@ -60,8 +60,8 @@ vtkShaderProgram* FluidSplatPass::Ready(
   return program;
 }
 
-bool FluidSplatPass::Prepare(
-  const FluidFrame& frame, const FluidParticleBuffers& particles, const FluidScreenTargets& targets, bool thickness)
+bool FluidSplatPass::Prepare(const FluidFrame& frame, const FluidParticleBuffers& particles,
+                             const FluidScreenTargets& targets, bool thickness)
 {
   // The samplers' units are assigned on activation; Run activates them before readying again.
   particles.Particles()->Activate();
@@ -71,7 +71,8 @@ bool FluidSplatPass::Prepare(
   }
   targets.OpaqueDepth->Activate();
   // (The depth program is readied last, so it is the one bound for the first draw.)
-  const bool ready = (!thickness || this->Ready(frame, particles, targets, 1)) && this->Ready(frame, particles, targets, 0);
+  const bool ready =
+    (!thickness || this->Ready(frame, particles, targets, 1)) && this->Ready(frame, particles, targets, 0);
   if (!ready)
   {
     particles.Particles()->Deactivate();
@@ -96,8 +97,8 @@ void FluidSplatPass::Draw(const FluidFrame& frame, vtkIdType count) const
   }
 }
 
-void FluidSplatPass::Run(
-  FluidFrame& frame, const FluidParticleBuffers& particles, FluidScreenTargets& targets, bool thickness)
+void FluidSplatPass::Run(FluidFrame& frame, const FluidParticleBuffers& particles, FluidScreenTargets& targets,
+                         bool thickness)
 {
   vtkOpenGLState* state = frame.State;
   vtkOpenGLFramebufferObject* fbo = targets.Framebuffer;

@@ -20,7 +20,7 @@ public:
   /// Builds (or readies) the programs the frame needs; false when one does not compile. The
   /// thickness program is built first so that a failure stops before any drawing.
   bool Prepare(const FluidFrame& frame, const FluidParticleBuffers& particles, const FluidScreenTargets& targets,
-    bool thickness);
+               bool thickness);
   /// Draws the depth splats and, with `thickness`, the thickness splats. Leaves the depth test
   /// and depth writes off.
   void Run(FluidFrame& frame, const FluidParticleBuffers& particles, FluidScreenTargets& targets, bool thickness);
@@ -31,7 +31,7 @@ public:
 
 private:
   vtkShaderProgram* Ready(const FluidFrame& frame, const FluidParticleBuffers& particles,
-    const FluidScreenTargets& targets, int which);
+                          const FluidScreenTargets& targets, int which);
   void Draw(const FluidFrame& frame, vtkIdType count) const;
 
   // Depth (0) or thickness (1), + 2 for point sprites; built apart so that no pass carries

@@ -21,7 +21,7 @@ void FluidThicknessBlurPass::Run(FluidFrame& frame, FluidScreenTargets& targets,
   const int lo[2] = { frame.RectMin[0] / f, frame.RectMin[1] / f };
   const int hi[2] = { (frame.RectMax[0] + f - 1) / f, (frame.RectMax[1] + f - 1) / f };
   const float pixels[2] = { static_cast<float>((frame.Size[0] + f - 1) / f),
-    static_cast<float>((frame.Size[1] + f - 1) / f) };
+                            static_cast<float>((frame.Size[1] + f - 1) / f) };
   vtkShaderProgram* program = readyScreenQuad(this->Blur, frame, FluidGaussianBlurFS);
   // The thickness target's own rectangle and size.
   program->SetUniform2i("rectMin", lo);

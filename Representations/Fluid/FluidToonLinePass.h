@@ -19,9 +19,9 @@ public:
   ~FluidToonLinePass(); // where vtkOpenGLQuadHelper is complete
   struct Settings
   {
-    double DepthRange = 2.0;     // particle radii per unit of the line image
-    double LineWidth = 1.0;      // DoG sigma [pixels]
-    double LineThreshold = 0.1;  // response at which a line is drawn
+    double DepthRange = 2.0;    // particle radii per unit of the line image
+    double LineWidth = 1.0;     // DoG sigma [pixels]
+    double LineThreshold = 0.1; // response at which a line is drawn
   };
   /// Lines of targets.Depth[depth] into targets.Lines (the other depth target is scratch).
   void Run(FluidFrame& frame, FluidScreenTargets& targets, int depth, const Settings& settings);

@@ -8,8 +8,7 @@
  * run before overlays too, but ParaView's depth peeling for volumes would render it once per
  * peel into the peeling buffers.)
  */
-#ifndef vtkPFScreenSpaceFluidActor_h
-#define vtkPFScreenSpaceFluidActor_h
+#pragma once
 
 #include "ParaFluidFluidRepresentationsModule.h"
 #include "vtkOpenGLActor.h"
@@ -35,5 +34,3 @@ private:
   vtkPFScreenSpaceFluidActor(const vtkPFScreenSpaceFluidActor&) = delete;
   void operator=(const vtkPFScreenSpaceFluidActor&) = delete;
 };
-
-#endif

@@ -57,7 +57,7 @@ struct vtkPFScreenSpaceFluidMapper::Internals
   vtkMTimeType StrokeKey = 0;
   vtkSmartPointer<vtkTexture> Environment;
   vtkNew<vtkMatrix4x4> ModelView; // model -> view of the frame being drawn (key matrix, transposed)
-  float MaxPointSize = 0.0f; // the context's largest point sprite, pixels (0: not asked yet)
+  float MaxPointSize = 0.0f;      // the context's largest point sprite, pixels (0: not asked yet)
 
   void Release(vtkWindow* window)
   {
@@ -132,8 +132,8 @@ void vtkPFScreenSpaceFluidMapper::SetStrokeColorArray(const char* name)
   }
 }
 
-void vtkPFScreenSpaceFluidMapper::LayOutStrokes(
-  vtkPointSet* input, vtkUnsignedCharArray* colors, vtkOpenGLRenderWindow* window)
+void vtkPFScreenSpaceFluidMapper::LayOutStrokes(vtkPointSet* input, vtkUnsignedCharArray* colors,
+                                                vtkOpenGLRenderWindow* window)
 {
   Internals& in = *this->Internal;
   // The finite particles, and where each came from.
@@ -145,8 +145,8 @@ void vtkPFScreenSpaceFluidMapper::LayOutStrokes(
   }
   if (!velocities)
   {
-    vtkWarningMacro("Brush strokes: no 3-component point array '" << this->StrokeVelocityArray
-                                                                  << "'; the water is taken as still (fixed strokes only).");
+    vtkWarningMacro("Brush strokes: no 3-component point array '"
+                    << this->StrokeVelocityArray << "'; the water is taken as still (fixed strokes only).");
   }
   vtkDataArray* values = input->GetPointData()->GetArray(this->StrokeColorArray.c_str());
   std::vector<float> xyz, velocity, value;
@@ -280,7 +280,8 @@ bool vtkPFScreenSpaceFluidMapper::UploadParticles(vtkPointSet* input, vtkOpenGLR
   {
     key = std::max(key, colors->GetMTime());
   }
-  vtkDataArray* radii = this->RadiusArray.empty() ? nullptr : input->GetPointData()->GetArray(this->RadiusArray.c_str());
+  vtkDataArray* radii =
+    this->RadiusArray.empty() ? nullptr : input->GetPointData()->GetArray(this->RadiusArray.c_str());
   in.Particles.Update(window, input, radii, this->ParticleRadius, colors, key);
   if (in.Particles.MaxRadius() <= 0.0)
   {
@@ -430,7 +431,8 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   vtkOpenGLState::ScopedglClearColor savedClearColor(state);
   vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
 
-  in.Targets.Ensure(window, frame.Size[0], frame.Size[1], this->ChooseThicknessFactor(frame), in.Particles.HasColors(), toon);
+  in.Targets.Ensure(window, frame.Size[0], frame.Size[1], this->ChooseThicknessFactor(frame), in.Particles.HasColors(),
+                    toon);
   frame.Framebuffer = in.Targets.Framebuffer;
   // The opaque scene drawn so far: its depth (occlusion) and, for refraction, its colour.
   in.Targets.CopyOpaqueScene(frame, refraction);
@@ -498,15 +500,19 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   if (mode == BrushStrokes && in.Strokes.SegmentCount() > 0)
   {
     // The strokes over the shaded fluid, on its visible surface (whose depth is written already).
-    parafluid::FluidBrushStrokePass::View view{ frame.ModelView, frame.Projection, { frame.Size[0], frame.Size[1] },
-      { frame.Origin[0], frame.Origin[1] }, { frame.RectMin[0], frame.RectMin[1] },
-      { frame.RectMax[0], frame.RectMax[1] }, frame.Parallel,
-      { frame.ProjectionCoefficients[0], frame.ProjectionCoefficients[1], frame.ProjectionCoefficients[2],
-        frame.ProjectionCoefficients[3] } };
+    parafluid::FluidBrushStrokePass::View view{ frame.ModelView,
+                                                frame.Projection,
+                                                { frame.Size[0], frame.Size[1] },
+                                                { frame.Origin[0], frame.Origin[1] },
+                                                { frame.RectMin[0], frame.RectMin[1] },
+                                                { frame.RectMax[0], frame.RectMax[1] },
+                                                frame.Parallel,
+                                                { frame.ProjectionCoefficients[0], frame.ProjectionCoefficients[1],
+                                                  frame.ProjectionCoefficients[2], frame.ProjectionCoefficients[3] } };
     state->vtkglDepthMask(GL_FALSE);
     // A stroke more than 3 particle radii behind the surface runs through hidden water.
-    if (!in.Strokes.Draw(
-          window, view, in.Targets.Depth[depth], in.Targets.EmptyVAO, this->StrokeWidth, 3.0 * frame.MaxRadius))
+    if (!in.Strokes.Draw(window, view, in.Targets.Depth[depth], in.Targets.EmptyVAO, this->StrokeWidth,
+                         3.0 * frame.MaxRadius))
     {
       vtkErrorMacro("The brush-stroke shader did not compile (see the messages above).");
     }

@@ -27,14 +27,13 @@
  * The opaque scene must have been drawn first: use it with vtkPFScreenSpaceFluidActor, which
  * renders it after all opaque, translucent and volumetric geometry.
  */
-#ifndef vtkPFScreenSpaceFluidMapper_h
-#define vtkPFScreenSpaceFluidMapper_h
+#pragma once
 
 #include "ParaFluidFluidRepresentationsModule.h"
 #include "vtkMapper.h"
 
-#include <memory>
 #include "ParticleContract.h"
+#include <memory>
 
 #include <string>
 
@@ -245,5 +244,3 @@ private:
   bool LastUsedPointSprites = false;
   int LastThicknessFactor = 0;
 };
-
-#endif

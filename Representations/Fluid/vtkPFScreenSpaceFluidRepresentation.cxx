@@ -1,8 +1,8 @@
 #include "vtkPFScreenSpaceFluidRepresentation.h"
 
+#include "ParticleArrays.h"
 #include "vtkPFScreenSpaceFluidActor.h"
 #include "vtkPFScreenSpaceFluidMapper.h"
-#include "ParticleArrays.h"
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkAppendPolyData.h"
@@ -105,8 +105,8 @@ int vtkPFScreenSpaceFluidRepresentation::FillInputPortInformation(int, vtkInform
   return 1;
 }
 
-int vtkPFScreenSpaceFluidRepresentation::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkPFScreenSpaceFluidRepresentation::RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+                                                     vtkInformationVector* outputVector)
 {
   this->Particles = vtkSmartPointer<vtkPolyData>::New();
   bool hadCells = false;
@@ -150,8 +150,8 @@ int vtkPFScreenSpaceFluidRepresentation::RequestData(
   return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 
-int vtkPFScreenSpaceFluidRepresentation::ProcessViewRequest(
-  vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo)
+int vtkPFScreenSpaceFluidRepresentation::ProcessViewRequest(vtkInformationRequestKey* request, vtkInformation* inInfo,
+                                                            vtkInformation* outInfo)
 {
   if (!this->Superclass::ProcessViewRequest(request, inInfo, outInfo))
   {
@@ -229,8 +229,8 @@ void vtkPFScreenSpaceFluidRepresentation::UpdateColoring()
   vtkInformation* info = this->GetInputArrayInformation(0);
   const char* name = info && info->Has(vtkDataObject::FIELD_NAME()) ? info->Get(vtkDataObject::FIELD_NAME()) : nullptr;
   const int association = info && info->Has(vtkDataObject::FIELD_ASSOCIATION())
-    ? info->Get(vtkDataObject::FIELD_ASSOCIATION())
-    : vtkDataObject::FIELD_ASSOCIATION_POINTS;
+                            ? info->Get(vtkDataObject::FIELD_ASSOCIATION())
+                            : vtkDataObject::FIELD_ASSOCIATION_POINTS;
   if (name && name[0] && association == vtkDataObject::FIELD_ASSOCIATION_POINTS)
   {
     this->Mapper->SetScalarVisibility(1);
@@ -253,7 +253,8 @@ void vtkPFScreenSpaceFluidRepresentation::UpdateRadius(vtkPolyData* particles)
     radius = 1.0;
     if (particles && particles->GetNumberOfPoints() > 0)
     {
-      const double spacing = parafluid::vtk::fieldValue(particles->GetFieldData(), parafluid::contract::ParticleSpacing, 0.0);
+      const double spacing =
+        parafluid::vtk::fieldValue(particles->GetFieldData(), parafluid::contract::ParticleSpacing, 0.0);
       if (spacing > 0.0)
       {
         radius = 0.6 * spacing;
@@ -308,7 +309,7 @@ void vtkPFScreenSpaceFluidRepresentation::UpdateEnvironment()
   if (given != 6)
   {
     vtkErrorMacro("Screen-Space Fluid needs all six environment images (+X, -X, +Y, -Y, +Z, -Z); got "
-      << given << ". Reflecting the background instead.");
+                  << given << ". Reflecting the background instead.");
     this->Mapper->SetEnvironmentTexture(nullptr);
     return;
   }
@@ -323,7 +324,7 @@ void vtkPFScreenSpaceFluidRepresentation::UpdateEnvironment()
     if (!reader)
     {
       vtkErrorMacro("Cannot read environment image '" << this->EnvironmentImages[face]
-                                                       << "' (missing, or not an image format VTK reads).");
+                                                      << "' (missing, or not an image format VTK reads).");
       this->Mapper->SetEnvironmentTexture(nullptr);
       return;
     }

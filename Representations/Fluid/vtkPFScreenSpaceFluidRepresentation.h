@@ -8,8 +8,7 @@
  * Under MPI every rank renders its particles and ParaView composites the images by depth: the
  * fluid writes the depth of its surface.
  */
-#ifndef vtkPFScreenSpaceFluidRepresentation_h
-#define vtkPFScreenSpaceFluidRepresentation_h
+#pragma once
 
 #include "ParaFluidFluidRepresentationsModule.h"
 #include "vtkPVDataRepresentation.h"
@@ -114,5 +113,3 @@ private:
   std::string EnvironmentImages[6];
   bool EnvironmentChanged = false;
 };
-
-#endif

@@ -1,21 +1,21 @@
-#include "parafluid/common/MathConstants.h"
 #include "vtkPFGerstnerOceanRepresentation.h"
+#include "parafluid/common/MathConstants.h"
 
 #include "GerstnerOceanShading.h"
 #include "GerstnerOceanWaves.h"
-#include "vtkPFOceanExposure.h"
-#include "vtkPFOceanTextures.h"
+#include "OceanExposure.h"
+#include "OceanTextures.h"
 #include "ParticleArrays.h"
 
 #include "parafluid/ocean/Bathymetry.h"
 #include "parafluid/ocean/GerstnerOcean.h"
 
 #include "vtkAlgorithmOutput.h"
+#include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
-#include "vtkCamera.h"
 #include "vtkInformation.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -40,15 +40,15 @@ using parafluid::kPi;
 
 namespace
 {
-constexpr int kMaxGpuWaves = 16;   // in deep or uniform water
-constexpr int kMaxFloorWaves = 8;  // over a bathymetry (one phase texture each)
+constexpr int kMaxGpuWaves = 16;  // in deep or uniform water
+constexpr int kMaxFloorWaves = 8; // over a bathymetry (one phase texture each)
 }
 
 struct vtkPFGerstnerOceanRepresentation::Internals
 {
   std::unique_ptr<parafluid::ocean::GerstnerOcean> Model;
-  std::string ModelKey;       // parameters and data the model was built from
-  std::string ShaderKey;      // defines the shaders were built with
+  std::string ModelKey;  // parameters and data the model was built from
+  std::string ShaderKey; // defines the shaders were built with
   bool HasFloor = false;
   bool HasCubeMap = false;
   std::string CubeMapKey;
@@ -82,26 +82,23 @@ vtkPFGerstnerOceanRepresentation::vtkPFGerstnerOceanRepresentation()
 
 vtkPFGerstnerOceanRepresentation::~vtkPFGerstnerOceanRepresentation() = default;
 
-void vtkPFGerstnerOceanRepresentation::SetWave(
-  int index, double amplitude, double wavelength, double direction, double steepness, double phase)
+void vtkPFGerstnerOceanRepresentation::SetWave(int index, double amplitude, double wavelength, double direction,
+                                               double steepness, double phase)
 {
-  if (index < 0)
-  {
-    return;
-  }
-  if (this->Waves.size() < 5 * (static_cast<std::size_t>(index) + 1))
-  {
-    this->Waves.resize(5 * (static_cast<std::size_t>(index) + 1), 0.0);
-  }
   const double values[5] = { amplitude, wavelength, direction, steepness, phase };
-  std::copy(values, values + 5, this->Waves.begin() + 5 * index);
-  this->Modified();
+  if (this->Sea.setWave(index, values))
+  {
+    this->Modified();
+  }
 }
 
 void vtkPFGerstnerOceanRepresentation::RemoveAllWaves()
 {
-  this->Waves.clear();
-  this->Modified();
+  if (!this->Sea.waves.empty())
+  {
+    this->Sea.waves.clear();
+    this->Modified();
+  }
 }
 
 void vtkPFGerstnerOceanRepresentation::SetBathymetryArray(const char* name)
@@ -123,8 +120,8 @@ void vtkPFGerstnerOceanRepresentation::SetEnvironmentImage(int face, const char*
   }
 }
 
-int vtkPFGerstnerOceanRepresentation::ProcessViewRequest(
-  vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo)
+int vtkPFGerstnerOceanRepresentation::ProcessViewRequest(vtkInformationRequestKey* request, vtkInformation* inInfo,
+                                                         vtkInformation* outInfo)
 {
   const int result = this->Superclass::ProcessViewRequest(request, inInfo, outInfo);
   if (result && request == vtkPVView::REQUEST_RENDER())
@@ -147,19 +144,11 @@ void vtkPFGerstnerOceanRepresentation::UpdateModel(vtkDataObject* delivered)
   using namespace parafluid::ocean;
   vtkPolyData* surface = parafluid::vtk::firstPolyData(delivered);
   vtkDataArray* elevation = surface && !this->BathymetryArray.empty()
-    ? surface->GetPointData()->GetArray(this->BathymetryArray.c_str())
-    : nullptr;
+                              ? surface->GetPointData()->GetArray(this->BathymetryArray.c_str())
+                              : nullptr;
   std::ostringstream key;
-  key.precision(17);
-  key << this->SeaState << ' ' << this->WindDirection << ' ' << this->WindLean << ' ' << this->WaterDepth << ' '
-      << this->MaxSteepness << ' ' << this->BreakingDepthRatio << ' ' << this->BreakingStretch << ' '
-      << this->BreakingLean << ' ' << this->BreakingShift << ' ' << this->SeaLevel << ' ' << this->BathymetryArray
-      << ' ' << this->BathymetryResolution << ' ' << (elevation ? elevation->GetMTime() : 0) << ' '
+  key << this->Sea.key() << ' ' << this->BathymetryArray << ' ' << (elevation ? elevation->GetMTime() : 0) << ' '
       << (surface ? surface->GetMTime() : 0);
-  for (double w : this->Waves)
-  {
-    key << ' ' << w;
-  }
   if (key.str() == this->Internal->ModelKey && this->Internal->Model)
   {
     return;
@@ -167,16 +156,7 @@ void vtkPFGerstnerOceanRepresentation::UpdateModel(vtkDataObject* delivered)
   this->Internal->ModelKey = key.str();
   this->LastError.clear();
 
-  OceanParameters p;
-  p.waves = chooseWaves(this->SeaState, this->Waves, this->WindDirection);
-  p.depth = this->WaterDepth > 0.0 ? this->WaterDepth : kDeepWater;
-  p.maxSteepness = this->MaxSteepness;
-  p.windDirection = this->WindDirection;
-  p.windLean = this->WindLean;
-  p.breakingDepthRatio = this->BreakingDepthRatio;
-  p.breakingStretch = this->BreakingStretch;
-  p.breakingLean = this->BreakingLean;
-  p.breakingShift = this->BreakingShift;
+  OceanParameters p = this->Sea.parameters();
 
   std::shared_ptr<Bathymetry> floor;
   double region[4] = { 0, 1, 0, 1 };
@@ -212,8 +192,8 @@ void vtkPFGerstnerOceanRepresentation::UpdateModel(vtkDataObject* delivered)
       }
       try
       {
-        floor = std::make_shared<Bathymetry>(
-          Bathymetry::fromTriangles(points, triangles, this->BathymetryResolution, this->BathymetryResolution, this->SeaLevel));
+        floor = std::make_shared<Bathymetry>(Bathymetry::fromTriangles(
+          points, triangles, this->Sea.bathymetryResolution, this->Sea.bathymetryResolution, this->Sea.seaLevel));
         floor->bounds(region);
       }
       catch (const std::exception& e)
@@ -225,7 +205,8 @@ void vtkPFGerstnerOceanRepresentation::UpdateModel(vtkDataObject* delivered)
   const std::size_t limit = floor ? kMaxFloorWaves : kMaxGpuWaves;
   if (p.waves.size() > limit)
   {
-    this->LastError = "the GPU draws the first " + std::to_string(limit) + " of " + std::to_string(p.waves.size()) + " waves";
+    this->LastError =
+      "the GPU draws the first " + std::to_string(limit) + " of " + std::to_string(p.waves.size()) + " waves";
     p.waves.resize(limit);
   }
   try
@@ -251,8 +232,8 @@ void vtkPFGerstnerOceanRepresentation::UpdateModel(vtkDataObject* delivered)
     const std::vector<float>& e = floor->elevation();
     const std::vector<double> elevation(e.begin(), e.end());
     std::vector<double> range;
-    this->Property->SetTexture("oceanFloorTex",
-      parafluid::vtk::makeFixedPointTexture(elevation.data(), floor->nodesX(), floor->nodesY(), 1, range));
+    this->Property->SetTexture("oceanFloorTex", parafluid::vtk::makeFixedPointTexture(elevation.data(), floor->nodesX(),
+                                                                                      floor->nodesY(), 1, range));
     this->Internal->FloorRange[0] = range[0];
     this->Internal->FloorRange[1] = range[1];
     const auto& fields = this->Internal->Model->phaseFields();
@@ -340,7 +321,7 @@ void vtkPFGerstnerOceanRepresentation::UpdateShaders()
   {
     defines += "#define OCEAN_CUBEMAP\n";
   }
-  if (!this->Internal->HasFloor && !(this->WaterDepth > 0.0))
+  if (!this->Internal->HasFloor && !(this->Sea.waterDepth > 0.0))
   {
     // Deep water compiles to a single pass over the waves: software renderers run both sides of
     // a branch, so the general path would cost even where it is not taken.
@@ -363,12 +344,14 @@ void vtkPFGerstnerOceanRepresentation::UpdateShaders()
       vertexSamplers += "uniform sampler2D oceanPhase" + std::to_string(w) + ";\n";
     }
   }
-  shaders->AddVertexShaderReplacement("//VTK::PositionVC::Dec", true,
+  shaders->AddVertexShaderReplacement(
+    "//VTK::PositionVC::Dec", true,
     "//VTK::PositionVC::Dec\n" + defines + vertexSamplers + GerstnerOceanWaves +
       "out vec3 oceanRestVSOutput;\nout vec3 oceanWorldVSOutput;\nout vec3 oceanEyeVSOutput;\n"
       "out vec3 oceanDxVSOutput;\nout vec3 oceanDyVSOutput;\nout vec2 oceanFoamDepthVSOutput;\n",
     false);
-  shaders->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true,
+  shaders->AddVertexShaderReplacement(
+    "//VTK::PositionVC::Impl", true,
     "  vec3 oceanOffset, oceanDx, oceanDy;\n"
     "  float oceanJ, oceanFoam, oceanH;\n"
     // VTK may shift and scale the coordinates it uploads (vertexMC); the camera's view-to-world
@@ -376,7 +359,8 @@ void vtkPFGerstnerOceanRepresentation::UpdateShaders()
     // The shift and scale are per axis, so world = MC * scale + shift with scale the diagonal of
     // VCWC * MCVC: cheaper per vertex than forming and inverting that matrix.
     "  vec4 oceanRest = oceanVCWC * (MCVCMatrix * vertexMC);\n"
-    "  vec3 oceanScale = vec3(dot(vec4(oceanVCWC[0][0], oceanVCWC[1][0], oceanVCWC[2][0], oceanVCWC[3][0]), MCVCMatrix[0]),\n"
+    "  vec3 oceanScale = vec3(dot(vec4(oceanVCWC[0][0], oceanVCWC[1][0], oceanVCWC[2][0], oceanVCWC[3][0]), "
+    "MCVCMatrix[0]),\n"
     "    dot(vec4(oceanVCWC[0][1], oceanVCWC[1][1], oceanVCWC[2][1], oceanVCWC[3][1]), MCVCMatrix[1]),\n"
     "    dot(vec4(oceanVCWC[0][2], oceanVCWC[1][2], oceanVCWC[2][2], oceanVCWC[3][2]), MCVCMatrix[2]));\n"
     "  oceanEvaluate(oceanRest.xy, oceanOffset, oceanDx, oceanDy, oceanJ, oceanFoam, oceanH);\n"
@@ -394,19 +378,23 @@ void vtkPFGerstnerOceanRepresentation::UpdateShaders()
   // per pixel cost 3x the frame time in software rendering, for no visible gain at a few vertices
   // per metre); the normal is built from them per pixel. Declarations go after the texture
   // samplers VTK declares (TMap).
-  shaders->AddFragmentShaderReplacement("//VTK::PositionVC::Dec", true,
+  shaders->AddFragmentShaderReplacement(
+    "//VTK::PositionVC::Dec", true,
     "//VTK::PositionVC::Dec\n" + defines +
       "in vec3 oceanRestVSOutput;\nin vec3 oceanWorldVSOutput;\nin vec3 oceanEyeVSOutput;\n"
       "in vec3 oceanDxVSOutput;\nin vec3 oceanDyVSOutput;\nin vec2 oceanFoamDepthVSOutput;\n",
     false);
+  shaders->AddFragmentShaderReplacement("//VTK::Clip::Dec", true,
+                                        std::string(GerstnerOceanShading) + "//VTK::Clip::Dec\n", false);
   shaders->AddFragmentShaderReplacement(
-    "//VTK::Clip::Dec", true, std::string(GerstnerOceanShading) + "//VTK::Clip::Dec\n", false);
-  shaders->AddFragmentShaderReplacement("//VTK::Light::Impl", true,
+    "//VTK::Light::Impl", true,
     "  vec3 oceanDx = oceanDxVSOutput, oceanDy = oceanDyVSOutput;\n"
     "  float oceanFoam = oceanFoamDepthVSOutput.x, oceanH = oceanFoamDepthVSOutput.y;\n"
     "  vec3 oceanColor = oceanShadingMode == 1 ? oceanSolidColor\n"
-    "    : oceanShadingMode == 2 ? 0.5 + 0.5 * normalize(cross(vec3(1.0 + oceanDx.x, oceanDx.y, oceanDx.z), vec3(oceanDy.x, 1.0 + oceanDy.y, oceanDy.z)))\n"
-    "    : oceanShade(oceanWorldVSOutput, oceanEyeVSOutput, oceanRestVSOutput.xy, oceanDx, oceanDy, oceanFoam, oceanH);\n"
+    "    : oceanShadingMode == 2 ? 0.5 + 0.5 * normalize(cross(vec3(1.0 + oceanDx.x, oceanDx.y, oceanDx.z), "
+    "vec3(oceanDy.x, 1.0 + oceanDy.y, oceanDy.z)))\n"
+    "    : oceanShade(oceanWorldVSOutput, oceanEyeVSOutput, oceanRestVSOutput.xy, oceanDx, oceanDy, oceanFoam, "
+    "oceanH);\n"
     "  gl_FragData[0] = vec4(oceanColor, opacity);\n",
     false);
   // Textures are the shader's data, not colours to multiply in.
@@ -437,7 +425,8 @@ void vtkPFGerstnerOceanRepresentation::UpdateUniforms(double time)
   }
   const double sunElevation = this->SunElevation * kPi / 180.0, sunAzimuth = this->SunAzimuth * kPi / 180.0;
   const float sun[3] = { static_cast<float>(std::cos(sunElevation) * std::cos(sunAzimuth)),
-    static_cast<float>(std::cos(sunElevation) * std::sin(sunAzimuth)), static_cast<float>(std::sin(sunElevation)) };
+                         static_cast<float>(std::cos(sunElevation) * std::sin(sunAzimuth)),
+                         static_cast<float>(std::sin(sunElevation)) };
   // Auto exposure: the mean luminance of the water as this camera sees it (flat sea, same shading
   // model) mapped to 18 % grey by the tone curve 1 - exp(-L e).
   this->EffectiveExposure = this->Exposure;
@@ -453,7 +442,7 @@ void vtkPFGerstnerOceanRepresentation::UpdateUniforms(double time)
     double aspect[2] = { 1.0, 1.0 };
     renderView->GetRenderer()->GetAspect(aspect);
     scene.aspect = aspect[0] / std::max(aspect[1], 1e-9);
-    scene.seaLevel = this->SeaLevel;
+    scene.seaLevel = this->Sea.seaLevel;
     for (int c = 0; c < 3; ++c)
     {
       scene.sun[c] = sun[c];
@@ -472,9 +461,9 @@ void vtkPFGerstnerOceanRepresentation::UpdateUniforms(double time)
     {
       scene.depth = [floor](double x, double y) { return floor->depth(x, y); };
     }
-    else if (this->WaterDepth > 0.0)
+    else if (this->Sea.waterDepth > 0.0)
     {
-      const double depth = this->WaterDepth;
+      const double depth = this->Sea.waterDepth;
       scene.depth = [depth](double, double) { return depth; };
     }
     const double mean = parafluid::vtk::meanWaterLuminance(scene);
@@ -493,7 +482,7 @@ void vtkPFGerstnerOceanRepresentation::UpdateUniforms(double time)
 
   this->Actor->GetShaderProperty()->GetVertexCustomUniforms()->SetUniformMatrix("oceanVCWC", viewToWorld);
   for (vtkUniforms* u : { this->Actor->GetShaderProperty()->GetVertexCustomUniforms(),
-         this->Actor->GetShaderProperty()->GetFragmentCustomUniforms() })
+                          this->Actor->GetShaderProperty()->GetFragmentCustomUniforms() })
   {
     u->SetUniformi("oceanWaveCount", count);
     u->SetUniform1fv("oceanAmplitude", kMaxGpuWaves, amplitude);
@@ -511,7 +500,7 @@ void vtkPFGerstnerOceanRepresentation::UpdateUniforms(double time)
     u->SetUniformf("oceanBreakStretch", static_cast<float>(p.breakingStretch));
     u->SetUniformf("oceanBreakLean", static_cast<float>(p.breakingLean));
     u->SetUniformf("oceanBreakShift", static_cast<float>(p.breakingShift));
-    u->SetUniformf("oceanSeaLevel", static_cast<float>(this->SeaLevel));
+    u->SetUniformf("oceanSeaLevel", static_cast<float>(this->Sea.seaLevel));
     if (const auto* floor = model->bathymetry())
     {
       double origin[2], spacing[2];
@@ -538,10 +527,10 @@ void vtkPFGerstnerOceanRepresentation::UpdateUniforms(double time)
       u->SetUniform1fv("oceanGridNS", kMaxFloorWaves, ns);
       u->SetUniform1fv("oceanGridNT", kMaxFloorWaves, nt);
       const float floorRange[2] = { static_cast<float>(this->Internal->FloorRange[0]),
-        static_cast<float>(this->Internal->FloorRange[1]) };
+                                    static_cast<float>(this->Internal->FloorRange[1]) };
       u->SetUniform2f("oceanFloorRange", floorRange);
-      const char* names[6] = { "oceanPhaseLo", "oceanPhaseSpan", "oceanKLo", "oceanKSpan", "oceanAcrossLo",
-        "oceanAcrossSpan" };
+      const char* names[6] = { "oceanPhaseLo", "oceanPhaseSpan", "oceanKLo",
+                               "oceanKSpan",   "oceanAcrossLo",  "oceanAcrossSpan" };
       for (int r = 0; r < 6; ++r)
       {
         float values[kMaxFloorWaves];
@@ -578,7 +567,7 @@ void vtkPFGerstnerOceanRepresentation::UpdateUniforms(double time)
 void vtkPFGerstnerOceanRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "SeaState: " << this->SeaState << "\n";
+  os << indent << "SeaState: " << this->Sea.seaState << "\n";
   os << indent << "BathymetryArray: " << this->BathymetryArray << "\n";
   os << indent << "ShadingMode: " << this->ShadingMode << "\n";
 }

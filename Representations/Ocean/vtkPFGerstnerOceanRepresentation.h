@@ -16,11 +16,12 @@
  * shoal, refract and break over it: the floor and each wave's phase field are uploaded as float
  * textures (up to 8 waves then; 16 in deep or uniform water).
  */
-#ifndef vtkPFGerstnerOceanRepresentation_h
-#define vtkPFGerstnerOceanRepresentation_h
+#pragma once
 
 #include "ParaFluidOceanRepresentationsModule.h"
 #include "vtkGeometryRepresentationWithFaces.h"
+
+#include "parafluid/ocean/SeaSettings.h"
 
 #include <memory>
 #include <string>
@@ -37,27 +38,30 @@ public:
 
   //@{
   /// The wave model: as on the Gerstner Ocean source (see vtkPFGerstnerOcean).
-  vtkSetClampMacro(SeaState, int, 0, 3);
-  vtkGetMacro(SeaState, int);
+  void SetSeaState(int value) { this->SetSea(this->Sea.seaState, value < 0 ? 0 : (value > 3 ? 3 : value)); }
+  int GetSeaState() const { return this->Sea.seaState; }
   void SetWave(int index, double amplitude, double wavelength, double direction, double steepness, double phase);
   void RemoveAllWaves();
-  vtkSetMacro(WindDirection, double);
-  vtkGetMacro(WindDirection, double);
-  vtkSetMacro(WindLean, double);
-  vtkGetMacro(WindLean, double);
-  vtkSetMacro(WaterDepth, double);
-  vtkGetMacro(WaterDepth, double);
-  vtkSetMacro(MaxSteepness, double);
-  vtkGetMacro(MaxSteepness, double);
-  vtkSetMacro(BreakingDepthRatio, double);
-  vtkSetMacro(BreakingStretch, double);
-  vtkSetMacro(BreakingLean, double);
-  vtkSetMacro(BreakingShift, double);
-  vtkSetMacro(SeaLevel, double);
-  vtkGetMacro(SeaLevel, double);
+  void SetWindDirection(double value) { this->SetSea(this->Sea.windDirection, value); }
+  double GetWindDirection() const { return this->Sea.windDirection; }
+  void SetWindLean(double value) { this->SetSea(this->Sea.windLean, value); }
+  double GetWindLean() const { return this->Sea.windLean; }
+  void SetWaterDepth(double value) { this->SetSea(this->Sea.waterDepth, value); }
+  double GetWaterDepth() const { return this->Sea.waterDepth; }
+  void SetMaxSteepness(double value) { this->SetSea(this->Sea.maxSteepness, value); }
+  double GetMaxSteepness() const { return this->Sea.maxSteepness; }
+  void SetBreakingDepthRatio(double value) { this->SetSea(this->Sea.breakingDepthRatio, value); }
+  void SetBreakingStretch(double value) { this->SetSea(this->Sea.breakingStretch, value); }
+  void SetBreakingLean(double value) { this->SetSea(this->Sea.breakingLean, value); }
+  void SetBreakingShift(double value) { this->SetSea(this->Sea.breakingShift, value); }
+  void SetSeaLevel(double value) { this->SetSea(this->Sea.seaLevel, value); }
+  double GetSeaLevel() const { return this->Sea.seaLevel; }
   /// Point array of floor elevations [m] on the input; empty: no bathymetry.
   void SetBathymetryArray(const char* name);
-  vtkSetClampMacro(BathymetryResolution, int, 2, 4096);
+  void SetBathymetryResolution(int value)
+  {
+    this->SetSea(this->Sea.bathymetryResolution, value < 2 ? 2 : (value > 4096 ? 4096 : value));
+  }
   //@}
 
   //@{
@@ -116,13 +120,18 @@ private:
   void UpdateShaders();
   void UpdateUniforms(double time);
 
-  int SeaState = 2;
-  std::vector<double> Waves;
-  double WindDirection = 0.0, WindLean = 0.2, WaterDepth = 0.0, MaxSteepness = 0.9;
-  double BreakingDepthRatio = 0.78, BreakingStretch = 0.6, BreakingLean = 0.6, BreakingShift = 0.8;
-  double SeaLevel = 0.0;
+  template<class Field, class Value>
+  void SetSea(Field& field, Value value)
+  {
+    if (field != static_cast<Field>(value))
+    {
+      field = static_cast<Field>(value);
+      this->Modified();
+    }
+  }
+  /// The sea, shared in form with the Gerstner Ocean source (parafluid/ocean/SeaSettings.h).
+  parafluid::ocean::SeaSettings Sea;
   std::string BathymetryArray;
-  int BathymetryResolution = 256;
   int ShadingMode = 0;
   double SolidColor[3] = { 1.0, 1.0, 1.0 };
   double DeepColor[3] = { 0.004, 0.016, 0.045 };
@@ -143,5 +152,3 @@ private:
   double EffectiveExposure = 1.5;
   std::string LastError;
 };
-
-#endif

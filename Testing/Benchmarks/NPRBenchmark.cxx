@@ -1,9 +1,9 @@
 // Illustration filters on a 2-core budget: flow lines through a rigid vortex sampled on a
 // particle slab (run time against the largest radial deviation from the true circles, RK2 and RK4,
 // per number of points per line), and foam scoring on the dam-break block with splash.
+#include "SurfaceScenes.h"
 #include "parafluid/npr/FlowLines.h"
 #include "parafluid/npr/FoamClassifier.h"
-#include "SurfaceScenes.h"
 
 #include <benchmark/benchmark.h>
 #include <omp.h>

@@ -61,12 +61,13 @@ void BM_OceanFrame(benchmark::State& state)
   for (auto _ : state)
   {
     ocean.evaluate(grid.x.data(), grid.y.data(), n, time, displacement.data(), normal.data(), jacobian.data(),
-      foam.data(), depth.data(), threads);
+                   foam.data(), depth.data(), threads);
     benchmark::DoNotOptimize(displacement.data());
     time += 1.0 / 30.0;
   }
   state.counters["vertices"] = static_cast<double>(n);
-  state.counters["vertices/s"] = benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["vertices/s"] =
+    benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_OceanFrame)
   ->ArgNames({ "threads", "bathymetry" })

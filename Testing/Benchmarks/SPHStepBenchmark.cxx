@@ -15,7 +15,7 @@ using namespace parafluid;
 using namespace parafluid::sph;
 
 SPHSolver damBreak(std::size_t particles, int threads, PressureSolverType solverKind = PressureSolverType::WCSPH,
-  float surfaceTension = 0.0f, bool adaptive = false)
+                   float surfaceTension = 0.0f, bool adaptive = false)
 {
   // Block of a x 2a x a (x, z, y) layers of spacing d: particles = 2 a^3 / d^3.
   const double a = 0.5;
@@ -84,8 +84,8 @@ BENCHMARK(BM_SPHStep)
 /// The colour-field pass costs this much when on; with sigma = 0 it is not compiled into the loop.
 void BM_SPHStepWithSurfaceTension(benchmark::State& state)
 {
-  SPHSolver solver = damBreak(static_cast<std::size_t>(state.range(0)), 2, PressureSolverType::WCSPH,
-    state.range(1) ? 0.0728f : 0.0f);
+  SPHSolver solver =
+    damBreak(static_cast<std::size_t>(state.range(0)), 2, PressureSolverType::WCSPH, state.range(1) ? 0.0728f : 0.0f);
   for (auto _ : state)
   {
     solver.step();
@@ -113,7 +113,8 @@ void BM_AdvanceOutputInterval(benchmark::State& state)
     steps += solver.advance(0.01);
   }
   state.counters["steps_per_interval"] = static_cast<double>(steps) / static_cast<double>(state.iterations());
-  state.counters["simulated_s_per_s"] = benchmark::Counter(0.01 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["simulated_s_per_s"] =
+    benchmark::Counter(0.01 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["mean_density_error"] = solver.lastStep().meanCompression;
 }
 BENCHMARK(BM_AdvanceOutputInterval)

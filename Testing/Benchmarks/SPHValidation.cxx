@@ -27,8 +27,8 @@ using namespace parafluid::sph;
 
 namespace
 {
-constexpr float kGravity = 9.81f;  // [m/s^2]
-constexpr float kRho0 = 1000.0f;   // [kg/m^3]
+constexpr float kGravity = 9.81f; // [m/s^2]
+constexpr float kRho0 = 1000.0f;  // [kg/m^3]
 
 const char* name(PressureSolverType s)
 {
@@ -37,9 +37,9 @@ const char* name(PressureSolverType s)
 
 /// Water with h = 2 spacings; a slab four particles thick in y between free-slip mirror walls,
 /// which makes the flow two-dimensional as in the experiments.
-float gViscosity = 3.5f;        // [Pa s], --viscosity; Müller's water value, the filter's default
-float gDensityTolerance = 0.001f; // --tolerance; the filter's default (0.1 %)
-float gGasStiffness = 1000.0f;  // --stiffness [m^2/s^2], WCSPH's k (c = sqrt(k))
+float gViscosity = 3.5f;                          // [Pa s], --viscosity; Müller's water value, the filter's default
+float gDensityTolerance = 0.001f;                 // --tolerance; the filter's default (0.1 %)
+float gGasStiffness = 1000.0f;                    // --stiffness [m^2/s^2], WCSPH's k (c = sqrt(k))
 float gCFLNumber = SPHParameters().cflNumber;     // --cfl; smaller for a time-step convergence study
 float gMaxTimeStep = SPHParameters().maxTimeStep; // --max-dt [s]
 // --width a [m]: Martin & Moyce's column, 2.25 in. The size matters, not only the dimensionless
@@ -129,7 +129,8 @@ Hydrostatic hydrostatic(PressureSolverType solver, int across, std::ofstream* pr
   }
   r.error = std::sqrt(num / den);
   // The pressure-against-depth profile: particles binned into layers one spacing thick.
-  std::vector<double> layerPressure(2 * static_cast<std::size_t>(across) + 2, 0.0), layerReference(layerPressure.size(), 0.0);
+  std::vector<double> layerPressure(2 * static_cast<std::size_t>(across) + 2, 0.0),
+    layerReference(layerPressure.size(), 0.0);
   std::vector<int> layerCount(layerPressure.size(), 0);
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -154,8 +155,12 @@ Hydrostatic hydrostatic(PressureSolverType solver, int across, std::ofstream* pr
 }
 
 // Martin & Moyce (1952), column a = 2.25 in, n^2 = 2 (height 2a): T = t sqrt(2g/a), Z = x/a.
-const double kExperimentT[] = { 0.41, 0.84, 1.19, 1.43, 1.63, 1.83, 1.98, 2.20, 2.32, 2.51, 2.65, 2.83, 2.98, 3.11, 3.33 };
-const double kExperimentZ[] = { 1.11, 1.22, 1.44, 1.67, 1.89, 2.11, 2.33, 2.56, 2.78, 3.00, 3.22, 3.44, 3.67, 3.89, 4.11 };
+const double kExperimentT[] = {
+  0.41, 0.84, 1.19, 1.43, 1.63, 1.83, 1.98, 2.20, 2.32, 2.51, 2.65, 2.83, 2.98, 3.11, 3.33
+};
+const double kExperimentZ[] = {
+  1.11, 1.22, 1.44, 1.67, 1.89, 2.11, 2.33, 2.56, 2.78, 3.00, 3.22, 3.44, 3.67, 3.89, 4.11
+};
 
 struct DamBreak
 {
@@ -203,7 +208,8 @@ DamBreak damBreak(PressureSolverType solver, int across, double endT, std::ofstr
     }
     T.push_back(T.back() + dT);
     Z.push_back(front());
-    curve << name(solver) << "," << across << "," << T.back() << "," << Z.back() << std::endl; // long runs: keep what is done
+    curve << name(solver) << "," << across << "," << T.back() << "," << Z.back()
+          << std::endl; // long runs: keep what is done
   }
   r.wall = seconds(start);
   r.meanCompression /= std::max(1LL, compressionSamples);
@@ -283,7 +289,7 @@ int main(int argc, char** argv)
         return 2;
       }
       gWallFriction = v == "free-slip" ? WallFriction::FreeSlip
-        : v == "no-slip"               ? WallFriction::NoSlip
+                      : v == "no-slip" ? WallFriction::NoSlip
                                        : WallFriction::LogLaw;
     }
     else if (option == "--tolerance" && k + 1 < argc)
@@ -322,47 +328,47 @@ int main(int argc, char** argv)
 
   if (scene == "all" || scene == "hydrostatic")
   {
-  std::ofstream hydro(dir + "/hydrostatic.csv");
-  std::ofstream profile(dir + "/hydrostatic_profile.csv");
-  hydro << "solver,particles_across,particles,steps,wall_s,relative_l2_error,profile_relative_l2_error,mean_compression\n";
-  profile << "solver,particles_across,z,pressure,reference\n";
-  for (PressureSolverType solver : solvers)
-  {
-    for (int across : resolutions)
+    std::ofstream hydro(dir + "/hydrostatic.csv");
+    std::ofstream profile(dir + "/hydrostatic_profile.csv");
+    hydro << "solver,particles_across,particles,steps,wall_s,relative_l2_error,profile_relative_l2_error,mean_"
+             "compression\n";
+    profile << "solver,particles_across,z,pressure,reference\n";
+    for (PressureSolverType solver : solvers)
     {
-      const Hydrostatic r = hydrostatic(solver, across, &profile);
-      hydro << name(solver) << "," << across << "," << r.particles << "," << r.steps << "," << r.wall << "," << r.error
-            << "," << r.profileError << "," << r.compression << "\n";
-      std::printf("hydrostatic %s %3d across: %6lld particles %6lld steps %8.2f s  L2 error per particle %.4f, "
-                  "of the layer profile %.4f  compression %.5f\n",
-        name(solver), across, r.particles, r.steps, r.wall, r.error, r.profileError, r.compression);
-      std::fflush(stdout);
+      for (int across : resolutions)
+      {
+        const Hydrostatic r = hydrostatic(solver, across, &profile);
+        hydro << name(solver) << "," << across << "," << r.particles << "," << r.steps << "," << r.wall << ","
+              << r.error << "," << r.profileError << "," << r.compression << "\n";
+        std::printf("hydrostatic %s %3d across: %6lld particles %6lld steps %8.2f s  L2 error per particle %.4f, "
+                    "of the layer profile %.4f  compression %.5f\n",
+                    name(solver), across, r.particles, r.steps, r.wall, r.error, r.profileError, r.compression);
+        std::fflush(stdout);
+      }
     }
-  }
-
   }
   if (scene == "all" || scene == "dambreak")
   {
-  std::ofstream curve(dir + "/dambreak_front.csv");
-  std::ofstream summary(dir + "/dambreak.csv");
-  curve << "solver,particles_across,T,Z\n";
-  summary << "solver,particles_across,particles,steps,wall_s,mean_relative_error,max_relative_error,"
-             "mean_compression,max_compression,density_iterations,divergence_iterations\n";
-  for (PressureSolverType solver : solvers)
-  {
-    for (int across : resolutions)
+    std::ofstream curve(dir + "/dambreak_front.csv");
+    std::ofstream summary(dir + "/dambreak.csv");
+    curve << "solver,particles_across,T,Z\n";
+    summary << "solver,particles_across,particles,steps,wall_s,mean_relative_error,max_relative_error,"
+               "mean_compression,max_compression,density_iterations,divergence_iterations\n";
+    for (PressureSolverType solver : solvers)
     {
-      const DamBreak r = damBreak(solver, across, 3.0, curve);
-      summary << name(solver) << "," << across << "," << r.particles << "," << r.steps << "," << r.wall << ","
-              << r.meanError << "," << r.maxError << "," << r.meanCompression << "," << r.maxCompression << ","
-              << r.densityIterations << "," << r.divergenceIterations << "\n";
-      std::printf("dam break   %s %3d across: %6lld particles %6lld steps %8.2f s  front error mean %.3f max %.3f  "
-                  "compression mean %.5f max %.5f  iterations %.1f + %.1f\n",
-        name(solver), across, r.particles, r.steps, r.wall, r.meanError, r.maxError, r.meanCompression,
-        r.maxCompression, r.densityIterations, r.divergenceIterations);
-      std::fflush(stdout);
+      for (int across : resolutions)
+      {
+        const DamBreak r = damBreak(solver, across, 3.0, curve);
+        summary << name(solver) << "," << across << "," << r.particles << "," << r.steps << "," << r.wall << ","
+                << r.meanError << "," << r.maxError << "," << r.meanCompression << "," << r.maxCompression << ","
+                << r.densityIterations << "," << r.divergenceIterations << "\n";
+        std::printf("dam break   %s %3d across: %6lld particles %6lld steps %8.2f s  front error mean %.3f max %.3f  "
+                    "compression mean %.5f max %.5f  iterations %.1f + %.1f\n",
+                    name(solver), across, r.particles, r.steps, r.wall, r.meanError, r.maxError, r.meanCompression,
+                    r.maxCompression, r.densityIterations, r.divergenceIterations);
+        std::fflush(stdout);
+      }
     }
-  }
   }
   return 0;
 }

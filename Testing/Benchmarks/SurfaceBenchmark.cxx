@@ -1,9 +1,9 @@
 // Surface extraction on the scenes: a dam-break block (a x a x 2a) with 5 % of its
 // particles as splash scattered above it, 100k and 1M particles, cell 0.5 d; the jittered ball
 // (R = 25 d) for time against error; and the carpet against marching cubes on one shallow flow.
+#include "SurfaceScenes.h"
 #include "parafluid/surface/CarpetSurface.h"
 #include "parafluid/surface/ParticleSurface.h"
-#include "SurfaceScenes.h"
 
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -107,7 +107,8 @@ void BM_ShallowFlowCarpet(benchmark::State& state)
   const std::vector<float> xyz = shallowFlow(d);
   const int resolution = static_cast<int>(std::lround(1.0 / d));
   CarpetSurface carpet;
-  carpet.setGrid(0.0, 0.0, 1.0, 1.0, resolution, std::vector<float>(static_cast<std::size_t>(resolution) * resolution, 0.0f));
+  carpet.setGrid(0.0, 0.0, 1.0, 1.0, resolution,
+                 std::vector<float>(static_cast<std::size_t>(resolution) * resolution, 0.0f));
   std::size_t triangles = 0;
   for (auto _ : state)
   {

@@ -38,7 +38,10 @@ struct ParticleList
   const std::vector<float>& xyz;
   double radius;
   std::size_t size() const { return xyz.size() / 3; }
-  void getPos(std::size_t n, openvdb::Vec3R& p) const { p = openvdb::Vec3R(xyz[3 * n], xyz[3 * n + 1], xyz[3 * n + 2]); }
+  void getPos(std::size_t n, openvdb::Vec3R& p) const
+  {
+    p = openvdb::Vec3R(xyz[3 * n], xyz[3 * n + 1], xyz[3 * n + 2]);
+  }
   void getPosRad(std::size_t n, openvdb::Vec3R& p, openvdb::Real& r) const
   {
     this->getPos(n, p);
@@ -159,7 +162,7 @@ double ballRow(const std::vector<float>& ball, double d, double R, double cell)
   mesh(*again, level, timed);
   const double error = parafluid::benchmarks::meanRadialError(&timed.points[0][0], timed.points.size(), R) / d;
   std::printf("ball,%.2f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%zu,%.4f\n", cell, std::max(1.5 * cell, 1.0), level / d,
-    timed.seconds(), timed.rasterSeconds, timed.smoothSeconds, timed.meshSeconds, timed.triangles, error);
+              timed.seconds(), timed.rasterSeconds, timed.smoothSeconds, timed.meshSeconds, timed.triangles, error);
   std::fflush(stdout);
   return level / d;
 }
@@ -191,9 +194,9 @@ int main(int argc, char** argv)
   mesh(*grid, level * spacing, s);
   const double grown = static_cast<double>(peakKilobytes() - before) * 1024.0;
   std::printf("dam_break_%zu,0.50,1.000,%.4f,%.4f,%.4f,%.4f,%.4f,%zu,\n", dam.size() / 3, level, s.seconds(),
-    s.rasterSeconds, s.smoothSeconds, s.meshSeconds, s.triangles);
+              s.rasterSeconds, s.smoothSeconds, s.meshSeconds, s.triangles);
   std::printf("# dam break: peak resident size %.0f MB above that before it (%.0f bytes/particle)\n", grown / 1048576.0,
-    grown / static_cast<double>(dam.size() / 3));
+              grown / static_cast<double>(dam.size() / 3));
   std::fflush(stdout);
 
   ballRow(ball, d, R, 1.0);

@@ -91,7 +91,8 @@ TEST(SpikyGradient, IsAntisymmetricUnderSwappingThePair)
   const SpikyKernel spiky(h);
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> u(-0.06f, 0.06f);
-  auto gradient = [&](const std::array<float, 3>& d) {
+  auto gradient = [&](const std::array<float, 3>& d)
+  {
     const float r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     const float s = spiky.radialDerivative(r) / r;
     return std::array<float, 3>{ s * d[0], s * d[1], s * d[2] };

@@ -67,16 +67,18 @@ void expectGridEqualsBruteForce(const Cloud& c, float radius)
     for (std::uint32_t i = grid.cellStart()[cell]; i < grid.cellStart()[cell + 1]; ++i)
     {
       std::set<std::uint32_t> found;
-      grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) {
-        for (std::uint32_t j = b; j < e; ++j)
-        {
-          const float dx = s.x[i] - s.x[j], dy = s.y[i] - s.y[j], dz = s.z[i] - s.z[j];
-          if (dx * dx + dy * dy + dz * dz < r2)
-          {
-            EXPECT_TRUE(found.insert(order[j]).second) << "a neighbour was visited twice";
-          }
-        }
-      });
+      grid.forEachNeighbourRange(ix, iy, iz,
+                                 [&](std::uint32_t b, std::uint32_t e)
+                                 {
+                                   for (std::uint32_t j = b; j < e; ++j)
+                                   {
+                                     const float dx = s.x[i] - s.x[j], dy = s.y[i] - s.y[j], dz = s.z[i] - s.z[j];
+                                     if (dx * dx + dy * dy + dz * dz < r2)
+                                     {
+                                       EXPECT_TRUE(found.insert(order[j]).second) << "a neighbour was visited twice";
+                                     }
+                                   }
+                                 });
       std::set<std::uint32_t> expected;
       const std::uint32_t oi = order[i];
       for (std::uint32_t j = 0; j < n; ++j)

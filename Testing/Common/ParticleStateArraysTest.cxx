@@ -1,8 +1,8 @@
 // Particles between VTK and the cores' ParticleState (Filters/Common/ParticleStateArrays): what is
 // read, and that writing puts every particle back in its original place whatever order the
 // solver keeps them in.
-#include "ParticleContract.h"
 #include "ParticleStateArrays.h"
+#include "ParticleContract.h"
 
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"

@@ -87,8 +87,8 @@ TEST(TriangleBoundary, GridIndexAgreesWithTestingEveryTriangle)
     // Reference: is a above the surface and b below it, or the reverse (the wavy surface is gentle
     // enough that a short segment crosses it at most once)?
     const float sa = a[2] - wavy(a[0], a[1]), sb = b[2] - wavy(b[0], b[1]);
-    const bool inside = a[0] > 0.02f && a[0] < 1.98f && a[1] > 0.02f && a[1] < 1.98f && b[0] > 0.02f &&
-      b[0] < 1.98f && b[1] > 0.02f && b[1] < 1.98f;
+    const bool inside = a[0] > 0.02f && a[0] < 1.98f && a[1] > 0.02f && a[1] < 1.98f && b[0] > 0.02f && b[0] < 1.98f &&
+                        b[1] > 0.02f && b[1] < 1.98f;
     // The triangles approximate the sine within 2e-4 at this resolution; skip near-grazing cases.
     if (inside && std::fabs(sa) > 1e-3f && std::fabs(sb) > 1e-3f)
     {
@@ -152,8 +152,8 @@ TriangleBoundary closedBox(float lo, float hi)
     points.insert(points.end(), { (k & 1) ? hi : lo, (k & 2) ? hi : lo, (k & 4) ? hi : lo });
   }
   // Each face as a quad (a, b, c, d) counter-clockwise seen from outside.
-  const std::uint32_t quads[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
-    { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  const std::uint32_t quads[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 },
+                                      { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
   std::vector<std::uint32_t> triangles;
   for (const auto& q : quads)
   {
@@ -178,7 +178,8 @@ TEST(TriangleBoundary, ParticlesCreepingOverSharpEdgesNeverGetIntoAClosedBox)
   {
     // Canonical frame: on the x = hi face, just under the top edge z = hi, moving up and in.
     const float scale = std::pow(10.0f, -3.0f * u(random));
-    const float p[3] = { hi + offset * (0.4f + 2.0f * u(random)), lo + (hi - lo) * u(random), hi - h * scale * u(random) };
+    const float p[3] = { hi + offset * (0.4f + 2.0f * u(random)), lo + (hi - lo) * u(random),
+                         hi - h * scale * u(random) };
     const float d[3] = { -2.0f * h * scale * u(random), h * scale * (u(random) - 0.5f), 2.0f * h * scale * u(random) };
     const int* axes = permutations[k % 6];
     const int flips = (k / 6) % 8;

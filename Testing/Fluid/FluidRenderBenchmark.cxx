@@ -20,12 +20,12 @@
 #include "vtkOpenGLFluidMapper.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkPixelBufferObject.h"
-#include "vtkUnsignedCharArray.h"
-#include "vtkTextureObject.h"
 #include "vtkPointGaussianMapper.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkTextureObject.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
 
 #include <algorithm>
@@ -95,8 +95,9 @@ struct Window
     for (float& w : z)
     {
       const double ndc = 2.0 * w - 1.0;
-      w = w >= 1.0f ? 0.0f
-                    : static_cast<float>(2.0 * nearPlane * farPlane / ((farPlane + nearPlane) - ndc * (farPlane - nearPlane)));
+      w = w >= 1.0f
+            ? 0.0f
+            : static_cast<float>(2.0 * nearPlane * farPlane / ((farPlane + nearPlane) - ndc * (farPlane - nearPlane)));
     }
     return this->MeasureSphere(z, R, particleRadius);
   }
@@ -286,7 +287,8 @@ int check()
   const double surface = parafluid_test::volumeRadius(ball->GetNumberOfPoints(), h);
 
   // Passes that the settings switch off are not run.
-  auto passes = [&](int method, int iterations, int mode) {
+  auto passes = [&](int method, int iterations, int mode)
+  {
     show(w, ours(ball, r, method, iterations, mode));
     w.Render();
     return lastMapper(w)->GetLastPassCount();
@@ -295,9 +297,11 @@ int check()
   expect(passes(M::NarrowRange, 0, M::OpaqueSurface) == 2, "opaque, no smoothing: splats + shading only");
   expect(passes(M::NarrowRange, 3, M::OpaqueSurface) == 2 + 6, "opaque, narrow-range x3: 6 separable filter passes");
   expect(passes(M::CurvatureFlow, 10, M::OpaqueSurface) == 2 + 10, "curvature flow x10: 10 passes");
-  expect(passes(M::NarrowRange, 3, M::TransparentFluid) == 2 + 6 + 3, "transparent: + thickness splats and 2 blur passes");
+  expect(passes(M::NarrowRange, 3, M::TransparentFluid) == 2 + 6 + 3,
+         "transparent: + thickness splats and 2 blur passes");
   expect(passes(M::NarrowRange, 3, M::ParticleDepth) == 2, "particle-depth display: no smoothing, no thickness");
-  expect(passes(M::NarrowRange, 3, M::Toon) == 2 + 6 + 5, "toon: + tensor, its 2 blur passes, DoG across, average along");
+  expect(passes(M::NarrowRange, 3, M::Toon) == 2 + 6 + 5,
+         "toon: + tensor, its 2 blur passes, DoG across, average along");
   {
     double spacing = 0.0;
     auto swirl = parafluid_test::damBlock(20000, spacing);
@@ -305,8 +309,10 @@ int check()
     show(w, ours(swirl, spacing, M::NarrowRange, 3, M::BrushStrokes));
     w.Render();
     std::printf("brush strokes on a swirling block: %lld strokes, %lld segments\n",
-      static_cast<long long>(lastMapper(w)->GetLastStrokeCount()), static_cast<long long>(lastMapper(w)->GetLastStrokeSegmentCount()));
-    expect(lastMapper(w)->GetLastPassCount() == 2 + 6 + 1, "brush strokes: one stroke pass over the smoothed surface, no toon line passes");
+                static_cast<long long>(lastMapper(w)->GetLastStrokeCount()),
+                static_cast<long long>(lastMapper(w)->GetLastStrokeSegmentCount()));
+    expect(lastMapper(w)->GetLastPassCount() == 2 + 6 + 1,
+           "brush strokes: one stroke pass over the smoothed surface, no toon line passes");
     expect(lastMapper(w)->GetLastStrokeCount() > 100, "brush strokes: a swirling block gets strokes");
   }
   // Toon: the lit ball is flat bands of the fluid colour (plus the highlight and the lines), a
@@ -322,7 +328,8 @@ int check()
     const int bands = toon->GetToonBands();
     const double* base = toon->GetFluidColor();
     // Band k is the fluid colour times mix(0.35, 1, k / (bands - 1)); the highlight is 80 % white.
-    auto classify = [&](const unsigned char* c) {
+    auto classify = [&](const unsigned char* c)
+    {
       for (int k = 0; k < bands; ++k)
       {
         const double f = 0.35 + 0.65 * k / (bands - 1);
@@ -365,9 +372,10 @@ int check()
         dark += luminance(c) < 0.8 * darkest ? 1 : 0;
       }
     }
-    const int levels = static_cast<int>(std::count_if(bandCount.begin(), bandCount.end(), [&](int n) { return n > interior / 200; }));
-    std::printf("toon interior: %d px, %.1f %% flat bands or highlight, %d band levels, %.2f %% line pixels\n", interior,
-      100.0 * banded / interior, levels, 100.0 * dark / interior);
+    const int levels =
+      static_cast<int>(std::count_if(bandCount.begin(), bandCount.end(), [&](int n) { return n > interior / 200; }));
+    std::printf("toon interior: %d px, %.1f %% flat bands or highlight, %d band levels, %.2f %% line pixels\n",
+                interior, 100.0 * banded / interior, levels, 100.0 * dark / interior);
     expect(banded > 0.97 * interior, "toon: the ball's interior is flat bands of the fluid colour and the highlight");
     expect(levels >= 2, "toon: the lighting falls into at least two bands across the ball");
     expect(dark < 0.01 * interior, "toon: no lines inside the smooth ball");
@@ -475,14 +483,16 @@ int check()
   {
     int method, iterations;
     const char* name;
-  } methods[] = { { M::NarrowRange, 3, "narrow-range x3" }, { M::Bilateral, 3, "bilateral x3" },
-    { M::CurvatureFlow, 150, "curvature flow x150" } };
+  } methods[] = { { M::NarrowRange, 3, "narrow-range x3" },
+                  { M::Bilateral, 3, "bilateral x3" },
+                  { M::CurvatureFlow, 150, "curvature flow x150" } };
   for (const auto& m : methods)
   {
     show(w, ours(ball, r, m.method, m.iterations, M::OpaqueSurface));
     w.Render();
     const DepthError e = w.MeasureSphere(surface, r);
-    std::printf("%s: rms %.3f r, mean %.3f r, spread %.3f r, coverage %.3f\n", m.name, e.rms, e.mean, e.spread, e.coverage);
+    std::printf("%s: rms %.3f r, mean %.3f r, spread %.3f r, coverage %.3f\n", m.name, e.rms, e.mean, e.spread,
+                e.coverage);
     expect(e.coverage > 0.99, std::string(m.name) + " keeps the ball covered");
     expect(e.spread < 0.7 * raw.spread, std::string(m.name) + " smooths the bumps (spread down by 30 %+)");
     // The splats (radius = spacing) stand proud of the fluid's volume; smoothing may settle them
@@ -553,7 +563,9 @@ int main(int argc, char* argv[])
     }
     else
     {
-      std::fprintf(stderr, "usage: %s [--check] [--width W] [--height H] [--big N] [--csv file] [--only accuracy|speed|big|npr]\n", argv[0]);
+      std::fprintf(
+        stderr, "usage: %s [--check] [--width W] [--height H] [--big N] [--csv file] [--only accuracy|speed|big|npr]\n",
+        argv[0]);
       return 2;
     }
   }
@@ -567,22 +579,25 @@ int main(int argc, char* argv[])
   auto ball = parafluid_test::latticeBall(R - r, h);
   const double surface = parafluid_test::volumeRadius(ball->GetNumberOfPoints(), h);
   std::printf("ball: %lld particles, %dx%d; error in particle radii against the sphere of their volume, R = %.4f\n",
-    static_cast<long long>(ball->GetNumberOfPoints()), width, height, surface);
-  std::printf("%-36s %6s %10s %8s %8s %8s %9s\n", "renderer / smoothing", "iters", "ms/frame", "rms", "mean", "spread", "coverage");
-  auto row = [&](const char* scene, const char* who, const char* method, int iterations, double seconds,
-               const DepthError& e) {
+              static_cast<long long>(ball->GetNumberOfPoints()), width, height, surface);
+  std::printf("%-36s %6s %10s %8s %8s %8s %9s\n", "renderer / smoothing", "iters", "ms/frame", "rms", "mean", "spread",
+              "coverage");
+  auto row =
+    [&](const char* scene, const char* who, const char* method, int iterations, double seconds, const DepthError& e)
+  {
     std::printf("%-36s %6d %10.1f %8.3f %8.3f %8.3f %9.3f\n", (std::string(who) + " " + method).c_str(), iterations,
-      1000.0 * seconds, e.rms, e.mean, e.spread, e.coverage);
-    csv << scene << ',' << who << ',' << method << ',' << iterations << ',' << seconds << ',' << e.rms << ','
-        << e.mean << ',' << e.spread << ',' << e.coverage << '\n';
+                1000.0 * seconds, e.rms, e.mean, e.spread, e.coverage);
+    csv << scene << ',' << who << ',' << method << ',' << iterations << ',' << seconds << ',' << e.rms << ',' << e.mean
+        << ',' << e.spread << ',' << e.coverage << '\n';
   };
   const struct
   {
     int method;
     const char* name;
     std::vector<int> iterations;
-  } sweeps[] = { { M::NarrowRange, "narrow-range", { 0, 1, 2, 3, 5, 8 } }, { M::Bilateral, "bilateral", { 1, 2, 3, 5, 8 } },
-    { M::CurvatureFlow, "curvature-flow", { 10, 20, 40, 80, 160 } } };
+  } sweeps[] = { { M::NarrowRange, "narrow-range", { 0, 1, 2, 3, 5, 8 } },
+                 { M::Bilateral, "bilateral", { 1, 2, 3, 5, 8 } },
+                 { M::CurvatureFlow, "curvature-flow", { 10, 20, 40, 80, 160 } } };
   for (const auto& s : sweeps)
   {
     if (!only.empty() && only != "accuracy")
@@ -616,7 +631,7 @@ int main(int argc, char* argv[])
     const double seconds = w.FrameTime(3);
     w.Render();
     row("ball", "vtkOpenGLFluidMapper", run.repaired ? "narrow-range" : "narrow-range, as shipped", run.iterations,
-      seconds, w.MeasureSphere(peek->SurfaceDistances(w.farPlane), surface, r));
+        seconds, w.MeasureSphere(peek->SurfaceDistances(w.farPlane), surface, r));
   }
 
   // 2. Frame time on a dam-break block, 100k and `big` particles, transparent fluid, narrow-range
@@ -636,8 +651,9 @@ int main(int argc, char* argv[])
     w.renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
     const std::string scene = "block" + std::to_string(block->GetNumberOfPoints());
     std::printf("\n%s: %lld particles, radius %.4f, %dx%d\n", scene.c_str(),
-      static_cast<long long>(block->GetNumberOfPoints()), radius, width, height);
-    auto time = [&](vtkProp* prop) {
+                static_cast<long long>(block->GetNumberOfPoints()), radius, width, height);
+    auto time = [&](vtkProp* prop)
+    {
       show(w, prop);
       w.renderer->GetActiveCamera()->SetPosition(1.0, -2.2, 2.4);
       w.renderer->GetActiveCamera()->SetFocalPoint(1.0, 0.5, 0.3);
@@ -651,26 +667,32 @@ int main(int argc, char* argv[])
     // Non-photorealistic styles against the opaque surface they build on: the toon line passes
     // and the brush-stroke pass work in image space, so their extra cost should not grow with
     // the particle count. (The stroke layout runs once per data change, in the warm-up frame.)
-    row(scene.c_str(), "ours", "opaque narrow-range", 3, time(ours(block, radius, M::NarrowRange, 3, M::OpaqueSurface)), none);
+    row(scene.c_str(), "ours", "opaque narrow-range", 3, time(ours(block, radius, M::NarrowRange, 3, M::OpaqueSurface)),
+        none);
     row(scene.c_str(), "ours", "toon narrow-range", 3, time(ours(block, radius, M::NarrowRange, 3, M::Toon)), none);
-    row(scene.c_str(), "ours", "brush strokes narrow-range", 3, time(ours(block, radius, M::NarrowRange, 3, M::BrushStrokes)), none);
+    row(scene.c_str(), "ours", "brush strokes narrow-range", 3,
+        time(ours(block, radius, M::NarrowRange, 3, M::BrushStrokes)), none);
     {
       show(w, ours(block, radius, M::NarrowRange, 3, M::BrushStrokes));
       const auto start = std::chrono::steady_clock::now();
       w.Render();
       const double first = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::printf("%-36s %6s %10.1f   (first frame: upload + %lld strokes laid out, %lld segments)\n",
-        "ours / brush strokes, first frame", "3", 1e3 * first, static_cast<long long>(lastMapper(w)->GetLastStrokeCount()),
-        static_cast<long long>(lastMapper(w)->GetLastStrokeSegmentCount()));
+                  "ours / brush strokes, first frame", "3", 1e3 * first,
+                  static_cast<long long>(lastMapper(w)->GetLastStrokeCount()),
+                  static_cast<long long>(lastMapper(w)->GetLastStrokeSegmentCount()));
       csv << scene << ",ours,brush strokes first frame,3," << first << ",,,,\n";
     }
     if (only == "npr")
     {
       continue;
     }
-    row(scene.c_str(), "ours", "transparent narrow-range", 3, time(ours(block, radius, M::NarrowRange, 3, M::TransparentFluid)), none);
-    row(scene.c_str(), "ours", "opaque unsmoothed", 0, time(ours(block, radius, M::NarrowRange, 0, M::OpaqueSurface)), none);
-    row(scene.c_str(), "vtkOpenGLFluidMapper", "transparent narrow-range", 3, time(vtkFluid(block, radius, 3, true)), none);
+    row(scene.c_str(), "ours", "transparent narrow-range", 3,
+        time(ours(block, radius, M::NarrowRange, 3, M::TransparentFluid)), none);
+    row(scene.c_str(), "ours", "opaque unsmoothed", 0, time(ours(block, radius, M::NarrowRange, 0, M::OpaqueSurface)),
+        none);
+    row(scene.c_str(), "vtkOpenGLFluidMapper", "transparent narrow-range", 3, time(vtkFluid(block, radius, 3, true)),
+        none);
     row(scene.c_str(), "vtkOpenGLFluidMapper", "opaque narrow-range", 3, time(vtkFluid(block, radius, 3, false)), none);
     row(scene.c_str(), "vtkPointGaussianMapper", "spheres", 0, time(gaussianSpheres(block, radius)), none);
   }

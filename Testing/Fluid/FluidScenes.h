@@ -1,7 +1,6 @@
 // Particle scenes shared by the screen-space fluid benchmark and its test: a lattice ball (with an
 // analytic surface to measure depth against) and a dam-break block of fluid on a floor.
-#ifndef ParaFluid_FluidScenes_h
-#define ParaFluid_FluidScenes_h
+#pragma once
 
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
@@ -117,5 +116,3 @@ inline void addSwirl(vtkPolyData* data)
   data->GetPointData()->AddArray(density);
 }
 }
-
-#endif

@@ -64,7 +64,8 @@ double strokeLength(const BrushStrokeSet& s, std::size_t k)
   for (std::uint32_t q = s.offsets[k] + 1; q < s.offsets[k + 1]; ++q)
   {
     length += std::sqrt(std::pow(s.points[3 * q] - s.points[3 * q - 3], 2) +
-      std::pow(s.points[3 * q + 1] - s.points[3 * q - 2], 2) + std::pow(s.points[3 * q + 2] - s.points[3 * q - 1], 2));
+                        std::pow(s.points[3 * q + 1] - s.points[3 * q - 2], 2) +
+                        std::pow(s.points[3 * q + 2] - s.points[3 * q - 1], 2));
   }
   return length;
 }
@@ -134,7 +135,8 @@ TEST(BrushStrokes, FixedStrokesFillTheStillWater)
       if (s.fixed[k])
       {
         const float* c = &s.points[3 * (s.offsets[k] + 1)];
-        nearest = std::min<double>(nearest, std::hypot(c[0] - b.xyz[3 * i], c[1] - b.xyz[3 * i + 1], c[2] - b.xyz[3 * i + 2]));
+        nearest =
+          std::min<double>(nearest, std::hypot(c[0] - b.xyz[3 * i], c[1] - b.xyz[3 * i + 1], c[2] - b.xyz[3 * i + 2]));
       }
     }
     worst = std::max(worst, nearest);

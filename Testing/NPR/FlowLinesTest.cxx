@@ -1,7 +1,7 @@
 // Flow lines through a solid-body vortex sampled on particles: the lines follow the true circles,
 // their length follows the speed, curvature is 1/r, and the budget keeps the longest-curved lines.
-#include "parafluid/common/MathConstants.h"
 #include "parafluid/npr/FlowLines.h"
+#include "parafluid/common/MathConstants.h"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@ using parafluid::kPi;
 
 namespace
 {
-constexpr double kSpacing = 0.02;  // d [m]
-constexpr double kOmega = 2.0;     // [rad/s]
+constexpr double kSpacing = 0.02; // d [m]
+constexpr double kOmega = 2.0;    // [rad/s]
 
 // Lattice particles in a disc of radius 0.5 m, 5 layers thick, turning as a rigid body about z.
 void vortex(std::vector<float>& xyz, std::vector<float>& velocity)
@@ -48,7 +48,8 @@ std::vector<float> seedRing()
     for (int a = 0; a < 5; ++a)
     {
       const double radius = 0.1 + 0.05 * r, angle = 0.3 + 1.1 * a + 0.07 * r;
-      seeds.insert(seeds.end(), { float(radius * std::cos(angle)), float(radius * std::sin(angle)), float(2 * kSpacing) });
+      seeds.insert(seeds.end(),
+                   { float(radius * std::cos(angle)), float(radius * std::sin(angle)), float(2 * kSpacing) });
     }
   }
   return seeds;
@@ -67,7 +68,8 @@ TEST(FlowLines, FollowASolidBodyVortexWithinOnePercentOfTheCircle)
     p.pointsPerLine = 16;
     p.lineDuration = kPi / (2 * kOmega); // a quarter turn
     p.integrator = integrator;
-    const FlowLineSet lines = traceFlowLines(xyz.data(), velocity.data(), xyz.size() / 3, p, seeds.data(), seeds.size() / 3);
+    const FlowLineSet lines =
+      traceFlowLines(xyz.data(), velocity.data(), xyz.size() / 3, p, seeds.data(), seeds.size() / 3);
     ASSERT_EQ(lines.lineCount(), seeds.size() / 3);
     double worst = 0.0;
     for (std::size_t l = 0; l < lines.lineCount(); ++l)
@@ -105,7 +107,8 @@ TEST(FlowLines, BudgetKeepsTheLongestCurvedLines)
   p.kernelRadius = 2 * kSpacing;
   p.lineDuration = 0.3;
   p.maxLines = 5;
-  const FlowLineSet lines = traceFlowLines(xyz.data(), velocity.data(), xyz.size() / 3, p, seeds.data(), seeds.size() / 3);
+  const FlowLineSet lines =
+    traceFlowLines(xyz.data(), velocity.data(), xyz.size() / 3, p, seeds.data(), seeds.size() / 3);
   ASSERT_EQ(lines.lineCount(), 5u);
   // Equal turning everywhere in a rigid vortex, so the outermost seeds (0.4 m) have the longest lines.
   for (std::size_t l = 0; l < 5; ++l)

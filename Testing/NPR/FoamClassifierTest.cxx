@@ -36,13 +36,15 @@ TEST(FoamClassifier, NothingInsideABallIsFlagged)
     for (int j = -10; j <= 10; ++j)
       for (int i = -10; i <= 10; ++i)
         if ((i * i + j * j + k * k) * kSpacing * kSpacing <= radius * radius)
-          xyz.insert(xyz.end(), { float(i * kSpacing + u(rng)), float(j * kSpacing + u(rng)), float(k * kSpacing + u(rng)) });
+          xyz.insert(xyz.end(),
+                     { float(i * kSpacing + u(rng)), float(j * kSpacing + u(rng)), float(k * kSpacing + u(rng)) });
   const std::size_t n = xyz.size() / 3;
   const FoamScores scores = scoreFoam(xyz.data(), n, parameters());
   std::size_t interior = 0, interiorSurface = 0, flagged = 0, surface = 0;
   for (std::size_t i = 0; i < n; ++i)
   {
-    const double r = std::sqrt(xyz[3 * i] * xyz[3 * i] + xyz[3 * i + 1] * xyz[3 * i + 1] + xyz[3 * i + 2] * xyz[3 * i + 2]);
+    const double r =
+      std::sqrt(xyz[3 * i] * xyz[3 * i] + xyz[3 * i + 1] * xyz[3 * i + 1] + xyz[3 * i + 2] * xyz[3 * i + 2]);
     surface += scores.surface[i];
     flagged += scores.candidate[i];
     if (r < radius - 2 * kSpacing)
@@ -58,7 +60,7 @@ TEST(FoamClassifier, NothingInsideABallIsFlagged)
     maxCrest = std::max(maxCrest, c);
   }
   std::printf("ball: %zu particles, %zu interior, %zu surface, %zu flagged, largest crest potential %.3f\n", n,
-    interior, surface, flagged, maxCrest);
+              interior, surface, flagged, maxCrest);
   EXPECT_GT(interior, 1000u);
   EXPECT_EQ(interiorSurface, 0u);
   EXPECT_GT(surface, 500u); // the shell is found
@@ -67,7 +69,8 @@ TEST(FoamClassifier, NothingInsideABallIsFlagged)
 
 TEST(FoamClassifier, TheApexOfASharpCrestIsFlaggedAndItsFlanksAreNot)
 {
-  // A long ridge with 45-degree flanks (apex crest potential about 1.2): z <= 20 d - |x|, over a base 8 d deep, 60 d long in y.
+  // A long ridge with 45-degree flanks (apex crest potential about 1.2): z <= 20 d - |x|, over a base 8 d deep, 60 d
+  // long in y.
   std::vector<float> xyz;
   for (int j = 0; j < 60; ++j)
     for (int i = -30; i <= 30; ++i)
@@ -127,8 +130,8 @@ TEST(FoamHysteresis, ShortCandidaciesNeverSwitch)
   // Particle 11: a candidate for 3 frames: foam from the third; then 2 frames not: still foam;
   //   the third: off.
   // Particle 13: alternating every frame: never foam.
-  const std::uint8_t frames[8][3] = { { 1, 1, 1 }, { 1, 1, 0 }, { 0, 1, 1 }, { 0, 0, 0 }, { 1, 0, 1 }, { 1, 0, 0 },
-    { 0, 1, 1 }, { 0, 0, 0 } };
+  const std::uint8_t frames[8][3] = { { 1, 1, 1 }, { 1, 1, 0 }, { 0, 1, 1 }, { 0, 0, 0 },
+                                      { 1, 0, 1 }, { 1, 0, 0 }, { 0, 1, 1 }, { 0, 0, 0 } };
   const std::uint8_t expected11[8] = { 0, 0, 1, 1, 1, 0, 0, 0 };
   std::vector<std::uint8_t> foam;
   for (int f = 0; f < 8; ++f)

@@ -1,9 +1,9 @@
 // The Gerstner ocean model: crest speeds from the dispersion relation, shoaling and refraction over
 // a sloping floor, no folds for any preset, breaking only in shallow water, analytic normals and
 // Jacobian against finite differences, bad parameters.
+#include "parafluid/ocean/GerstnerOcean.h"
 #include "parafluid/common/MathConstants.h"
 #include "parafluid/ocean/Bathymetry.h"
-#include "parafluid/ocean/GerstnerOcean.h"
 
 #include <gtest/gtest.h>
 

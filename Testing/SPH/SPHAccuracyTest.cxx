@@ -1,9 +1,9 @@
 // Surface tension, adaptive time stepping, the divergence-free solver and the mesh boundary.
-#include "parafluid/common/ParticleLattice.h"
 #include "parafluid/common/Kernels.h"
+#include "parafluid/common/ParticleLattice.h"
+#include "parafluid/common/TriangleBoundary.h"
 #include "parafluid/sph/SPHParameters.h"
 #include "parafluid/sph/SPHSolver.h"
-#include "parafluid/common/TriangleBoundary.h"
 
 #include <gtest/gtest.h>
 
@@ -81,7 +81,8 @@ TEST(AdaptiveTimeStep, RespectsTheCFLConditionAndLandsExactlyOnTheEndTime)
     const auto& s = solver.state();
     for (std::size_t i = 0; i < s.size(); ++i)
     {
-      vmax = std::max(vmax, std::sqrt(double(s.vx[i]) * s.vx[i] + double(s.vy[i]) * s.vy[i] + double(s.vz[i]) * s.vz[i]));
+      vmax =
+        std::max(vmax, std::sqrt(double(s.vx[i]) * s.vx[i] + double(s.vy[i]) * s.vy[i] + double(s.vz[i]) * s.vz[i]));
     }
     const double dt = solver.step();
     EXPECT_LE(dt, p.cflNumber * p.smoothingLength / (c + vmax) * (1 + 1e-6));
@@ -227,8 +228,10 @@ TEST(SurfaceTension, PullsCornersInwardAndLeavesTheInteriorAlone)
     else if (std::fabs(toCentre[0]) > 0.08f && std::fabs(toCentre[1]) > 0.08f && std::fabs(toCentre[2]) > 0.08f)
     {
       ++corners;
-      corner += (extra[0] * toCentre[0] + extra[1] * toCentre[1] + extra[2] * toCentre[2]) /
-        (magnitude * std::sqrt(toCentre[0] * toCentre[0] + toCentre[1] * toCentre[1] + toCentre[2] * toCentre[2]) + 1e-30f);
+      corner +=
+        (extra[0] * toCentre[0] + extra[1] * toCentre[1] + extra[2] * toCentre[2]) /
+        (magnitude * std::sqrt(toCentre[0] * toCentre[0] + toCentre[1] * toCentre[1] + toCentre[2] * toCentre[2]) +
+         1e-30f);
     }
   }
   ASSERT_EQ(corners, 8);

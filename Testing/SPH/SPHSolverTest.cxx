@@ -1,7 +1,7 @@
 // Physics of the weakly compressible SPH solver: conservation, rest state, determinism, bad input.
-#include "parafluid/common/ParticleLattice.h"
-#include "parafluid/common/Kernels.h"
 #include "parafluid/sph/SPHSolver.h"
+#include "parafluid/common/Kernels.h"
+#include "parafluid/common/ParticleLattice.h"
 
 #include <gtest/gtest.h>
 
@@ -90,7 +90,7 @@ TEST(SPHSolver, PressureAndViscosityForcesConserveMomentum)
     for (std::size_t i = 0; i < n; ++i)
     {
       const double f[3] = { p.particleMass * double(st.ax[i]), p.particleMass * double(st.ay[i]),
-        p.particleMass * double(st.az[i]) };
+                            p.particleMass * double(st.az[i]) };
       for (int a = 0; a < 3; ++a)
       {
         sum[a] += f[a];
@@ -264,7 +264,8 @@ TEST(SPHSolver, AdvanceOutputsEachParticlesTimeWeightedMeanPressure)
 TEST(SPHSolver, RejectsBadParametersAndInputClearly)
 {
   const ParticleState s = block({ 0, 0.1, 0, 0.1, 0, 0.1 });
-  auto expectInvalid = [&](auto change, const char* word) {
+  auto expectInvalid = [&](auto change, const char* word)
+  {
     SPHParameters p = waterParameters();
     change(p);
     try
@@ -309,7 +310,7 @@ TEST(SPHSolver, HandlesZeroAndOneParticle)
 TEST(SPHSolver, StopsWithAClearErrorWhenItBlowsUp)
 {
   SPHParameters p = waterParameters();
-  p.timeStep = 0.05f;       // 200 times too large
+  p.timeStep = 0.05f; // 200 times too large
   p.gasStiffness = 1e7f;
   p.domainBounds = { -1e3f, 1e3f, -1e3f, 1e3f, -1e3f, 1e3f };
   ParticleState s = block({ 0, 0.1, 0, 0.1, 0, 0.1 });

@@ -1,9 +1,9 @@
 // Stability stress tests: long runs and extreme settings either run stably or stop with a clear
 // error; they never hang, crash or hand on NaN.
 #include "parafluid/common/ParticleLattice.h"
+#include "parafluid/common/TriangleBoundary.h"
 #include "parafluid/sph/SPHParameters.h"
 #include "parafluid/sph/SPHSolver.h"
-#include "parafluid/common/TriangleBoundary.h"
 
 #include <gtest/gtest.h>
 
@@ -51,15 +51,16 @@ float rampHeight(float x)
 
 std::shared_ptr<TriangleBoundary> obstacle()
 {
-  std::vector<float> p = { 0.3f, -0.05f, 0.0f, 0.65f, -0.05f, 0.35f / 3.0f, 0.65f, 0.15f, 0.35f / 3.0f, 0.3f, 0.15f, 0.0f };
+  std::vector<float> p = { 0.3f,  -0.05f, 0.0f,         0.65f, -0.05f, 0.35f / 3.0f,
+                           0.65f, 0.15f,  0.35f / 3.0f, 0.3f,  0.15f,  0.0f };
   std::vector<std::uint32_t> t = { 0, 1, 2, 0, 2, 3 };
   for (int k = 0; k < 8; ++k)
   {
     p.insert(p.end(), { kPillar[(k & 1) ? 1 : 0], kPillar[(k & 2) ? 3 : 2], kPillar[(k & 4) ? 5 : 4] });
   }
   // Each face as a quad counter-clockwise seen from outside (pillar corners are vertices 4..11).
-  const std::uint32_t quads[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
-    { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  const std::uint32_t quads[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 },
+                                      { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
   for (const auto& q : quads)
   {
     t.insert(t.end(), { 4 + q[0], 4 + q[1], 4 + q[2], 4 + q[0], 4 + q[2], 4 + q[3] });
@@ -69,7 +70,8 @@ std::shared_ptr<TriangleBoundary> obstacle()
 
 bool insideObstacle(float x, float y, float z)
 {
-  const bool inPillar = x > kPillar[0] && x < kPillar[1] && y > kPillar[2] && y < kPillar[3] && z > kPillar[4] && z < kPillar[5];
+  const bool inPillar =
+    x > kPillar[0] && x < kPillar[1] && y > kPillar[2] && y < kPillar[3] && z > kPillar[4] && z < kPillar[5];
   return inPillar || z < rampHeight(x);
 }
 
@@ -103,9 +105,10 @@ void runTenThousandSteps(PressureSolverType solver)
         ASSERT_TRUE(std::isfinite(x + y + z + st.vx[i] + st.vy[i] + st.vz[i] + st.density[i] + st.pressure[i]))
           << "step " << k;
         ASSERT_TRUE(x >= p.domainBounds[0] && x <= p.domainBounds[1] && y >= p.domainBounds[2] &&
-          y <= p.domainBounds[3] && z >= p.domainBounds[4] && z <= p.domainBounds[5])
+                    y <= p.domainBounds[3] && z >= p.domainBounds[4] && z <= p.domainBounds[5])
           << "particle " << st.id[i] << " left the domain at step " << k;
-        ASSERT_FALSE(insideObstacle(x, y, z)) << "particle " << st.id[i] << " got into the pillar or under the ramp at step " << k;
+        ASSERT_FALSE(insideObstacle(x, y, z))
+          << "particle " << st.id[i] << " got into the pillar or under the ramp at step " << k;
       }
       largestEnergy = std::max(largestEnergy, mechanicalEnergy(s));
     }
@@ -243,7 +246,7 @@ TEST(SPHStress, WallFrictionAtExtremesOnlyTakesEnergyAndNeverBlowsUp)
       }
       const double final = mechanicalEnergy(s);
       std::printf("%s, wall friction %d: mechanical energy %.4f of the initial after 0.2 s\n", name,
-        static_cast<int>(friction), final / initial);
+                  static_cast<int>(friction), final / initial);
       EXPECT_LT(final, initial) << name << ", friction " << static_cast<int>(friction);
       // A step 100 times too large with adaptivity off: the implicit wall law cannot make it worse
       // than free-slip walls do; it runs or stops with the usual message.

@@ -189,13 +189,13 @@ TEST(WallFriction, NoSlipFloorTakesMomentumAsStokesFirstProblem)
     const SPHParameters p = SlidingSlab::parameters(solver, WallFriction::NoSlip, mu);
     const double lost = SlidingSlab::initialMomentum(p) - SlidingSlab::momentumAfter(p, t);
     EXPECT_NEAR(lost, expected, 0.1 * expected) << solverName(solver);
-    std::printf("no-slip floor, %s: momentum lost %.4f kg/(m s), Stokes %.4f\n",
-      solverName(solver), lost, expected);
+    std::printf("no-slip floor, %s: momentum lost %.4f kg/(m s), Stokes %.4f\n", solverName(solver), lost, expected);
     // Off on the floor (and everywhere else the slab touches), nothing is lost.
     SPHParameters off = p;
     off.frictionWalls = { true, true, true, true, false, true };
     off.frictionWalls[2] = off.frictionWalls[3] = false;
-    EXPECT_NEAR(SlidingSlab::momentumAfter(off, t), SlidingSlab::initialMomentum(p), 1e-4 * SlidingSlab::initialMomentum(p));
+    EXPECT_NEAR(SlidingSlab::momentumAfter(off, t), SlidingSlab::initialMomentum(p),
+                1e-4 * SlidingSlab::initialMomentum(p));
   }
 }
 
@@ -211,8 +211,8 @@ TEST(WallFriction, LogLawFloorTakesMomentumAtTheWallShearStress)
     const SPHParameters p = SlidingSlab::parameters(solver, WallFriction::LogLaw, 3.5f);
     const double lost = SlidingSlab::initialMomentum(p) - SlidingSlab::momentumAfter(p, t);
     EXPECT_NEAR(lost, expected, 0.05 * expected) << solverName(solver);
-    std::printf("log-law floor, %s: momentum lost %.5f kg/(m s), rho u*^2 t %.5f\n",
-      solverName(solver), lost, expected);
+    std::printf("log-law floor, %s: momentum lost %.5f kg/(m s), rho u*^2 t %.5f\n", solverName(solver), lost,
+                expected);
   }
 }
 

@@ -1,7 +1,7 @@
 // Sparse marching cubes over particles: watertight, oriented, accurate on a ball, volume-true on
 // a block, identical for any thread count, and clear about bad input.
-#include "parafluid/surface/MarchingCubesCases.h"
 #include "parafluid/surface/ParticleSurface.h"
+#include "parafluid/surface/MarchingCubesCases.h"
 #include "parafluid/surface/SurfaceMesh.h"
 
 #include <gtest/gtest.h>
@@ -140,7 +140,7 @@ TEST(ParticleSurface, BallIsWatertightAndWithinTheAccuracyBound)
     errors[k] = meanRadialError(mesh, radius) / d;
     gridErrors[k] = surface.meanLevelSetDistance(mesh) / d;
     std::printf("cell %.2f d: %zu vertices, mean radial error %.4f d, from the field's level set %.5f d\n", cell,
-      mesh.vertexCount(), errors[k], gridErrors[k]);
+                mesh.vertexCount(), errors[k], gridErrors[k]);
     // Normals point out along the radius.
     double alignment = 0.0;
     for (std::size_t v = 0; v < mesh.vertexCount(); ++v)
@@ -176,7 +176,8 @@ TEST(ParticleSurface, SmoothingKeepsTheBallsVolume)
   const SurfaceMesh smooth = surface.extract(xyz.data(), n, p);
   expectWatertight(smooth);
   const double rawError = meanRadialError(raw, equivalent) / d, smoothError = meanRadialError(smooth, equivalent) / d;
-  std::printf("raw %.4f d, smoothed %.4f d; volume %.5f -> %.5f\n", rawError, smoothError, enclosedVolume(raw), enclosedVolume(smooth));
+  std::printf("raw %.4f d, smoothed %.4f d; volume %.5f -> %.5f\n", rawError, smoothError, enclosedVolume(raw),
+              enclosedVolume(smooth));
   EXPECT_NEAR(enclosedVolume(smooth) / enclosedVolume(raw), 1.0, 0.005);
 }
 

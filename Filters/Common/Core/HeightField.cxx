@@ -7,8 +7,8 @@
 
 namespace parafluid
 {
-HeightField::HeightField(
-  std::vector<float> elevation, int nx, int ny, double x0, double y0, double dx, double dy, double seaLevel)
+HeightField::HeightField(std::vector<float> elevation, int nx, int ny, double x0, double y0, double dx, double dy,
+                         double seaLevel)
   : Elevation(std::move(elevation))
   , NX(nx)
   , NY(ny)
@@ -29,7 +29,7 @@ HeightField::HeightField(
   if (this->Elevation.size() != static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny))
   {
     throw std::invalid_argument("bathymetry: expected " + std::to_string(static_cast<long long>(nx) * ny) +
-      " elevations, got " + std::to_string(this->Elevation.size()));
+                                " elevations, got " + std::to_string(this->Elevation.size()));
   }
   for (float z : this->Elevation)
   {
@@ -40,8 +40,8 @@ HeightField::HeightField(
   }
 }
 
-HeightField HeightField::fromTriangles(
-  const std::vector<float>& points, const std::vector<std::uint32_t>& triangles, int nx, int ny, double seaLevel)
+HeightField HeightField::fromTriangles(const std::vector<float>& points, const std::vector<std::uint32_t>& triangles,
+                                       int nx, int ny, double seaLevel)
 {
   if (points.size() < 9 || points.size() % 3 != 0 || triangles.empty() || triangles.size() % 3 != 0)
   {
@@ -133,7 +133,7 @@ double HeightField::depth(double x, double y) const
   double fx, fy;
   this->locate(x, y, i, j, fx, fy);
   const double e = (1 - fx) * (1 - fy) * this->elevationAt(i, j) + fx * (1 - fy) * this->elevationAt(i + 1, j) +
-    (1 - fx) * fy * this->elevationAt(i, j + 1) + fx * fy * this->elevationAt(i + 1, j + 1);
+                   (1 - fx) * fy * this->elevationAt(i, j + 1) + fx * fy * this->elevationAt(i + 1, j + 1);
   return this->SeaLevel - e;
 }
 

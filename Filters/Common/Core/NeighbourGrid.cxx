@@ -13,7 +13,7 @@ void NeighbourGrid::build(const float* x, const float* y, const float* z, std::s
   if (!(cellSize > 0.0f) || !std::isfinite(cellSize))
   {
     throw std::invalid_argument("neighbour grid: cell size must be a positive finite number, got " +
-      std::to_string(cellSize));
+                                std::to_string(cellSize));
   }
   if (n > std::numeric_limits<std::uint32_t>::max() - 1)
   {
@@ -61,9 +61,9 @@ void NeighbourGrid::build(const float* x, const float* y, const float* z, std::s
   }
   if (cells > static_cast<double>(std::min<std::size_t>(maxCells(n), std::numeric_limits<std::uint32_t>::max() - 1)))
   {
-    throw std::invalid_argument("neighbour grid: the particles span " + std::to_string(cells) +
-      " cells of size " + std::to_string(cellSize) + ", more than the " + std::to_string(maxCells(n)) +
-      " allowed for " + std::to_string(n) +
+    throw std::invalid_argument(
+      "neighbour grid: the particles span " + std::to_string(cells) + " cells of size " + std::to_string(cellSize) +
+      ", more than the " + std::to_string(maxCells(n)) + " allowed for " + std::to_string(n) +
       " particles; particles have flown far apart (check the domain bounds and the time step)");
   }
   const std::size_t cellCount = static_cast<std::size_t>(cells);

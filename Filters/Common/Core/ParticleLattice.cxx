@@ -31,7 +31,7 @@ ParticleLattice fillBoxWithLattice(const std::array<double, 6>& bounds, double s
   if (total > static_cast<double>(maxParticles))
   {
     throw std::invalid_argument("particle lattice: " + std::to_string(total) + " particles exceed the limit of " +
-      std::to_string(maxParticles) + "; increase Spacing or shrink the block");
+                                std::to_string(maxParticles) + "; increase Spacing or shrink the block");
   }
   const std::size_t n = static_cast<std::size_t>(total);
   lattice.x.reserve(n);

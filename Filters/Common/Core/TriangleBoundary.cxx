@@ -31,8 +31,8 @@ double dot(const double* a, const double* b)
 constexpr double kMaxCells = 4.0e6;
 } // namespace
 
-TriangleBoundary::TriangleBoundary(
-  std::vector<float> points, std::vector<std::uint32_t> triangles, std::vector<float> vertexNormals)
+TriangleBoundary::TriangleBoundary(std::vector<float> points, std::vector<std::uint32_t> triangles,
+                                   std::vector<float> vertexNormals)
   : Points(std::move(points))
 {
   if (this->Points.size() % 3 != 0 || triangles.size() % 3 != 0)
@@ -52,7 +52,7 @@ TriangleBoundary::TriangleBoundary(
     if (v >= vertices)
     {
       throw std::invalid_argument("boundary mesh: triangle vertex index " + std::to_string(v) + " is out of range (" +
-        std::to_string(vertices) + " vertices)");
+                                  std::to_string(vertices) + " vertices)");
     }
   }
   // Face normals; zero-area triangles cannot be crossed and are dropped.
@@ -178,7 +178,8 @@ void TriangleBoundary::buildGrid()
           for (int i = first[0]; i <= last[0]; ++i)
           {
             const std::size_t c = static_cast<std::size_t>(i) +
-              static_cast<std::size_t>(this->Dims[0]) * (static_cast<std::size_t>(j) + static_cast<std::size_t>(this->Dims[1]) * k);
+                                  static_cast<std::size_t>(this->Dims[0]) *
+                                    (static_cast<std::size_t>(j) + static_cast<std::size_t>(this->Dims[1]) * k);
             if (pass == 0)
             {
               ++this->CellStart[c + 1];
@@ -252,8 +253,9 @@ bool TriangleBoundary::firstCrossing(const float a[3], const float b[3], Crossin
     {
       for (int i = first[0]; i <= last[0]; ++i)
       {
-        const std::size_t c = static_cast<std::size_t>(i) +
-          static_cast<std::size_t>(this->Dims[0]) * (static_cast<std::size_t>(j) + static_cast<std::size_t>(this->Dims[1]) * k);
+        const std::size_t c =
+          static_cast<std::size_t>(i) + static_cast<std::size_t>(this->Dims[0]) *
+                                          (static_cast<std::size_t>(j) + static_cast<std::size_t>(this->Dims[1]) * k);
         for (std::uint32_t e = this->CellStart[c]; e < this->CellStart[c + 1]; ++e)
         {
           const std::uint32_t t = this->CellTriangles[e];

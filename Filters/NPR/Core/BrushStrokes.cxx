@@ -1,5 +1,5 @@
-#include "parafluid/common/MathConstants.h"
 #include "parafluid/npr/BrushStrokes.h"
+#include "parafluid/common/MathConstants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -52,7 +52,7 @@ std::uint64_t cubeKey(std::int64_t i, std::int64_t j, std::int64_t k)
 } // namespace
 
 BrushStrokeSet layoutBrushStrokes(const float* xyz, const float* velocity, const float* value, std::size_t n,
-  const BrushStrokeParameters& p, const std::function<bool(double)>& progress)
+                                  const BrushStrokeParameters& p, const std::function<bool(double)>& progress)
 {
   const std::string problem = validate(p);
   if (!problem.empty())
@@ -69,9 +69,11 @@ BrushStrokeSet layoutBrushStrokes(const float* xyz, const float* velocity, const
   // a stroke and dropped), thinned evenly to twice the budget so that the work follows the
   // strokes drawn, not the particle count.
   const double slowSpeed = p.strokeLength / p.flow.lineDuration; // [m/s]
-  auto speedOf = [&](std::size_t i) {
+  auto speedOf = [&](std::size_t i)
+  {
     const float* v = velocity + 3 * i;
-    return std::sqrt(static_cast<double>(v[0]) * v[0] + static_cast<double>(v[1]) * v[1] + static_cast<double>(v[2]) * v[2]);
+    return std::sqrt(static_cast<double>(v[0]) * v[0] + static_cast<double>(v[1]) * v[1] +
+                     static_cast<double>(v[2]) * v[2]);
   };
   std::vector<std::uint32_t> fast;
   for (std::size_t i = 0; i < n; ++i)
@@ -104,7 +106,8 @@ BrushStrokeSet layoutBrushStrokes(const float* xyz, const float* velocity, const
   {
     return BrushStrokeSet{ {}, { 0 }, {}, {}, {} };
   }
-  auto addStroke = [&](const float* first, std::size_t count, std::uint32_t seed, bool fixed) {
+  auto addStroke = [&](const float* first, std::size_t count, std::uint32_t seed, bool fixed)
+  {
     out.points.insert(out.points.end(), first, first + 3 * count);
     out.offsets.push_back(static_cast<std::uint32_t>(out.points.size() / 3));
     out.value.push_back(value ? value[seed] : 0.0f);
@@ -115,7 +118,8 @@ BrushStrokeSet layoutBrushStrokes(const float* xyz, const float* velocity, const
   {
     if (lines.length[l] >= p.strokeLength)
     {
-      addStroke(&lines.points[3 * lines.offsets[l]], lines.offsets[l + 1] - lines.offsets[l], seedParticle[lines.seed[l]], false);
+      addStroke(&lines.points[3 * lines.offsets[l]], lines.offsets[l + 1] - lines.offsets[l],
+                seedParticle[lines.seed[l]], false);
     }
   }
 
@@ -156,7 +160,8 @@ BrushStrokeSet layoutBrushStrokes(const float* xyz, const float* velocity, const
     const float* x = xyz + 3 * i;
     const float* v = velocity + 3 * i;
     double direction[3] = { v[0], v[1], v[2] };
-    const double speed = std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+    const double speed =
+      std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
     if (speed > 1e-6 * slowSpeed)
     {
       for (double& d : direction)

@@ -18,15 +18,17 @@ bool velocityAt(const ParticleNeighbourhood& near, const float* velocity, const 
 {
   const float h2 = near.radius() * near.radius();
   double weight = 0.0, sum[3] = { 0.0, 0.0, 0.0 };
-  near.forEachNear(p, [&](std::uint32_t j, float, float, float, float r2) {
-    const double t = h2 - r2;
-    const double w = t * t * t; // the kernel's constant cancels in the normalisation
-    weight += w;
-    for (int a = 0; a < 3; ++a)
-    {
-      sum[a] += w * velocity[3 * j + a];
-    }
-  });
+  near.forEachNear(p,
+                   [&](std::uint32_t j, float, float, float, float r2)
+                   {
+                     const double t = h2 - r2;
+                     const double w = t * t * t; // the kernel's constant cancels in the normalisation
+                     weight += w;
+                     for (int a = 0; a < 3; ++a)
+                     {
+                       sum[a] += w * velocity[3 * j + a];
+                     }
+                   });
   if (!(weight > 0.0))
   {
     return false;
@@ -39,8 +41,8 @@ bool velocityAt(const ParticleNeighbourhood& near, const float* velocity, const 
 }
 
 /// One step of length dt from x; false where the field is undefined along the way.
-bool step(const ParticleNeighbourhood& near, const float* velocity, FlowIntegrator integrator, float dt, const float x[3],
-  float next[3])
+bool step(const ParticleNeighbourhood& near, const float* velocity, FlowIntegrator integrator, float dt,
+          const float x[3], float next[3])
 {
   float k1[3], k2[3], probe[3];
   if (!velocityAt(near, velocity, x, k1))
@@ -93,7 +95,8 @@ struct TracedLine
   double length = 0.0, turning = 0.0;
 };
 
-TracedLine trace(const ParticleNeighbourhood& near, const float* velocity, const FlowLineParameters& p, const float start[3])
+TracedLine trace(const ParticleNeighbourhood& near, const float* velocity, const FlowLineParameters& p,
+                 const float start[3])
 {
   TracedLine line;
   const float dt = static_cast<float>(p.lineDuration / (p.pointsPerLine - 1));
@@ -120,7 +123,7 @@ TracedLine trace(const ParticleNeighbourhood& near, const float* velocity, const
     const float* a = &line.points[3 * (k - 1)];
     const float* b = &line.points[3 * k];
     line.length += std::sqrt(double(b[0] - a[0]) * (b[0] - a[0]) + double(b[1] - a[1]) * (b[1] - a[1]) +
-      double(b[2] - a[2]) * (b[2] - a[2]));
+                             double(b[2] - a[2]) * (b[2] - a[2]));
   }
   return line;
 }
@@ -173,7 +176,7 @@ std::string validate(const FlowLineParameters& p)
 }
 
 FlowLineSet traceFlowLines(const float* xyz, const float* velocity, std::size_t n, const FlowLineParameters& p,
-  const float* seeds, std::size_t seedCount, const std::function<bool(double)>& progress)
+                           const float* seeds, std::size_t seedCount, const std::function<bool(double)>& progress)
 {
   const std::string problem = validate(p);
   if (!problem.empty())
@@ -244,7 +247,8 @@ FlowLineSet traceFlowLines(const float* xyz, const float* velocity, std::size_t 
     }
     kept.push_back(static_cast<std::uint32_t>(s));
   }
-  auto better = [&](std::uint32_t a, std::uint32_t b) {
+  auto better = [&](std::uint32_t a, std::uint32_t b)
+  {
     const double sa = lines[a].length * lines[a].turning, sb = lines[b].length * lines[b].turning;
     if (sa != sb)
     {

@@ -1,7 +1,7 @@
 #include "parafluid/npr/FoamClassifier.h"
 
-#include "parafluid/common/ParticleNeighbourhood.h"
 #include "parafluid/common/Kernels.h"
+#include "parafluid/common/ParticleNeighbourhood.h"
 
 #include <algorithm>
 #include <cmath>
@@ -67,18 +67,20 @@ FoamScores scoreFoam(const float* xyz, std::size_t n, const FoamParameters& p)
   {
     float g[3] = { 0.0f, 0.0f, 0.0f };
     std::uint32_t others = 0;
-    near.forEachNear(&xyz[3 * i], [&](std::uint32_t j, float ex, float ey, float ez, float r2) {
-      if (j == static_cast<std::uint32_t>(i))
-      {
-        return;
-      }
-      ++others;
-      // grad_i W(x_i - x_j) = factor * (x_i - x_j) = -factor * e
-      const float f = -volume * poly6.gradientFactorFromSquared(r2);
-      g[0] += f * ex;
-      g[1] += f * ey;
-      g[2] += f * ez;
-    });
+    near.forEachNear(&xyz[3 * i],
+                     [&](std::uint32_t j, float ex, float ey, float ez, float r2)
+                     {
+                       if (j == static_cast<std::uint32_t>(i))
+                       {
+                         return;
+                       }
+                       ++others;
+                       // grad_i W(x_i - x_j) = factor * (x_i - x_j) = -factor * e
+                       const float f = -volume * poly6.gradientFactorFromSquared(r2);
+                       g[0] += f * ex;
+                       g[1] += f * ey;
+                       g[2] += f * ez;
+                     });
     neighbours[i] = others;
     const float length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
     if (length * h > p.surfaceThreshold)
@@ -100,14 +102,17 @@ FoamScores scoreFoam(const float* xyz, std::size_t n, const FoamParameters& p)
     if (out.surface[i])
     {
       const float* ni = &normal[3 * i];
-      near.forEachNear(&xyz[3 * i], [&](std::uint32_t j, float ex, float ey, float ez, float r2) {
-        if (j == static_cast<std::uint32_t>(i) || !out.surface[j] || ex * ni[0] + ey * ni[1] + ez * ni[2] >= 0.0f)
-        {
-          return;
-        }
-        const float* nj = &normal[3 * j];
-        crest += (1.0f - (ni[0] * nj[0] + ni[1] * nj[1] + ni[2] * nj[2])) * (1.0f - std::sqrt(r2) / h);
-      });
+      near.forEachNear(&xyz[3 * i],
+                       [&](std::uint32_t j, float ex, float ey, float ez, float r2)
+                       {
+                         if (j == static_cast<std::uint32_t>(i) || !out.surface[j] ||
+                             ex * ni[0] + ey * ni[1] + ez * ni[2] >= 0.0f)
+                         {
+                           return;
+                         }
+                         const float* nj = &normal[3 * j];
+                         crest += (1.0f - (ni[0] * nj[0] + ni[1] * nj[1] + ni[2] * nj[2])) * (1.0f - std::sqrt(r2) / h);
+                       });
     }
     out.crest[i] = crest;
     // Spray cue: 1 at sprayNeighbours neighbours or fewer, falling to 0 at twice as many.
@@ -120,7 +125,7 @@ FoamScores scoreFoam(const float* xyz, std::size_t n, const FoamParameters& p)
 }
 
 void FoamHysteresis::update(const std::int64_t* ids, const std::uint8_t* candidate, std::size_t n, int persistFrames,
-  std::vector<std::uint8_t>& foam)
+                            std::vector<std::uint8_t>& foam)
 {
   const int persist = std::max(1, persistFrames);
   std::unordered_map<std::int64_t, State> next;

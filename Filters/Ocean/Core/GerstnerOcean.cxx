@@ -1,5 +1,5 @@
-#include "parafluid/common/MathConstants.h"
 #include "parafluid/ocean/GerstnerOcean.h"
+#include "parafluid/common/MathConstants.h"
 
 #include "parafluid/ocean/Bathymetry.h"
 
@@ -63,13 +63,14 @@ void validate(const OceanParameters& p)
     throw std::invalid_argument("ocean: WindLean must lie in [0, 0.5]");
   }
   if (!(p.breakingDepthRatio > 0.0) || !(p.minDepth > 0.0) || !(p.breakingStretch >= 0.0) ||
-    !(p.breakingLean >= 0.0 && p.breakingLean < 1.5) || !(p.breakingShift >= 0.0) || !std::isfinite(p.windDirection))
+      !(p.breakingLean >= 0.0 && p.breakingLean < 1.5) || !(p.breakingShift >= 0.0) || !std::isfinite(p.windDirection))
   {
     throw std::invalid_argument("ocean: breaking parameters and minimum depth must be positive (lean below 1.5 rad)");
   }
 }
 
-GerstnerOcean::GerstnerOcean(OceanParameters parameters, std::shared_ptr<const Bathymetry> bathymetry, const double region[4])
+GerstnerOcean::GerstnerOcean(OceanParameters parameters, std::shared_ptr<const Bathymetry> bathymetry,
+                             const double region[4])
   : Parameters(std::move(parameters))
   , Floor(std::move(bathymetry))
   , Waves(this->Parameters.waves)
@@ -122,7 +123,7 @@ GerstnerOcean::GerstnerOcean(OceanParameters parameters, std::shared_ptr<const B
 }
 
 void GerstnerOcean::evaluate(const float* xs, const float* ys, std::size_t n, double time, float* displacement,
-  float* normal, float* jacobian, float* foam, float* depthOut, int threads) const
+                             float* normal, float* jacobian, float* foam, float* depthOut, int threads) const
 {
   const OceanParameters& p = this->Parameters;
   const int waves = static_cast<int>(this->Waves.size());
@@ -190,7 +191,8 @@ void GerstnerOcean::evaluate(const float* xs, const float* ys, std::size_t n, do
         const double S = a.sinTheta, C = a.cosTheta;
         const double P = std::max(S, 0.0), dP = S > 0.0 ? C : 0.0;
         // Breaking weight from the local height against the depth: zero in deep water.
-        const double b = std::isinf(h) ? 0.0 : smoothstep(0.7 * p.breakingDepthRatio, p.breakingDepthRatio, 2.0 * A * sz / h);
+        const double b =
+          std::isinf(h) ? 0.0 : smoothstep(0.7 * p.breakingDepthRatio, p.breakingDepthRatio, 2.0 * A * sz / h);
         breakingCrest = std::max(breakingCrest, b * P);
         const double ahead = -(slope[0] * a.direction[0] + slope[1] * a.direction[1]);
         const double alpha = (ahead > 0.0 && a.decay > 0.0 ? std::atan(ahead) * a.decay : 0.0) + b * p.breakingLean * P;

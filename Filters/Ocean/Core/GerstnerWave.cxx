@@ -1,5 +1,5 @@
-#include "parafluid/common/MathConstants.h"
 #include "parafluid/ocean/GerstnerWave.h"
+#include "parafluid/common/MathConstants.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -15,7 +15,7 @@ constexpr double kMaxSamples = 4.0e6;
 }
 
 WavePhaseField::WavePhaseField(const Bathymetry& bathymetry, double kDeep, const double direction[2],
-  const double bounds[4], double step, double minDepth)
+                               const double bounds[4], double step, double minDepth)
 {
   const double length = std::hypot(direction[0], direction[1]);
   if (!(length > 0.0) || !(kDeep > 0.0) || !(minDepth > 0.0))
@@ -72,9 +72,10 @@ WavePhaseField::WavePhaseField(const Bathymetry& bathymetry, double kDeep, const
     const double span = (above - below) * step;
     for (int i = 0; i < ns; ++i)
     {
-      const double difference = this->Phase[static_cast<std::size_t>(above) * ns + i] -
-        this->Phase[static_cast<std::size_t>(below) * ns + i];
-      this->PhaseAcross[static_cast<std::size_t>(j) * ns + i] = span > 0.0 ? static_cast<float>(difference / span) : 0.0f;
+      const double difference =
+        this->Phase[static_cast<std::size_t>(above) * ns + i] - this->Phase[static_cast<std::size_t>(below) * ns + i];
+      this->PhaseAcross[static_cast<std::size_t>(j) * ns + i] =
+        span > 0.0 ? static_cast<float>(difference / span) : 0.0f;
     }
   }
 }
@@ -93,7 +94,8 @@ void WavePhaseField::sample(double x, double y, double& phase, double& wavenumbe
   auto at = [&](const auto& v)
   {
     const std::size_t r0 = static_cast<std::size_t>(j) * this->NS, r1 = static_cast<std::size_t>(j1) * this->NS;
-    return (1 - fx) * (1 - fy) * v[r0 + i] + fx * (1 - fy) * v[r0 + i1] + (1 - fx) * fy * v[r1 + i] + fx * fy * v[r1 + i1];
+    return (1 - fx) * (1 - fy) * v[r0 + i] + fx * (1 - fy) * v[r0 + i1] + (1 - fx) * fy * v[r1 + i] +
+           fx * fy * v[r1 + i1];
   };
   wavenumber = at(this->Wavenumber);
   const double across = at(this->PhaseAcross);

@@ -57,7 +57,7 @@ struct CubicPair
 
 /// Runs f(query position, velocity scale S, mirror index or -1) for the particle and each of its
 /// wall images; f returns a vector result that is mapped back with S.
-template <class F>
+template<class F>
 void withImages(const float position[3], const SPHParameters& p, F&& f)
 {
   static const float identity[3] = { 1.0f, 1.0f, 1.0f };
@@ -86,8 +86,8 @@ void DFSPHSolver::start(SPHSolver& sim)
   sim.computeAccelerations(false);
 }
 
-void DFSPHSolver::permute(
-  SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch, int threads)
+void DFSPHSolver::permute(SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
+                          int threads)
 {
   // DFSPH sorts in the middle of a step: the accelerations summed so far and the warm starts move
   // with their particles.
@@ -104,8 +104,8 @@ void DFSPHSolver::permute(
 std::size_t DFSPHSolver::bytes() const
 {
   std::size_t total = this->NeighbourCount.capacity() * sizeof(std::uint16_t);
-  for (const auto* a : { &this->Factor, &this->DensityRate, &this->Stiffness, &this->DensityStiffness,
-         &this->DivergenceStiffness })
+  for (const auto* a :
+       { &this->Factor, &this->DensityRate, &this->Stiffness, &this->DensityStiffness, &this->DivergenceStiffness })
   {
     total += a->capacity() * sizeof(float);
   }
@@ -121,46 +121,48 @@ void DFSPHSolver::computeDensityAndFactor(SPHSolver& sim)
   this->NeighbourCount.resize(n);
   const CubicPair w(p.smoothingLength);
   const float m = p.particleMass;
-  forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p), {},
+  forEachParticleByCell(
+    sim.Grid, s, p.smoothingLength, threadCount(p), {},
     [&](CandidateBuffer& c, std::uint32_t i)
     {
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
       float rho = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f, squares = 0.0f;
       unsigned neighbours = 0;
       withImages(position, p,
-        [&](const float q[3], const float scale[3])
-        {
-          const std::uint32_t count = c.findHits(q, w.h2);
-          neighbours += count;
-          const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
-          const std::uint32_t* hits = c.hits.data();
-          float sr = 0.0f, sx = 0.0f, sy = 0.0f, sz = 0.0f, ss = 0.0f;
+                 [&](const float q[3], const float scale[3])
+                 {
+                   const std::uint32_t count = c.findHits(q, w.h2);
+                   neighbours += count;
+                   const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
+                   const std::uint32_t* hits = c.hits.data();
+                   float sr = 0.0f, sx = 0.0f, sy = 0.0f, sz = 0.0f, ss = 0.0f;
 #pragma omp simd reduction(+ : sr, sx, sy, sz, ss)
-          for (std::uint32_t k = 0; k < count; ++k)
-          {
-            const std::uint32_t j = hits[k];
-            const float r = std::sqrt(r2[j]);
-            const float q01 = r * w.inverseH;
-            sr += w.value(r, q01);
-            const float g = w.gradientFactor(r, q01);
-            const float dx = g * (q[0] - px[j]), dy = g * (q[1] - py[j]), dz = g * (q[2] - pz[j]);
-            sx += dx;
-            sy += dy;
-            sz += dz;
-            ss += dx * dx + dy * dy + dz * dz;
-          }
-          rho += sr;
-          gx += scale[0] * sx;
-          gy += scale[1] * sy;
-          gz += scale[2] * sz;
-          squares += ss;
-        });
+                   for (std::uint32_t k = 0; k < count; ++k)
+                   {
+                     const std::uint32_t j = hits[k];
+                     const float r = std::sqrt(r2[j]);
+                     const float q01 = r * w.inverseH;
+                     sr += w.value(r, q01);
+                     const float g = w.gradientFactor(r, q01);
+                     const float dx = g * (q[0] - px[j]), dy = g * (q[1] - py[j]), dz = g * (q[2] - pz[j]);
+                     sx += dx;
+                     sy += dy;
+                     sz += dz;
+                     ss += dx * dx + dy * dy + dz * dz;
+                   }
+                   rho += sr;
+                   gx += scale[0] * sx;
+                   gy += scale[1] * sy;
+                   gz += scale[2] * sz;
+                   squares += ss;
+                 });
       rho *= m;
       s.density[i] = rho;
       // alpha_i = rho_i / (|sum_j m grad W_ij|^2 + sum_j |m grad W_ij|^2); an isolated particle has
       // no gradient to correct with and gets 0.
       const float denominator = m * m * (gx * gx + gy * gy + gz * gz + squares);
-      this->Factor[i] = denominator > 1e-12f * rho * rho / (p.smoothingLength * p.smoothingLength) ? rho / denominator : 0.0f;
+      this->Factor[i] =
+        denominator > 1e-12f * rho * rho / (p.smoothingLength * p.smoothingLength) ? rho / denominator : 0.0f;
       this->NeighbourCount[i] = static_cast<std::uint16_t>(std::min(neighbours, 65535u));
     });
 }
@@ -172,32 +174,34 @@ void DFSPHSolver::computeDensityRate(SPHSolver& sim)
   this->DensityRate.resize(s.size());
   const CubicPair w(p.smoothingLength);
   const float m = p.particleMass;
-  forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p), { s.vx.data(), s.vy.data(), s.vz.data() },
+  forEachParticleByCell(
+    sim.Grid, s, p.smoothingLength, threadCount(p), { s.vx.data(), s.vy.data(), s.vz.data() },
     [&](CandidateBuffer& c, std::uint32_t i)
     {
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
       const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
       float rate = 0.0f;
       withImages(position, p,
-        [&](const float q[3], const float scale[3])
-        {
-          // An image moves with the mirrored velocity; the scalar sum needs no mapping back.
-          const float v[3] = { scale[0] * velocity[0], scale[1] * velocity[1], scale[2] * velocity[2] };
-          const std::uint32_t count = c.findHits(q, w.h2);
-          const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
-          const float *vx = c.channel[0].data(), *vy = c.channel[1].data(), *vz = c.channel[2].data();
-          const std::uint32_t* hits = c.hits.data();
-          float sum = 0.0f;
+                 [&](const float q[3], const float scale[3])
+                 {
+                   // An image moves with the mirrored velocity; the scalar sum needs no mapping back.
+                   const float v[3] = { scale[0] * velocity[0], scale[1] * velocity[1], scale[2] * velocity[2] };
+                   const std::uint32_t count = c.findHits(q, w.h2);
+                   const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
+                   const float *vx = c.channel[0].data(), *vy = c.channel[1].data(), *vz = c.channel[2].data();
+                   const std::uint32_t* hits = c.hits.data();
+                   float sum = 0.0f;
 #pragma omp simd reduction(+ : sum)
-          for (std::uint32_t k = 0; k < count; ++k)
-          {
-            const std::uint32_t j = hits[k];
-            const float r = std::sqrt(r2[j]);
-            const float g = w.gradientFactor(r, r * w.inverseH);
-            sum += g * ((q[0] - px[j]) * (v[0] - vx[j]) + (q[1] - py[j]) * (v[1] - vy[j]) + (q[2] - pz[j]) * (v[2] - vz[j]));
-          }
-          rate += sum;
-        });
+                   for (std::uint32_t k = 0; k < count; ++k)
+                   {
+                     const std::uint32_t j = hits[k];
+                     const float r = std::sqrt(r2[j]);
+                     const float g = w.gradientFactor(r, r * w.inverseH);
+                     sum += g * ((q[0] - px[j]) * (v[0] - vx[j]) + (q[1] - py[j]) * (v[1] - vy[j]) +
+                                 (q[2] - pz[j]) * (v[2] - vz[j]));
+                   }
+                   rate += sum;
+                 });
       this->DensityRate[i] = m * rate;
     });
 }
@@ -212,42 +216,43 @@ void DFSPHSolver::applyPressureImpulse(SPHSolver& sim, float dt)
   const float m = p.particleMass * this->GradientCorrection;
   // Velocities change in place: the pass reads the stiffnesses only, never the velocities.
   forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p), { this->Stiffness.data() },
-    [&](CandidateBuffer& c, std::uint32_t i)
-    {
-      const float position[3] = { s.x[i], s.y[i], s.z[i] };
-      const float ki = this->Stiffness[i];
-      float f[3] = { 0.0f, 0.0f, 0.0f };
-      withImages(position, p,
-        [&](const float q[3], const float scale[3])
-        {
-          const std::uint32_t count = c.findHits(q, w.h2);
-          const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
-          const float* kj = c.channel[0].data();
-          const std::uint32_t* hits = c.hits.data();
-          float fx = 0.0f, fy = 0.0f, fz = 0.0f;
+                        [&](CandidateBuffer& c, std::uint32_t i)
+                        {
+                          const float position[3] = { s.x[i], s.y[i], s.z[i] };
+                          const float ki = this->Stiffness[i];
+                          float f[3] = { 0.0f, 0.0f, 0.0f };
+                          withImages(position, p,
+                                     [&](const float q[3], const float scale[3])
+                                     {
+                                       const std::uint32_t count = c.findHits(q, w.h2);
+                                       const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(),
+                                                   *r2 = c.distanceSquared.data();
+                                       const float* kj = c.channel[0].data();
+                                       const std::uint32_t* hits = c.hits.data();
+                                       float fx = 0.0f, fy = 0.0f, fz = 0.0f;
 #pragma omp simd reduction(+ : fx, fy, fz)
-          for (std::uint32_t k = 0; k < count; ++k)
-          {
-            const std::uint32_t j = hits[k];
-            const float r = std::sqrt(r2[j]);
-            const float g = (ki + kj[j]) * w.gradientFactor(r, r * w.inverseH);
-            fx += g * (q[0] - px[j]);
-            fy += g * (q[1] - py[j]);
-            fz += g * (q[2] - pz[j]);
-          }
-          f[0] += scale[0] * fx;
-          f[1] += scale[1] * fy;
-          f[2] += scale[2] * fz;
-        });
-      // a_i = -sum_j m (k_i + k_j) grad W_ij, k = p / rho^2
-      const float a[3] = { -m * f[0], -m * f[1], -m * f[2] };
-      s.vx[i] += dt * a[0];
-      s.vy[i] += dt * a[1];
-      s.vz[i] += dt * a[2];
-      s.ax[i] += a[0];
-      s.ay[i] += a[1];
-      s.az[i] += a[2];
-    });
+                                       for (std::uint32_t k = 0; k < count; ++k)
+                                       {
+                                         const std::uint32_t j = hits[k];
+                                         const float r = std::sqrt(r2[j]);
+                                         const float g = (ki + kj[j]) * w.gradientFactor(r, r * w.inverseH);
+                                         fx += g * (q[0] - px[j]);
+                                         fy += g * (q[1] - py[j]);
+                                         fz += g * (q[2] - pz[j]);
+                                       }
+                                       f[0] += scale[0] * fx;
+                                       f[1] += scale[1] * fy;
+                                       f[2] += scale[2] * fz;
+                                     });
+                          // a_i = -sum_j m (k_i + k_j) grad W_ij, k = p / rho^2
+                          const float a[3] = { -m * f[0], -m * f[1], -m * f[2] };
+                          s.vx[i] += dt * a[0];
+                          s.vy[i] += dt * a[1];
+                          s.vz[i] += dt * a[2];
+                          s.ax[i] += a[0];
+                          s.ay[i] += a[1];
+                          s.az[i] += a[2];
+                        });
 }
 
 void DFSPHSolver::warmStart(SPHSolver& sim, std::vector<float>& accumulated, float dt)

@@ -27,8 +27,8 @@ struct PairSums
 {
   float force[3] = { 0, 0, 0 };   // pressure (+ viscosity), per unit of the query's density
   float viscous[3] = { 0, 0, 0 }; // viscosity when summed apart, per unit of the query's density
-  float normal[3] = { 0, 0, 0 }; // Σ (h² − r²)² r_ij / rho_j       (colour gradient, unscaled)
-  float laplacian = 0.0f;        // Σ (h² − r²)(3h² − 7r²) / rho_j  (colour Laplacian, unscaled)
+  float normal[3] = { 0, 0, 0 };  // Σ (h² − r²)² r_ij / rho_j       (colour gradient, unscaled)
+  float laplacian = 0.0f;         // Σ (h² − r²)(3h² − 7r²) / rho_j  (colour Laplacian, unscaled)
 };
 
 // Candidate channels of the force pass.
@@ -48,7 +48,7 @@ enum Channel
 /// Each term is compiled in only when its flag is set, so a scene without it does not pay for it.
 /// The viscous sum goes into `force` unless SeparateViscous (no-slip wall images map it back
 /// differently from the pressure sum).
-template <bool Pressure, bool Viscosity, bool Tension, bool SeparateViscous = false>
+template<bool Pressure, bool Viscosity, bool Tension, bool SeparateViscous = false>
 PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float pi, const PairConstants& k)
 {
   const std::uint32_t count = c.findHits(q, k.h2);
@@ -117,7 +117,7 @@ PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float 
   return sums;
 }
 
-template <bool Pressure, bool Viscosity, bool Tension>
+template<bool Pressure, bool Viscosity, bool Tension>
 void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const float* inverseDensity)
 {
   const SpikyKernel spiky(p.smoothingLength);
@@ -138,8 +138,8 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
   const float threshold = p.surfaceThreshold / p.smoothingLength;
   const float sigma = p.surfaceTension;
 
-  forEachParticleByCell(grid, s, k.h, detail::threadCount(p),
-    { s.vx.data(), s.vy.data(), s.vz.data(), s.pressure.data(), inverseDensity },
+  forEachParticleByCell(
+    grid, s, k.h, detail::threadCount(p), { s.vx.data(), s.vy.data(), s.vz.data(), s.pressure.data(), inverseDensity },
     [&](CandidateBuffer& candidates, std::uint32_t i)
     {
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
@@ -161,8 +161,8 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
         }
         // Free-slip images (S = R) keep the one combined sum; no-slip ones sum viscosity apart.
         const PairSums g = mirrors.noSlip(m)
-          ? pairSums<Pressure, Viscosity, Tension, true>(candidates, image, imageVelocity, pi, k)
-          : pairSums<Pressure, Viscosity, Tension>(candidates, image, imageVelocity, pi, k);
+                             ? pairSums<Pressure, Viscosity, Tension, true>(candidates, image, imageVelocity, pi, k)
+                             : pairSums<Pressure, Viscosity, Tension>(candidates, image, imageVelocity, pi, k);
         for (int a = 0; a < 3; ++a)
         {
           sum.force[a] += mirrors.scale[m][a] * g.force[a];
@@ -173,7 +173,8 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
       }
       const float inv = inverseDensity[i];
       float a[3] = { (sum.force[0] + sum.viscous[0]) * inv + p.gravity[0],
-        (sum.force[1] + sum.viscous[1]) * inv + p.gravity[1], (sum.force[2] + sum.viscous[2]) * inv + p.gravity[2] };
+                     (sum.force[1] + sum.viscous[1]) * inv + p.gravity[1],
+                     (sum.force[2] + sum.viscous[2]) * inv + p.gravity[2] };
       if constexpr (Tension)
       {
         // Müller's surface force density -sigma lap(c) n / |n|, only where |n| marks a surface.
@@ -195,7 +196,7 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
 }
 
 using Pass = void (*)(const NeighbourGrid&, ParticleState&, const SPHParameters&, const float*);
-template <bool Pressure>
+template<bool Pressure>
 Pass choosePass(bool viscosity, bool tension)
 {
   if (viscosity)

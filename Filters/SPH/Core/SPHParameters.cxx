@@ -82,8 +82,8 @@ std::string SPHParameters::validate() const
     const float hi = domainBounds[2 * a + 1];
     if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi))
     {
-      return "DomainBounds must give min < max on every axis (axis " + std::to_string(a) + ": " +
-        std::to_string(lo) + " .. " + std::to_string(hi) + ")";
+      return "DomainBounds must give min < max on every axis (axis " + std::to_string(a) + ": " + std::to_string(lo) +
+             " .. " + std::to_string(hi) + ")";
     }
   }
   if (!std::isfinite(wallRestitution) || wallRestitution < 0.0f || wallRestitution > 1.0f)
@@ -93,7 +93,7 @@ std::string SPHParameters::validate() const
   if (!positiveFinite(wallKinematicViscosity) || wallKinematicViscosity > 1.0f)
   {
     return "WallKinematicViscosity must lie in (0, 1] m^2/s (water: 1e-6), got " +
-      std::to_string(wallKinematicViscosity);
+           std::to_string(wallKinematicViscosity);
   }
   if (!std::isfinite(boundaryDamping) || boundaryDamping < 0.0f || boundaryDamping > 1.0f)
   {
@@ -108,11 +108,12 @@ std::string SPHParameters::validate() const
     // The Jacobi pressure solves use a diagonal factor that is tight enough at h = 2 spacings; with
     // wider kernels they overshoot and diverge within a step (h = 3 spacings blows up at once, and
     // 2.5 already leaves a resting column 20 % off hydrostatic).
-    const float ratio = smoothingLength / latticeSpacingForMass(particleMass, smoothingLength, restDensity, densityKernel());
+    const float ratio =
+      smoothingLength / latticeSpacingForMass(particleMass, smoothingLength, restDensity, densityKernel());
     if (!(ratio <= 2.25f))
     {
       return "DFSPH needs SmoothingLength of at most 2.25 particle spacings (2 is the default), got " +
-        std::to_string(ratio) + "; lower it or use WCSPH";
+             std::to_string(ratio) + "; lower it or use WCSPH";
     }
   }
   return {};
@@ -180,8 +181,8 @@ float latticeGradientCorrection(float spacing, float smoothingLength, DensityKer
         sum += kernel == DensityKernel::Poly6 ? poly6.valueFromSquared(rf * rf) : cubic.value(rf);
         if (r > 0.0)
         {
-          const double dWdr = kernel == DensityKernel::Poly6 ? poly6.gradientFactorFromSquared(rf * rf) * r
-                                                             : cubic.radialDerivative(rf);
+          const double dWdr =
+            kernel == DensityKernel::Poly6 ? poly6.gradientFactorFromSquared(rf * rf) * r : cubic.radialDerivative(rf);
           const double dz = double(k) * spacing;
           moment -= dWdr / r * dz * dz; // -(dW/dz)(z_i - z_j) with z_i - z_j = -dz
         }

@@ -15,7 +15,8 @@ namespace parafluid::sph
 using detail::permute;
 using detail::threadCount;
 
-SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial, std::shared_ptr<const TriangleBoundary> boundary)
+SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial,
+                     std::shared_ptr<const TriangleBoundary> boundary)
   : Parameters(parameters)
   , State(std::move(initial))
   , Boundary(std::move(boundary))
@@ -59,11 +60,11 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial, std
   for (std::size_t i = 0; i < n; ++i)
   {
     const float s = this->State.x[i] + this->State.y[i] + this->State.z[i] + this->State.vx[i] + this->State.vy[i] +
-      this->State.vz[i];
+                    this->State.vz[i];
     if (!std::isfinite(s))
     {
       throw std::invalid_argument("SPH: particle " + std::to_string(i) + " (id " + std::to_string(this->State.id[i]) +
-        ") has a NaN or infinite position or velocity");
+                                  ") has a NaN or infinite position or velocity");
     }
   }
   // Particles that start outside the domain are reflected inside, as the walls would do.
@@ -113,8 +114,8 @@ std::int64_t SPHSolver::advance(double duration, const std::function<bool(double
     if (dt < smallest && dt < remaining)
     {
       throw std::runtime_error("SPH became unstable at t = " + std::to_string(this->Time) +
-        " s: the adaptive time step fell to " + std::to_string(dt) +
-        " s; lower GasStiffness or raise Viscosity");
+                               " s: the adaptive time step fell to " + std::to_string(dt) +
+                               " s; lower GasStiffness or raise Viscosity");
     }
     if (progress && taken % 8 == 0 && !progress(duration > 0.0 ? 1.0 - (end - this->Time) / duration : 1.0))
     {
@@ -144,7 +145,8 @@ double SPHSolver::step(double maxStep)
   catch (const std::invalid_argument&)
   {
     // The neighbour grid refuses non-finite positions: the step blew up before the check below.
-    throw std::runtime_error("SPH became unstable at step " + std::to_string(this->Steps) +
+    throw std::runtime_error(
+      "SPH became unstable at step " + std::to_string(this->Steps) +
       " (non-finite positions): turn on AdaptiveTimeStep or reduce TimeStep or GasStiffness, or raise Viscosity");
   }
   ++this->Steps;
@@ -246,7 +248,8 @@ void SPHSolver::checkFinite() const
   }
   if (!std::isfinite(total))
   {
-    throw std::runtime_error("SPH became unstable at step " + std::to_string(this->Steps) +
+    throw std::runtime_error(
+      "SPH became unstable at step " + std::to_string(this->Steps) +
       " (non-finite velocity): turn on AdaptiveTimeStep or reduce TimeStep or GasStiffness, or raise Viscosity");
   }
 }
@@ -380,11 +383,11 @@ std::vector<std::uint32_t> SPHSolver::neighbourCounts() const
   std::vector<std::uint32_t> counts(s.size(), 0);
   const float h2 = this->Parameters.smoothingLength * this->Parameters.smoothingLength;
   detail::forEachParticleByCell(this->Grid, s, this->Parameters.smoothingLength, threadCount(this->Parameters), {},
-    [&](detail::CandidateBuffer& candidates, std::uint32_t i)
-    {
-      const float q[3] = { s.x[i], s.y[i], s.z[i] };
-      counts[i] = candidates.findHits(q, h2) - 1; // the particle itself is a candidate
-    });
+                                [&](detail::CandidateBuffer& candidates, std::uint32_t i)
+                                {
+                                  const float q[3] = { s.x[i], s.y[i], s.z[i] };
+                                  counts[i] = candidates.findHits(q, h2) - 1; // the particle itself is a candidate
+                                });
   return counts;
 }
 
@@ -399,40 +402,41 @@ std::vector<float> SPHSolver::smoothedPressure() const
   }
   const float h2 = p.smoothingLength * p.smoothingLength;
   detail::forEachParticleByCell(this->Grid, s, p.smoothingLength, threadCount(p), { volume.data(), s.pressure.data() },
-    [&](detail::CandidateBuffer& c, std::uint32_t i)
-    {
-      const float position[3] = { s.x[i], s.y[i], s.z[i] };
-      float weighted = 0.0f, weights = 0.0f;
-      auto accumulate = [&](const float q[3])
-      {
-        const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data();
-        const float *v = c.channel[0].data(), *pj = c.channel[1].data();
-        float a = 0.0f, b = 0.0f;
+                                [&](detail::CandidateBuffer& c, std::uint32_t i)
+                                {
+                                  const float position[3] = { s.x[i], s.y[i], s.z[i] };
+                                  float weighted = 0.0f, weights = 0.0f;
+                                  auto accumulate = [&](const float q[3])
+                                  {
+                                    const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data();
+                                    const float *v = c.channel[0].data(), *pj = c.channel[1].data();
+                                    float a = 0.0f, b = 0.0f;
 #pragma omp simd reduction(+ : a, b)
-        for (std::uint32_t j = 0; j < c.size; ++j)
-        {
-          const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
-          const float d = std::max(h2 - (dx * dx + dy * dy + dz * dz), 0.0f);
-          const float w = v[j] * d * d * d; // poly6 without its constant, which cancels
-          a += w * pj[j];
-          b += w;
-        }
-        weighted += a;
-        weights += b;
-      };
-      accumulate(position);
-      const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, p.smoothingLength);
-      for (int m = 0; m < mirrors.count; ++m)
-      {
-        float image[3];
-        for (int a = 0; a < 3; ++a)
-        {
-          image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
-        }
-        accumulate(image);
-      }
-      smoothed[i] = weights > 0.0f ? weighted / weights : s.pressure[i];
-    });
+                                    for (std::uint32_t j = 0; j < c.size; ++j)
+                                    {
+                                      const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
+                                      const float d = std::max(h2 - (dx * dx + dy * dy + dz * dz), 0.0f);
+                                      const float w = v[j] * d * d * d; // poly6 without its constant, which cancels
+                                      a += w * pj[j];
+                                      b += w;
+                                    }
+                                    weighted += a;
+                                    weights += b;
+                                  };
+                                  accumulate(position);
+                                  const WallMirrors mirrors =
+                                    WallMirrors::around(position, p.domainBounds, p.smoothingLength);
+                                  for (int m = 0; m < mirrors.count; ++m)
+                                  {
+                                    float image[3];
+                                    for (int a = 0; a < 3; ++a)
+                                    {
+                                      image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
+                                    }
+                                    accumulate(image);
+                                  }
+                                  smoothed[i] = weights > 0.0f ? weighted / weights : s.pressure[i];
+                                });
   return smoothed;
 }
 
@@ -445,7 +449,7 @@ double SPHSolver::kineticEnergy() const
   for (std::int64_t i = 0; i < n; ++i)
   {
     sum += static_cast<double>(s.vx[i]) * s.vx[i] + static_cast<double>(s.vy[i]) * s.vy[i] +
-      static_cast<double>(s.vz[i]) * s.vz[i];
+           static_cast<double>(s.vz[i]) * s.vz[i];
   }
   return 0.5 * this->Parameters.particleMass * sum;
 }
@@ -458,8 +462,9 @@ double SPHSolver::bytesPerParticle() const
     return 0.0;
   }
   std::size_t total = this->State.bytes() + this->ScratchFloat.capacity() * sizeof(float) +
-    this->ScratchId.capacity() * sizeof(std::int64_t) + this->ScratchIndex.capacity() * sizeof(std::uint32_t) +
-    this->InverseDensity.capacity() * sizeof(float) + this->Grid.bytes() + this->Pressure->bytes();
+                      this->ScratchId.capacity() * sizeof(std::int64_t) +
+                      this->ScratchIndex.capacity() * sizeof(std::uint32_t) +
+                      this->InverseDensity.capacity() * sizeof(float) + this->Grid.bytes() + this->Pressure->bytes();
   return static_cast<double>(total) / static_cast<double>(n);
 }
 } // namespace parafluid::sph

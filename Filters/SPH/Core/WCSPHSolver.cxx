@@ -54,25 +54,26 @@ void WCSPHSolver::computeDensityAndPressure(SPHSolver& sim)
   const float rho0 = p.restDensity;
   const bool clamp = p.clampNegativePressure;
   forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p), {},
-    [&](const CandidateBuffer& candidates, std::uint32_t i)
-    {
-      const float position[3] = { s.x[i], s.y[i], s.z[i] };
-      float sum = candidates.poly6Sum(position, w.h2); // includes the particle itself (r = 0)
-      // Near walls the mirrored fluid fills the cut-off neighbourhood: |x_i - R x_j| = |R x_i - x_j|.
-      const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, p.smoothingLength);
-      for (int m = 0; m < mirrors.count; ++m)
-      {
-        float image[3];
-        for (int a = 0; a < 3; ++a)
-        {
-          image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
-        }
-        sum += candidates.poly6Sum(image, w.h2);
-      }
-      const float rho = densityScale * sum;
-      s.density[i] = rho;
-      const float pressure = k * (rho - rho0);
-      s.pressure[i] = clamp ? std::max(pressure, 0.0f) : pressure;
-    });
+                        [&](const CandidateBuffer& candidates, std::uint32_t i)
+                        {
+                          const float position[3] = { s.x[i], s.y[i], s.z[i] };
+                          float sum = candidates.poly6Sum(position, w.h2); // includes the particle itself (r = 0)
+                          // Near walls the mirrored fluid fills the cut-off neighbourhood: |x_i - R x_j| = |R x_i -
+                          // x_j|.
+                          const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, p.smoothingLength);
+                          for (int m = 0; m < mirrors.count; ++m)
+                          {
+                            float image[3];
+                            for (int a = 0; a < 3; ++a)
+                            {
+                              image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
+                            }
+                            sum += candidates.poly6Sum(image, w.h2);
+                          }
+                          const float rho = densityScale * sum;
+                          s.density[i] = rho;
+                          const float pressure = k * (rho - rho0);
+                          s.pressure[i] = clamp ? std::max(pressure, 0.0f) : pressure;
+                        });
 }
 } // namespace parafluid::sph

@@ -121,7 +121,8 @@ void CarpetSurface::advance(const float* xyz, std::size_t n, double dt, double f
   while (h < hits.size() || c < this->Cells.size())
   {
     const std::uint32_t hitCode = h < hits.size() ? hits[h].first : std::numeric_limits<std::uint32_t>::max();
-    const std::uint32_t cellCode = c < this->Cells.size() ? this->Cells[c].code : std::numeric_limits<std::uint32_t>::max();
+    const std::uint32_t cellCode =
+      c < this->Cells.size() ? this->Cells[c].code : std::numeric_limits<std::uint32_t>::max();
     if (h < hits.size() && hitCode <= cellCode)
     {
       float top = hits[h].second;
@@ -211,7 +212,8 @@ double CarpetSurface::meanHeight(int level, int i, int j) const
   }
   const std::uint32_t code = mortonCode(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j));
   const auto& nodes = this->Levels[level];
-  const auto it = std::lower_bound(nodes.begin(), nodes.end(), code, [](const Node& a, std::uint32_t c) { return a.code < c; });
+  const auto it =
+    std::lower_bound(nodes.begin(), nodes.end(), code, [](const Node& a, std::uint32_t c) { return a.code < c; });
   return (it != nodes.end() && it->code == code) ? it->meanHeight : std::numeric_limits<double>::quiet_NaN();
 }
 
@@ -262,7 +264,8 @@ SurfaceMesh CarpetSurface::mesh(std::vector<float>* depth, std::size_t* visitedN
   std::unordered_map<std::uint64_t, std::uint32_t> corners;
   corners.reserve(2 * emitted.size());
   const std::uint64_t stride = static_cast<std::uint64_t>(this->N) + 1;
-  auto cornerVertex = [&](std::uint32_t ci, std::uint32_t cj) {
+  auto cornerVertex = [&](std::uint32_t ci, std::uint32_t cj)
+  {
     const std::uint64_t key = cj * stride + ci;
     const auto found = corners.find(key);
     if (found != corners.end())
@@ -292,7 +295,8 @@ SurfaceMesh CarpetSurface::mesh(std::vector<float>* depth, std::size_t* visitedN
     }
     const std::uint32_t v = static_cast<std::uint32_t>(out.vertexCount());
     const float z = static_cast<float>(height / wet);
-    out.points.insert(out.points.end(), { static_cast<float>(this->X0 + ci * this->DX), static_cast<float>(this->Y0 + cj * this->DY), z });
+    out.points.insert(out.points.end(), { static_cast<float>(this->X0 + ci * this->DX),
+                                          static_cast<float>(this->Y0 + cj * this->DY), z });
     if (depth)
     {
       depth->push_back(static_cast<float>(z - ground / cells));
@@ -320,7 +324,8 @@ SurfaceMesh CarpetSurface::mesh(std::vector<float>* depth, std::size_t* visitedN
       e1[d] = out.points[3 * b + d] - out.points[3 * a + d];
       e2[d] = out.points[3 * c + d] - out.points[3 * a + d];
     }
-    const float nrm[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0] };
+    const float nrm[3] = { e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                           e1[0] * e2[1] - e1[1] * e2[0] };
     for (std::uint32_t v : { a, b, c })
     {
       for (int d = 0; d < 3; ++d)

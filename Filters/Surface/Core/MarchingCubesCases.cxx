@@ -57,7 +57,8 @@ MarchingCubesCase buildCase(int pattern)
         inside[k] = ((pattern >> corner[k]) & 1) != 0;
       }
       // The cube edge between face corners k and k+1.
-      auto faceEdge = [&](int k) {
+      auto faceEdge = [&](int k)
+      {
         const int k1 = (k + 1) % 4;
         const int a = corner[k], b = corner[k1];
         const int diff = a ^ b;

@@ -46,7 +46,8 @@ std::string validate(const ParticleSurfaceParameters& p)
   return why.str();
 }
 
-SurfaceMesh ParticleSurface::extract(const float* xyz, std::size_t n, const ParticleSurfaceParameters& p, const Progress& progress)
+SurfaceMesh ParticleSurface::extract(const float* xyz, std::size_t n, const ParticleSurfaceParameters& p,
+                                     const Progress& progress)
 {
   const std::string problem = validate(p);
   if (!problem.empty())
@@ -81,8 +82,8 @@ SurfaceMesh ParticleSurface::extract(const float* xyz, std::size_t n, const Part
   if (p.smoothingIterations > 0)
   {
     // Neighbour lists (two uint32 per triangle corner, then unique) and the second point buffer.
-    const std::size_t smoothing = mesh.triangles.size() * 2 * sizeof(std::uint32_t) + mesh.points.size() * sizeof(float) +
-      (mesh.vertexCount() + 1) * sizeof(std::uint32_t);
+    const std::size_t smoothing = mesh.triangles.size() * 2 * sizeof(std::uint32_t) +
+                                  mesh.points.size() * sizeof(float) + (mesh.vertexCount() + 1) * sizeof(std::uint32_t);
     this->Statistics.workingBytes = std::max(this->Statistics.workingBytes, this->Field.bytes() + smoothing);
   }
   if (progress)
@@ -114,19 +115,22 @@ std::vector<float> ParticleSurface::interpolate(const SurfaceMesh& mesh, const f
     for (long long v = 0; v < count; ++v)
     {
       const double x[3] = { (mesh.points[3 * v] - origin[0]) / c, (mesh.points[3 * v + 1] - origin[1]) / c,
-        (mesh.points[3 * v + 2] - origin[2]) / c };
+                            (mesh.points[3 * v + 2] - origin[2]) / c };
       std::fill(sum.begin(), sum.end(), 0.0);
       double weight = 0.0;
-      this->Field.forEachParticleNear(x, [&](std::uint32_t k, double, double, double, double s2) {
-        const double t = r2 - s2;
-        const double w = t * t * t; // poly6, unnormalised: the normalisation cancels
-        weight += w;
-        const float* value = values + static_cast<std::size_t>(sortedIndex[k]) * components;
-        for (int comp = 0; comp < components; ++comp)
-        {
-          sum[comp] += w * value[comp];
-        }
-      });
+      this->Field.forEachParticleNear(x,
+                                      [&](std::uint32_t k, double, double, double, double s2)
+                                      {
+                                        const double t = r2 - s2;
+                                        const double w = t * t * t; // poly6, unnormalised: the normalisation cancels
+                                        weight += w;
+                                        const float* value =
+                                          values + static_cast<std::size_t>(sortedIndex[k]) * components;
+                                        for (int comp = 0; comp < components; ++comp)
+                                        {
+                                          sum[comp] += w * value[comp];
+                                        }
+                                      });
       if (weight > 0.0)
       {
         for (int comp = 0; comp < components; ++comp)

@@ -1,5 +1,5 @@
-#include "parafluid/common/MathConstants.h"
 #include "parafluid/surface/SparseDensityField.h"
+#include "parafluid/common/MathConstants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +27,7 @@ struct KeyedParticle
   bool operator<(const KeyedParticle& o) const { return key < o.key || (key == o.key && index < o.index); }
 };
 
-template <class It>
+template<class It>
 void sortRange(It first, It last)
 {
 #ifdef __GLIBCXX__
@@ -71,14 +71,16 @@ double SparseDensityField::evaluate(const double p[3], double gradient[3]) const
   const double x[3] = { (p[0] - this->Origin[0]) / c, (p[1] - this->Origin[1]) / c, (p[2] - this->Origin[2]) / c };
   const double rho = this->KernelRadius / c;
   double sum = 0.0, g[3] = { 0.0, 0.0, 0.0 };
-  this->forEachParticleNear(x, [&](std::uint32_t, double ex, double ey, double ez, double s2) {
-    const double t = rho * rho - s2;
-    sum += t * t * t;
-    // d/dx (rho^2 - |x_j - x|^2)^3 = 6 t^2 (x_j - x)
-    g[0] += 6.0 * t * t * ex;
-    g[1] += 6.0 * t * t * ey;
-    g[2] += 6.0 * t * t * ez;
-  });
+  this->forEachParticleNear(x,
+                            [&](std::uint32_t, double ex, double ey, double ez, double s2)
+                            {
+                              const double t = rho * rho - s2;
+                              sum += t * t * t;
+                              // d/dx (rho^2 - |x_j - x|^2)^3 = 6 t^2 (x_j - x)
+                              g[0] += 6.0 * t * t * ex;
+                              g[1] += 6.0 * t * t * ey;
+                              g[2] += 6.0 * t * t * ez;
+                            });
   const double scale = kernelScale(c, this->KernelRadius, this->ParticleVolume);
   for (int a = 0; a < 3; ++a)
   {
@@ -87,11 +89,11 @@ double SparseDensityField::evaluate(const double p[3], double gradient[3]) const
   return scale * sum;
 }
 
-void SparseDensityField::build(
-  const float* xyz, std::size_t n, double cellSize, double kernelRadius, double particleVolume, double isoValue)
+void SparseDensityField::build(const float* xyz, std::size_t n, double cellSize, double kernelRadius,
+                               double particleVolume, double isoValue)
 {
   if (!(cellSize > 0.0) || !(kernelRadius > 0.0) || !(particleVolume > 0.0) || !std::isfinite(cellSize) ||
-    !std::isfinite(kernelRadius) || !std::isfinite(particleVolume))
+      !std::isfinite(kernelRadius) || !std::isfinite(particleVolume))
   {
     throw std::invalid_argument("cell size, kernel radius and particle volume must be positive and finite");
   }
@@ -128,7 +130,7 @@ void SparseDensityField::build(
 void SparseDensityField::sortParticles(const float* xyz, std::size_t n)
 {
   double lo[3] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-    std::numeric_limits<double>::max() };
+                   std::numeric_limits<double>::max() };
   double hi[3] = { -lo[0], -lo[1], -lo[2] };
   bool finite = true;
   const long long count = static_cast<long long>(n);
@@ -155,8 +157,8 @@ void SparseDensityField::sortParticles(const float* xyz, std::size_t n)
     this->Origin[a] = lo[a] - margin;
     if ((hi[a] - this->Origin[a] + margin) / blockEdge + 2 >= static_cast<double>(AxisLimit))
     {
-      throw std::invalid_argument("the particles span " + std::to_string(hi[a] - lo[a]) +
-        " m, too many cells of " + std::to_string(this->CellSize) + " m to index; raise the cell size");
+      throw std::invalid_argument("the particles span " + std::to_string(hi[a] - lo[a]) + " m, too many cells of " +
+                                  std::to_string(this->CellSize) + " m to index; raise the cell size");
     }
   }
   std::vector<KeyedParticle> keyed(n);
@@ -216,7 +218,7 @@ void SparseDensityField::allocateBlocks()
   for (long long o = 0; o < nOcc; ++o)
   {
     float lo[3] = { std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
-      std::numeric_limits<float>::max() };
+                    std::numeric_limits<float>::max() };
     float hi[3] = { -lo[0], -lo[1], -lo[2] };
     for (std::uint32_t k = occupiedBegin[o]; k < occupiedBegin[o + 1]; ++k)
     {
@@ -306,7 +308,7 @@ void SparseDensityField::buildHash()
 std::int64_t SparseDensityField::findBlock(int bx, int by, int bz) const
 {
   if (bx < 0 || by < 0 || bz < 0 || bx >= static_cast<int>(AxisLimit) || by >= static_cast<int>(AxisLimit) ||
-    bz >= static_cast<int>(AxisLimit))
+      bz >= static_cast<int>(AxisLimit))
   {
     return -1;
   }
@@ -397,18 +399,21 @@ void SparseDensityField::splatBlock(std::size_t b, float* acc) const
   // The block's first point, in cells from the origin.
   const float base[3] = { static_cast<float>(B * bc[0]), static_cast<float>(B * bc[1]), static_cast<float>(B * bc[2]) };
   const float* cells = this->SortedXYZ.data();
-  this->forEachBlockAround(bc, [&](std::int64_t nb) {
-    const std::uint32_t end = this->ParticleBegin[nb + 1];
-    for (std::uint32_t k = this->ParticleBegin[nb]; k < end; ++k)
+  this->forEachBlockAround(
+    bc,
+    [&](std::int64_t nb)
     {
-      const float l[3] = { cells[3 * k] - base[0], cells[3 * k + 1] - base[1], cells[3 * k + 2] - base[2] };
-      if (l[0] < -rho || l[1] < -rho || l[2] < -rho || l[0] > upper || l[1] > upper || l[2] > upper)
+      const std::uint32_t end = this->ParticleBegin[nb + 1];
+      for (std::uint32_t k = this->ParticleBegin[nb]; k < end; ++k)
       {
-        continue;
+        const float l[3] = { cells[3 * k] - base[0], cells[3 * k + 1] - base[1], cells[3 * k + 2] - base[2] };
+        if (l[0] < -rho || l[1] < -rho || l[2] < -rho || l[0] > upper || l[1] > upper || l[2] > upper)
+        {
+          continue;
+        }
+        splatParticle(acc, l, rho, rho2);
       }
-      splatParticle(acc, l, rho, rho2);
-    }
-  });
+    });
   const float scale = static_cast<float>(kernelScale(this->CellSize, this->KernelRadius, this->ParticleVolume));
   for (int p = 0; p < BlockSize; ++p)
   {
@@ -455,7 +460,8 @@ void SparseDensityField::sampleBlocks(float iso)
   // Pass 2: mark the blocks marching cubes polygonises; it also reads the blocks around each of
   // them, so recompute and keep those.
   std::vector<char> needed(nBlocks, 0);
-  auto side = [&](std::int64_t b) { return b < 0 ? 0 : (this->Maximum[b] <= iso ? 0 : (this->Minimum[b] > iso ? 1 : 2)); };
+  auto side = [&](std::int64_t b)
+  { return b < 0 ? 0 : (this->Maximum[b] <= iso ? 0 : (this->Minimum[b] > iso ? 1 : 2)); };
   this->SurfaceBlock.assign(nBlocks, 0);
 #pragma omp parallel for schedule(dynamic, 64)
   for (long long b = 0; b < count; ++b)
@@ -521,9 +527,10 @@ void SparseDensityField::releaseValues()
 std::size_t SparseDensityField::bytes() const
 {
   return this->Keys.capacity() * sizeof(std::uint64_t) + this->ParticleBegin.capacity() * sizeof(std::uint32_t) +
-    this->Storage.size() * BlockSize * sizeof(float) + this->Storage.capacity() * sizeof(void*) +
-    this->Stored.capacity() * sizeof(float*) + this->SurfaceBlock.capacity() + (this->Minimum.capacity() + this->Maximum.capacity()) * sizeof(float) +
-    this->HashKeys.capacity() * sizeof(std::uint64_t) + this->HashSlots.capacity() * sizeof(std::uint32_t) +
-    this->SortedIndex.capacity() * sizeof(std::uint32_t) + this->SortedXYZ.capacity() * sizeof(float);
+         this->Storage.size() * BlockSize * sizeof(float) + this->Storage.capacity() * sizeof(void*) +
+         this->Stored.capacity() * sizeof(float*) + this->SurfaceBlock.capacity() +
+         (this->Minimum.capacity() + this->Maximum.capacity()) * sizeof(float) +
+         this->HashKeys.capacity() * sizeof(std::uint64_t) + this->HashSlots.capacity() * sizeof(std::uint32_t) +
+         this->SortedIndex.capacity() * sizeof(std::uint32_t) + this->SortedXYZ.capacity() * sizeof(float);
 }
 } // namespace parafluid::surface

@@ -17,7 +17,6 @@ constexpr int BlockSize = SparseDensityField::BlockSize;
 constexpr int P = B + 3;
 constexpr std::uint16_t NoVertex = 0xFFFF;
 
-
 int padded(int i, int j, int k)
 {
   return ((k + 1) * P + (j + 1)) * P + (i + 1);
@@ -77,7 +76,7 @@ int cellCase(const float* v, int i, int j, int k, float iso)
   return pattern;
 }
 
-const int Step[3] = { 1, P, P * P };
+const int Step[3] = { 1, P, P* P };
 
 } // namespace
 
@@ -225,8 +224,9 @@ SurfaceMesh sparseMarchingCubes(const SparseDensityField& field, bool normals, M
       std::size_t starts[8];
       for (int n = 0; n < 8; ++n)
       {
-        const std::int64_t nb = n == 0 ? static_cast<std::int64_t>(b)
-                                       : field.findBlock(bc[0] + (n & 1), bc[1] + ((n >> 1) & 1), bc[2] + ((n >> 2) & 1));
+        const std::int64_t nb = n == 0
+                                  ? static_cast<std::int64_t>(b)
+                                  : field.findBlock(bc[0] + (n & 1), bc[1] + ((n >> 1) & 1), bc[2] + ((n >> 2) & 1));
         const std::int32_t ns = nb < 0 ? -1 : surfaceIndex[nb];
         maps[n] = ns < 0 ? nullptr : edgeVertex.data() + static_cast<std::size_t>(ns) * 3 * BlockSize;
         starts[n] = ns < 0 ? 0 : vertexStart[ns];
@@ -269,8 +269,9 @@ SurfaceMesh sparseMarchingCubes(const SparseDensityField& field, bool normals, M
   {
     statistics->surfaceBlocks = nSurface;
     statistics->bytes = surfaceIndex.capacity() * sizeof(std::int32_t) +
-      surfaceBlocks.capacity() * sizeof(std::uint32_t) + (vertexStart.capacity() + triangleStart.capacity()) * sizeof(std::size_t) +
-      edgeVertex.capacity() * sizeof(std::uint16_t);
+                        surfaceBlocks.capacity() * sizeof(std::uint32_t) +
+                        (vertexStart.capacity() + triangleStart.capacity()) * sizeof(std::size_t) +
+                        edgeVertex.capacity() * sizeof(std::uint16_t);
   }
   return mesh;
 }

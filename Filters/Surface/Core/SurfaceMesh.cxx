@@ -12,12 +12,13 @@ double enclosedVolume(const SurfaceMesh& mesh)
   const auto& p = mesh.points;
   for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
   {
-    const std::size_t a = 3 * mesh.triangles[3 * t], b = 3 * mesh.triangles[3 * t + 1], c = 3 * mesh.triangles[3 * t + 2];
+    const std::size_t a = 3 * mesh.triangles[3 * t], b = 3 * mesh.triangles[3 * t + 1],
+                      c = 3 * mesh.triangles[3 * t + 2];
     // Signed volume of the tetrahedron (origin, a, b, c): a . (b x c) / 6.
     volume += (double(p[a]) * (double(p[b + 1]) * p[c + 2] - double(p[b + 2]) * p[c + 1]) +
-                double(p[a + 1]) * (double(p[b + 2]) * p[c] - double(p[b]) * p[c + 2]) +
-                double(p[a + 2]) * (double(p[b]) * p[c + 1] - double(p[b + 1]) * p[c])) /
-      6.0;
+               double(p[a + 1]) * (double(p[b + 2]) * p[c] - double(p[b]) * p[c + 2]) +
+               double(p[a + 2]) * (double(p[b]) * p[c + 1] - double(p[b + 1]) * p[c])) /
+              6.0;
   }
   return volume;
 }

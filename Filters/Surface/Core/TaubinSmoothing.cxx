@@ -8,7 +8,7 @@ namespace
 {
 // Edge neighbours of each vertex as a compressed row list.
 void vertexNeighbours(std::size_t nVertices, const std::vector<std::uint32_t>& triangles,
-  std::vector<std::uint32_t>& start, std::vector<std::uint32_t>& neighbours)
+                      std::vector<std::uint32_t>& start, std::vector<std::uint32_t>& neighbours)
 {
   start.assign(nVertices + 1, 0);
   for (std::uint32_t v : triangles)
@@ -49,7 +49,8 @@ void vertexNeighbours(std::size_t nVertices, const std::vector<std::uint32_t>& t
 }
 } // namespace
 
-void taubinSmooth(std::vector<float>& points, const std::vector<std::uint32_t>& triangles, int iterations, float lambda, float mu)
+void taubinSmooth(std::vector<float>& points, const std::vector<std::uint32_t>& triangles, int iterations, float lambda,
+                  float mu)
 {
   if (iterations <= 0 || triangles.empty())
   {

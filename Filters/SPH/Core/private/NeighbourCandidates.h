@@ -29,7 +29,7 @@ inline int threadCount(const SPHParameters& p)
 }
 
 /// Gathers a into sorted order through scratch, then swaps, so each array is copied once.
-template <class T>
+template<class T>
 void permute(std::vector<T>& a, std::vector<T>& scratch, const std::vector<std::uint32_t>& order, int threads)
 {
   const auto n = static_cast<std::int64_t>(order.size());
@@ -60,7 +60,7 @@ struct CandidateBuffer
   /// cell's box (the others cannot be within reach of any particle in the cell: this drops about
   /// a quarter of them), with the values sources[k][j] into channel[k].
   void gather(const NeighbourGrid& grid, int ix, int iy, int iz, const ParticleState& s, float reach,
-    const std::array<const float*, kMaxChannels>& sources, int channels)
+              const std::array<const float*, kMaxChannels>& sources, int channels)
   {
     std::uint32_t capacity = 0;
     grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) { capacity += e - b; });
@@ -79,28 +79,28 @@ struct CandidateBuffer
     const float reach2 = reach * reach;
     size = 0;
     grid.forEachNeighbourRange(ix, iy, iz,
-      [&](std::uint32_t b, std::uint32_t e)
-      {
-        for (std::uint32_t j = b; j < e; ++j)
-        {
-          const float px = s.x[j], py = s.y[j], pz = s.z[j];
-          const float dx = std::max({ lo[0] - px, 0.0f, px - hi[0] });
-          const float dy = std::max({ lo[1] - py, 0.0f, py - hi[1] });
-          const float dz = std::max({ lo[2] - pz, 0.0f, pz - hi[2] });
-          if (dx * dx + dy * dy + dz * dz >= reach2)
-          {
-            continue;
-          }
-          x[size] = px;
-          y[size] = py;
-          z[size] = pz;
-          for (int k = 0; k < channels; ++k)
-          {
-            channel[k][size] = sources[k][j];
-          }
-          ++size;
-        }
-      });
+                               [&](std::uint32_t b, std::uint32_t e)
+                               {
+                                 for (std::uint32_t j = b; j < e; ++j)
+                                 {
+                                   const float px = s.x[j], py = s.y[j], pz = s.z[j];
+                                   const float dx = std::max({ lo[0] - px, 0.0f, px - hi[0] });
+                                   const float dy = std::max({ lo[1] - py, 0.0f, py - hi[1] });
+                                   const float dz = std::max({ lo[2] - pz, 0.0f, pz - hi[2] });
+                                   if (dx * dx + dy * dy + dz * dz >= reach2)
+                                   {
+                                     continue;
+                                   }
+                                   x[size] = px;
+                                   y[size] = py;
+                                   z[size] = pz;
+                                   for (int k = 0; k < channels; ++k)
+                                   {
+                                     channel[k][size] = sources[k][j];
+                                   }
+                                   ++size;
+                                 }
+                               });
   }
 
   /// Σ_j (h² − r²)³ over candidates inside h of q (the poly6 sum without its constant).
@@ -147,9 +147,9 @@ struct CandidateBuffer
 /// thread-private buffer the candidates of that cell with the given per-particle channels. Each
 /// particle is handled by one thread in a fixed candidate order, so results do not depend on the
 /// thread count.
-template <class Body>
+template<class Body>
 void forEachParticleByCell(const NeighbourGrid& grid, const ParticleState& s, float reach, int threads,
-  std::initializer_list<const float*> channelSources, Body&& body)
+                           std::initializer_list<const float*> channelSources, Body&& body)
 {
   std::array<const float*, kMaxChannels> sources{};
   int channels = 0;

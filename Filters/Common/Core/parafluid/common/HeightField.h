@@ -13,13 +13,14 @@ public:
   /// elevation: nx * ny floor heights z [m], x fastest, at (x0 + i dx, y0 + j dy); seaLevel [m].
   /// Throws std::invalid_argument for fewer than 2 x 2 nodes, non-positive spacing, a size
   /// mismatch or a NaN elevation.
-  HeightField(std::vector<float> elevation, int nx, int ny, double x0, double y0, double dx, double dy, double seaLevel);
+  HeightField(std::vector<float> elevation, int nx, int ny, double x0, double y0, double dx, double dy,
+              double seaLevel);
 
   /// Rasterises a triangulated terrain surface (x, y, z per point; three indices per triangle)
   /// onto nx * ny nodes over its x-y bounds, keeping the highest surface over each node. Nodes
   /// no triangle covers take the lowest elevation of the mesh (the open sea beyond the terrain).
   static HeightField fromTriangles(const std::vector<float>& points, const std::vector<std::uint32_t>& triangles,
-    int nx, int ny, double seaLevel);
+                                   int nx, int ny, double seaLevel);
 
   /// Water depth [m] at (x, y): sea level minus the floor; zero or negative on land.
   double depth(double x, double y) const;

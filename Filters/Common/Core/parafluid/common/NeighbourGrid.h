@@ -31,8 +31,8 @@ public:
   std::size_t linearIndex(int ix, int iy, int iz) const
   {
     return static_cast<std::size_t>(ix) +
-      static_cast<std::size_t>(this->Dims[0]) *
-      (static_cast<std::size_t>(iy) + static_cast<std::size_t>(this->Dims[1]) * static_cast<std::size_t>(iz));
+           static_cast<std::size_t>(this->Dims[0]) *
+             (static_cast<std::size_t>(iy) + static_cast<std::size_t>(this->Dims[1]) * static_cast<std::size_t>(iz));
   }
   void cellCoordinates(std::size_t c, int& ix, int& iy, int& iz) const
   {
@@ -45,7 +45,7 @@ public:
   /// Calls f(begin, end) for each of the (up to 9) contiguous sorted ranges holding the particles of
   /// the 27 cells around cell (ix, iy, iz). Every particle within cellSize of a point in that cell
   /// is in one of these ranges.
-  template <class F>
+  template<class F>
   void forEachNeighbourRange(int ix, int iy, int iz, F&& f) const
   {
     const int x0 = ix > 0 ? ix - 1 : 0;
@@ -79,7 +79,8 @@ public:
   /// Bytes held by the grid's arrays.
   std::size_t bytes() const
   {
-    return (this->Order.capacity() + this->CellStart.capacity() + this->ParticleCell.capacity()) * sizeof(std::uint32_t);
+    return (this->Order.capacity() + this->CellStart.capacity() + this->ParticleCell.capacity()) *
+           sizeof(std::uint32_t);
   }
 
   static std::size_t maxCells(std::size_t n) { return 64 * n + (std::size_t(1) << 22); }

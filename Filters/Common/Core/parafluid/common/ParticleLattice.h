@@ -15,5 +15,5 @@ struct ParticleLattice
 /// bounds = xmin,xmax,ymin,ymax,zmin,zmax [m]. Throws std::invalid_argument for a non-positive
 /// spacing, inverted bounds, or more than maxParticles particles.
 ParticleLattice fillBoxWithLattice(const std::array<double, 6>& bounds, double spacing,
-  std::size_t maxParticles = 200'000'000);
+                                   std::size_t maxParticles = 200'000'000);
 } // namespace parafluid

@@ -25,7 +25,7 @@ public:
 
   /// Calls visit(j, ex, ey, ez, r2) for every particle j (its index in the array given to build)
   /// within the radius of p, with (ex, ey, ez) = x_j - p and r2 its squared length [m^2].
-  template <class Visit>
+  template<class Visit>
   void forEachNear(const float p[3], Visit&& visit) const
   {
     if (this->Sorted.empty())
@@ -42,17 +42,21 @@ public:
     }
     const float r2max = this->Radius * this->Radius;
     const std::vector<std::uint32_t>& order = this->Grid.sortedOrder();
-    this->Grid.forEachNeighbourRange(c[0], c[1], c[2], [&](std::uint32_t begin, std::uint32_t end) {
-      for (std::uint32_t k = begin; k < end; ++k)
-      {
-        const float ex = this->Sorted[3 * k] - p[0], ey = this->Sorted[3 * k + 1] - p[1], ez = this->Sorted[3 * k + 2] - p[2];
-        const float r2 = ex * ex + ey * ey + ez * ez;
-        if (r2 < r2max)
-        {
-          visit(order[k], ex, ey, ez, r2);
-        }
-      }
-    });
+    this->Grid.forEachNeighbourRange(c[0], c[1], c[2],
+                                     [&](std::uint32_t begin, std::uint32_t end)
+                                     {
+                                       for (std::uint32_t k = begin; k < end; ++k)
+                                       {
+                                         const float ex = this->Sorted[3 * k] - p[0],
+                                                     ey = this->Sorted[3 * k + 1] - p[1],
+                                                     ez = this->Sorted[3 * k + 2] - p[2];
+                                         const float r2 = ex * ex + ey * ey + ez * ez;
+                                         if (r2 < r2max)
+                                         {
+                                           visit(order[k], ex, ey, ez, r2);
+                                         }
+                                       }
+                                     });
   }
 
 private:

@@ -17,14 +17,15 @@ public:
   /// points: x,y,z per vertex [m]; triangles: three vertex indices each; vertexNormals: x,y,z per
   /// vertex, or empty to use area-weighted averages of the face normals. Degenerate triangles are
   /// dropped. Throws std::invalid_argument for out-of-range indices or non-finite coordinates.
-  TriangleBoundary(std::vector<float> points, std::vector<std::uint32_t> triangles, std::vector<float> vertexNormals = {});
+  TriangleBoundary(std::vector<float> points, std::vector<std::uint32_t> triangles,
+                   std::vector<float> vertexNormals = {});
 
   struct Crossing
   {
-    float t = 0.0f;           // fraction of the segment at which it crosses
+    float t = 0.0f; // fraction of the segment at which it crosses
     std::uint32_t triangle = 0;
     float barycentric[3] = { 0, 0, 0 };
-    float side = 1.0f;        // +1 when the segment starts on the side the face normal points to
+    float side = 1.0f; // +1 when the segment starts on the side the face normal points to
   };
   /// The first triangle the segment a -> b crosses from one side to the other, or (skin > 0) ends
   /// closer than `skin` to from a's side; t is where it enters that skin. A start point exactly on
@@ -58,7 +59,7 @@ private:
   float Origin[3] = { 0, 0, 0 };
   float CellSize = 1.0f;
   int Dims[3] = { 1, 1, 1 };
-  std::vector<std::uint32_t> CellStart;     // triangles of cell c: CellTriangles[CellStart[c] .. CellStart[c+1])
+  std::vector<std::uint32_t> CellStart; // triangles of cell c: CellTriangles[CellStart[c] .. CellStart[c+1])
   std::vector<std::uint32_t> CellTriangles;
 };
 } // namespace parafluid

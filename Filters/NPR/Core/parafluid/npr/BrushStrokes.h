@@ -15,9 +15,9 @@ namespace parafluid::npr
 {
 struct BrushStrokeParameters
 {
-  FlowLineParameters flow;     // the flow lines strokes follow (their seeds, duration, budget)
-  double strokeLength = 0.0;   // [m] the fixed strokes' length, and the shortest flow stroke kept
-  double fillSpacing = 0.0;    // [m] one fixed stroke per cube of this side where the flow is slow
+  FlowLineParameters flow;   // the flow lines strokes follow (their seeds, duration, budget)
+  double strokeLength = 0.0; // [m] the fixed strokes' length, and the shortest flow stroke kept
+  double fillSpacing = 0.0;  // [m] one fixed stroke per cube of this side where the flow is slow
   std::size_t maxStrokes = 20000;
 };
 
@@ -46,5 +46,6 @@ struct BrushStrokeSet
 /// false to abandon (the result is then empty). Throws std::invalid_argument for bad parameters
 /// or NaN/infinite positions.
 BrushStrokeSet layoutBrushStrokes(const float* xyz, const float* velocity, const float* value, std::size_t n,
-  const BrushStrokeParameters& parameters, const std::function<bool(double)>& progress = {});
+                                  const BrushStrokeParameters& parameters,
+                                  const std::function<bool(double)>& progress = {});
 } // namespace parafluid::npr

@@ -21,10 +21,10 @@ enum class FlowIntegrator
 
 struct FlowLineParameters
 {
-  double kernelRadius = 0.0;  // h [m]: support of the interpolation kernel
-  int seedStride = 10;        // with no explicit seeds: every k-th particle
-  int pointsPerLine = 16;     // points of each line (the line has pointsPerLine - 1 steps)
-  double lineDuration = 0.1;  // [s] time integrated along each line
+  double kernelRadius = 0.0; // h [m]: support of the interpolation kernel
+  int seedStride = 10;       // with no explicit seeds: every k-th particle
+  int pointsPerLine = 16;    // points of each line (the line has pointsPerLine - 1 steps)
+  double lineDuration = 0.1; // [s] time integrated along each line
   FlowIntegrator integrator = FlowIntegrator::RK4;
   std::size_t maxLines = 2000; // budget: the best-ranked lines kept
 };
@@ -50,5 +50,6 @@ struct FlowLineSet
 /// fewer than two points are dropped. progress(fraction) may return false to abandon (the result
 /// is then empty). Throws std::invalid_argument for bad parameters or NaN/infinite positions.
 FlowLineSet traceFlowLines(const float* xyz, const float* velocity, std::size_t n, const FlowLineParameters& parameters,
-  const float* seeds = nullptr, std::size_t seedCount = 0, const std::function<bool(double)>& progress = {});
+                           const float* seeds = nullptr, std::size_t seedCount = 0,
+                           const std::function<bool(double)>& progress = {});
 } // namespace parafluid::npr

@@ -34,7 +34,7 @@ std::string validate(const FoamParameters& parameters);
 
 struct FoamScores
 {
-  std::vector<float> score;          // continuous, >= 1 for a candidate
+  std::vector<float> score; // continuous, >= 1 for a candidate
   std::vector<std::uint8_t> candidate;
   std::vector<float> crest;          // crest potential (0 off the surface)
   std::vector<std::uint8_t> surface; // on the surface by the colour-field test
@@ -52,7 +52,7 @@ public:
   /// One frame: candidate[i] of the particle with id ids[i]; writes foam[i] (0/1). A particle not
   /// seen before starts as not foam; particles absent from this frame are forgotten.
   void update(const std::int64_t* ids, const std::uint8_t* candidate, std::size_t n, int persistFrames,
-    std::vector<std::uint8_t>& foam);
+              std::vector<std::uint8_t>& foam);
   std::size_t trackedParticles() const { return this->States.size(); }
 
 private:

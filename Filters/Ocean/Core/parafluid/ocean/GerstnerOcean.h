@@ -59,14 +59,14 @@ public:
   /// region: x0, x1, y0, y1 [m] where the ocean will be evaluated (used to lay out the phase fields
   /// over a bathymetry; points outside still work, with phases continued past the edge).
   GerstnerOcean(OceanParameters parameters, std::shared_ptr<const Bathymetry> bathymetry = nullptr,
-    const double region[4] = nullptr);
+                const double region[4] = nullptr);
 
   /// Evaluates n rest points (x, y) on the sea surface at `time` [s]. Outputs (any may be null):
   /// displacement (3n, metres, added to (x, y, sea level)), unit normal (3n), jacobian (n) of the
   /// horizontal map, foam (n, 0..1: breaking crests and compressed surface), depth (n, metres of
   /// water, 0 on land). `threads` <= 0 uses all OpenMP threads.
   void evaluate(const float* x, const float* y, std::size_t n, double time, float* displacement, float* normal,
-    float* jacobian, float* foam, float* depth, int threads = 0) const;
+                float* jacobian, float* foam, float* depth, int threads = 0) const;
 
   /// The waves as evaluated: steepness scaled down when the summed Q k A exceeded MaxSteepness.
   const std::vector<GerstnerWave>& effectiveWaves() const { return this->Waves; }
@@ -87,7 +87,7 @@ private:
   std::shared_ptr<const Bathymetry> Floor;
   std::vector<GerstnerWave> Waves;
   std::vector<double> DeepK, Omega, Lean, DirX, DirY;
-  std::vector<double> UniformK; // local wavenumber in uniform depth
+  std::vector<double> UniformK;       // local wavenumber in uniform depth
   std::vector<WavePhaseField> Phases; // one per wave, over a bathymetry
 };
 } // namespace parafluid::ocean

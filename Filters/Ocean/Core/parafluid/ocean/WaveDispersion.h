@@ -6,7 +6,7 @@
 
 namespace parafluid::ocean
 {
-constexpr double kStandardGravity = 9.81;                          // [m/s^2]
+constexpr double kStandardGravity = 9.81;                              // [m/s^2]
 constexpr double kDeepWater = std::numeric_limits<double>::infinity(); // depth meaning "no bottom"
 
 /// Angular frequency omega [rad/s] of a wave of wavenumber k [rad/m] in water `depth` metres deep:

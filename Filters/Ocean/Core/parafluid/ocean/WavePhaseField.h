@@ -18,7 +18,7 @@ public:
   /// step: sampling distance [m] (enlarged so the grid stays under 4 M samples); minDepth: depth
   /// [m] used wherever the water is shallower (and on land), where the wave is not shown anyway.
   WavePhaseField(const Bathymetry& bathymetry, double kDeep, const double direction[2], const double bounds[4],
-    double step, double minDepth);
+                 double step, double minDepth);
 
   /// Phase Phi [rad], local wavenumber k [rad/m] and wave vector grad Phi [rad/m] at (x, y).
   /// Beyond the covered region the phase continues with the wavenumber at its edge.

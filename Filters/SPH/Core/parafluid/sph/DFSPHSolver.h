@@ -13,7 +13,8 @@ public:
   void start(SPHSolver& sim) override;
   double step(SPHSolver& sim, double remaining) override;
   double signalSpeed(const SPHParameters&) const override { return 0.0; }
-  void permute(SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch, int threads) override;
+  void permute(SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
+               int threads) override;
   std::size_t bytes() const override;
 
 private:

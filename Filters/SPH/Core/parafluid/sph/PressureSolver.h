@@ -31,7 +31,8 @@ public:
   virtual double signalSpeed(const SPHParameters& parameters) const = 0;
   /// Reorders the per-particle arrays this solver carries from step to step after the simulation
   /// sorted its particles by grid cell (`order[k]`: the old index of new particle k).
-  virtual void permute(SPHSolver& simulation, const std::vector<std::uint32_t>& order, std::vector<float>& scratch, int threads) = 0;
+  virtual void permute(SPHSolver& simulation, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
+                       int threads) = 0;
   /// Bytes held by this solver's arrays.
   virtual std::size_t bytes() const = 0;
 };

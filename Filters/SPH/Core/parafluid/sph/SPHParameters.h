@@ -24,9 +24,9 @@ enum class WallFriction
 struct SPHParameters
 {
   PressureSolverType pressureSolver = PressureSolverType::WCSPH;
-  float smoothingLength = 0.04f;  // h [m]: kernel support radius (about 2 particle spacings)
-  float restDensity = 1000.0f;    // rho0 [kg/m^3]
-  float gasStiffness = 1000.0f;   // k [m^2/s^2] in p = k (rho - rho0); sqrt(k) is the sound speed (WCSPH)
+  float smoothingLength = 0.04f; // h [m]: kernel support radius (about 2 particle spacings)
+  float restDensity = 1000.0f;   // rho0 [kg/m^3]
+  float gasStiffness = 1000.0f;  // k [m^2/s^2] in p = k (rho - rho0); sqrt(k) is the sound speed (WCSPH)
   // mu [Pa s]: Müller's viscosity coefficient; 3.5 is the paper's water value. It is not water's
   // physical 1e-3: the term also damps the acoustic noise of a weakly compressible fluid.
   float viscosity = 3.5f;
@@ -34,10 +34,10 @@ struct SPHParameters
   float surfaceTension = 0.0f;
   // A particle is on the surface when |grad c| > surfaceThreshold / h (grad c ~ 1/h across a surface).
   float surfaceThreshold = 0.1f;
-  float particleMass = 0.0f;      // m [kg]; must be set (see latticeParticleMass)
-  std::array<float, 3> gravity = { 0.0f, 0.0f, -9.81f };               // [m/s^2]
+  float particleMass = 0.0f;                                            // m [kg]; must be set (see latticeParticleMass)
+  std::array<float, 3> gravity = { 0.0f, 0.0f, -9.81f };                // [m/s^2]
   std::array<float, 6> domainBounds = { 0.f, 1.f, 0.f, 1.f, 0.f, 1.f }; // xmin,xmax,ymin,ymax,zmin,zmax [m]
-  float wallRestitution = 0.5f;   // fraction of the normal velocity kept when bouncing off a wall
+  float wallRestitution = 0.5f; // fraction of the normal velocity kept when bouncing off a wall
   // Tangential stress of the box walls on the fluid (the normal condition is the same for all):
   //  - FreeSlip: none; the fluid slides along the walls;
   //  - NoSlip: the fluid sticks, through the viscous term with reversed-velocity wall images (see
@@ -51,16 +51,16 @@ struct SPHParameters
   // plane, for example the side walls of a slab that stands in for a 2-D flow, stays free-slip).
   std::array<bool, 6> frictionWalls = { true, true, true, true, true, true };
   float wallKinematicViscosity = 1.0e-6f; // nu [m^2/s] for LogLaw; water at 20 °C is 1.0e-6
-  float boundaryDamping = 0.5f;   // fraction of the normal velocity lost when bouncing off a boundary mesh
+  float boundaryDamping = 0.5f;           // fraction of the normal velocity lost when bouncing off a boundary mesh
 
   // Time stepping. With adaptiveTimeStep the step is the smallest of the CFL condition
   // lambda h / (c + v_max) (c = sqrt(k) for WCSPH, 0 for DFSPH), the viscous condition
   // h^2 rho0 / (40 mu), the force condition 0.25 sqrt(h / a_max), the capillary condition
   // sqrt(rho0 h^3 / (2 pi sigma)), and maxTimeStep; else it is timeStep.
   bool adaptiveTimeStep = true;
-  float cflNumber = 0.2f;         // lambda, relative to the support radius h (= 0.4 particle spacings)
-  float maxTimeStep = 0.005f;     // [s]
-  float timeStep = 2.0e-4f;       // dt [s] when adaptiveTimeStep is off
+  float cflNumber = 0.2f;     // lambda, relative to the support radius h (= 0.4 particle spacings)
+  float maxTimeStep = 0.005f; // [s]
+  float timeStep = 2.0e-4f;   // dt [s] when adaptiveTimeStep is off
 
   // DFSPH: the density solve iterates until the mean compression (rho* - rho0) / rho0 is below
   // densityTolerance; the divergence solve until the mean dt (D rho / D t) / rho0 is below
@@ -72,7 +72,7 @@ struct SPHParameters
   /// Free-surface particles miss neighbours, so their density is below rho0; negative pressure
   /// would pull them into clumps (tensile instability). Clamping p >= 0 avoids it.
   bool clampNegativePressure = true;
-  int threads = 0;                // OpenMP threads; 0 = the OpenMP default
+  int threads = 0; // OpenMP threads; 0 = the OpenMP default
 
   /// The kernel that measures density for the chosen pressure solver.
   DensityKernel densityKernel() const
@@ -97,7 +97,7 @@ struct SPHParameters
 /// when density is summed with the given kernel of radius h (the plain rho0 * spacing^3 is off by a
 /// few percent for h = 2 spacings, which would make a block at rest expand or shrink at t = 0).
 float latticeParticleMass(float spacing, float smoothingLength, float restDensity,
-  DensityKernel kernel = DensityKernel::Poly6);
+                          DensityKernel kernel = DensityKernel::Poly6);
 
 /// The spacing of the cubic lattice on which particles of this mass have rest density with the
 /// given kernel (the inverse of latticeParticleMass).

@@ -31,7 +31,7 @@ public:
   /// Takes the initial state (positions, velocities, ids; the rest is computed) and an optional
   /// boundary mesh. Throws std::invalid_argument for bad parameters or non-finite input.
   SPHSolver(const SPHParameters& parameters, ParticleState initial,
-    std::shared_ptr<const TriangleBoundary> boundary = nullptr);
+            std::shared_ptr<const TriangleBoundary> boundary = nullptr);
   ~SPHSolver();
   SPHSolver(SPHSolver&&) noexcept;
   SPHSolver& operator=(SPHSolver&&) noexcept;
@@ -57,8 +57,8 @@ public:
   struct StepStatistics
   {
     double timeStep = 0.0;
-    int densityIterations = 0;     // DFSPH only
-    int divergenceIterations = 0;  // DFSPH only
+    int densityIterations = 0;    // DFSPH only
+    int divergenceIterations = 0; // DFSPH only
     /// Mean over all particles of max(rho - rho0, 0) / rho0 after the step (measured, not predicted).
     double meanCompression = 0.0;
   };
@@ -107,7 +107,7 @@ private:
   std::vector<std::uint32_t> ScratchIndex;
   std::vector<float> InverseDensity;
   std::vector<float> PressureImpulse; // sum of p dt over the steps of advance() [Pa s]
-  float ParticleSpacing = 0.0f;    // [m] edge of the cube a particle fills at rest density
+  float ParticleSpacing = 0.0f;       // [m] edge of the cube a particle fills at rest density
   std::int64_t Steps = 0;
   double Time = 0.0;
   StepStatistics Last;

@@ -10,8 +10,8 @@ namespace parafluid::sph
 {
 struct TurbulentWallLaw
 {
-  static constexpr float kappa = 0.41f;        // von Kármán constant
-  static constexpr float logIntercept = 5.2f;  // B, hydraulically smooth wall
+  static constexpr float kappa = 0.41f;       // von Kármán constant
+  static constexpr float logIntercept = 5.2f; // B, hydraulically smooth wall
   /// y+ where the sublayer and log-layer profiles meet (y+ = ln(y+)/kappa + B).
   static float sublayerEdge();
 

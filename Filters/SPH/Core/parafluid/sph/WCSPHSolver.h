@@ -17,6 +17,5 @@ public:
 
 private:
   void computeDensityAndPressure(SPHSolver& sim);
-
 };
 } // namespace parafluid::sph

@@ -29,13 +29,14 @@ struct WallMirrors
   /// Whether image k crosses a no-slip wall (its velocity is not simply mirrored).
   bool noSlip(int k) const
   {
-    return velocityScale[k][0] != scale[k][0] || velocityScale[k][1] != scale[k][1] || velocityScale[k][2] != scale[k][2];
+    return velocityScale[k][0] != scale[k][0] || velocityScale[k][1] != scale[k][1] ||
+           velocityScale[k][2] != scale[k][2];
   }
 
   /// The images a particle at `position` needs: one per subset of the walls within h, taking on
   /// each axis only the nearer wall. noSlip flags the walls xmin, xmax, ymin, ymax, zmin, zmax.
   static WallMirrors around(const float position[3], const std::array<float, 6>& bounds, float h,
-    const std::array<bool, 6>& noSlip = {})
+                            const std::array<bool, 6>& noSlip = {})
   {
     WallMirrors m;
     int axes[3];

@@ -56,7 +56,7 @@ private:
   };
   struct Node
   {
-    std::uint32_t code;      // Morton code at this level
+    std::uint32_t code;       // Morton code at this level
     std::uint32_t firstChild; // index into the level below
     std::uint32_t childCount;
     float minTerrain, maxFluid, meanHeight;
@@ -67,8 +67,8 @@ private:
   double X0 = 0, Y0 = 0, DX = 1, DY = 1;
   int N = 0;
   std::vector<float> Terrain;
-  std::vector<Cell> Cells;                 // wet cells sorted by code
-  std::vector<std::vector<Node>> Levels;   // Levels[0]: one node per wet cell; last: the root
+  std::vector<Cell> Cells;               // wet cells sorted by code
+  std::vector<std::vector<Node>> Levels; // Levels[0]: one node per wet cell; last: the root
 };
 
 /// Morton (Z-order) code of cell (i, j), i and j < 2^16, and its inverse.

@@ -12,12 +12,12 @@ namespace parafluid::surface
 {
 struct ParticleSurfaceParameters
 {
-  double particleSpacing = 0.0;  // d [m]: the lattice spacing the particles were seeded at
-  double cellSize = 0.5;         // grid cell edge, in d
-  double kernelRadius = 3.0;     // poly6 support radius, in d (wider: smoother, but a convex
-                                 // blob of radius R shrinks by about r^2 / (11 R))
-  double isoValue = 0.5;         // level of the covered-volume fraction phi (1 inside, 0 outside)
-  int smoothingIterations = 0;   // Taubin lambda|mu pairs
+  double particleSpacing = 0.0; // d [m]: the lattice spacing the particles were seeded at
+  double cellSize = 0.5;        // grid cell edge, in d
+  double kernelRadius = 3.0;    // poly6 support radius, in d (wider: smoother, but a convex
+                                // blob of radius R shrinks by about r^2 / (11 R))
+  double isoValue = 0.5;        // level of the covered-volume fraction phi (1 inside, 0 outside)
+  int smoothingIterations = 0;  // Taubin lambda|mu pairs
   bool computeNormals = true;
 };
 
@@ -42,7 +42,7 @@ public:
   /// Throws std::invalid_argument with validate()'s message for bad parameters, and for NaN or
   /// infinite positions. Zero particles give an empty mesh.
   SurfaceMesh extract(const float* xyz, std::size_t n, const ParticleSurfaceParameters& parameters,
-    const Progress& progress = {});
+                      const Progress& progress = {});
 
   /// Kernel-weighted (Shepard) average of a particle array at each vertex of `mesh`, using the
   /// particles of the last extract() (which must still be alive and unchanged): values holds

@@ -31,7 +31,7 @@ public:
   /// std::invalid_argument for non-positive sizes, non-finite coordinates, or a bounding box too
   /// large to index (more than 2^21 blocks along an axis).
   void build(const float* xyz, std::size_t n, double cellSize, double kernelRadius, double particleVolume,
-    double isoValue);
+             double isoValue);
 
   std::size_t blockCount() const { return this->Keys.size(); }
   /// Block coordinates (in blocks) of block b; its point (i, j, k) is at
@@ -71,7 +71,7 @@ public:
   /// Calls visit(k, ex, ey, ez, s2) for each sorted slot k whose particle lies within the kernel
   /// radius of the point x (in cells from the origin), with (ex, ey, ez) = particle - x and s2 its
   /// squared length, both in cells.
-  template <typename Visit>
+  template<typename Visit>
   void forEachParticleNear(const double x[3], Visit&& visit) const;
 
   /// phi and its gradient [1/m] at world point p, summed exactly over the particles (not read
@@ -96,12 +96,13 @@ private:
   void sampleBlocks(float iso);
   void splatBlock(std::size_t b, float* values) const;
   /// Calls visit(block index) for each allocated block within blockReach() of block coordinates bc.
-  template <typename Visit>
+  template<typename Visit>
   void forEachBlockAround(const int bc[3], Visit&& visit) const;
   void buildHash();
   std::uint64_t key(int bx, int by, int bz) const
   {
-    return (static_cast<std::uint64_t>(bz) << 42) | (static_cast<std::uint64_t>(by) << 21) | static_cast<std::uint64_t>(bx);
+    return (static_cast<std::uint64_t>(bz) << 42) | (static_cast<std::uint64_t>(by) << 21) |
+           static_cast<std::uint64_t>(bx);
   }
 
   double Origin[3] = { 0, 0, 0 };
@@ -110,8 +111,8 @@ private:
   std::size_t SortPeakBytes = 0;
   double IsoValue = 0.5;
   std::vector<char> SurfaceBlock;
-  std::vector<std::uint64_t> Keys;          // sorted block keys of the allocated blocks
-  std::vector<std::uint32_t> ParticleBegin; // Keys.size() + 1 entries
+  std::vector<std::uint64_t> Keys;               // sorted block keys of the allocated blocks
+  std::vector<std::uint32_t> ParticleBegin;      // Keys.size() + 1 entries
   std::vector<const float*> Stored;              // per block: its values or null
   std::vector<std::unique_ptr<float[]>> Storage; // the kept blocks' values
   std::vector<float> Minimum, Maximum;
@@ -120,7 +121,7 @@ private:
   std::vector<std::uint32_t> SortedIndex;
   std::vector<float> SortedXYZ; // in cells from the origin
 };
-template <typename Visit>
+template<typename Visit>
 void SparseDensityField::forEachBlockAround(const int bc[3], Visit&& visit) const
 {
   const int reach = this->BlockReach;
@@ -140,7 +141,7 @@ void SparseDensityField::forEachBlockAround(const int bc[3], Visit&& visit) cons
   }
 }
 
-template <typename Visit>
+template<typename Visit>
 void SparseDensityField::forEachParticleNear(const double x[3], Visit&& visit) const
 {
   const double rho = this->KernelRadius / this->CellSize;
@@ -150,17 +151,19 @@ void SparseDensityField::forEachParticleNear(const double x[3], Visit&& visit) c
   {
     bc[a] = static_cast<int>(std::floor(x[a] / BlockPoints));
   }
-  this->forEachBlockAround(bc, [&](std::int64_t nb) {
-    for (std::uint32_t k = this->particleBegin(nb); k < this->particleEnd(nb); ++k)
-    {
-      const double ex = this->SortedXYZ[3 * k] - x[0], ey = this->SortedXYZ[3 * k + 1] - x[1],
-                   ez = this->SortedXYZ[3 * k + 2] - x[2];
-      const double s2 = ex * ex + ey * ey + ez * ez;
-      if (s2 < rho2)
-      {
-        visit(k, ex, ey, ez, s2);
-      }
-    }
-  });
+  this->forEachBlockAround(bc,
+                           [&](std::int64_t nb)
+                           {
+                             for (std::uint32_t k = this->particleBegin(nb); k < this->particleEnd(nb); ++k)
+                             {
+                               const double ex = this->SortedXYZ[3 * k] - x[0], ey = this->SortedXYZ[3 * k + 1] - x[1],
+                                            ez = this->SortedXYZ[3 * k + 2] - x[2];
+                               const double s2 = ex * ex + ey * ey + ez * ez;
+                               if (s2 < rho2)
+                               {
+                                 visit(k, ex, ey, ez, s2);
+                               }
+                             }
+                           });
 }
 } // namespace parafluid::surface

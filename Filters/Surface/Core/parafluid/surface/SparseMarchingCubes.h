@@ -20,5 +20,6 @@ struct MarchingCubesStatistics
 /// The surface phi = field.isoValue() (> 0), oriented so normals point to lower phi (out of the
 /// fluid). Vertex normals are -grad phi (central differences, interpolated along the edge) when
 /// `normals` is set.
-SurfaceMesh sparseMarchingCubes(const SparseDensityField& field, bool normals, MarchingCubesStatistics* statistics = nullptr);
+SurfaceMesh sparseMarchingCubes(const SparseDensityField& field, bool normals,
+                                MarchingCubesStatistics* statistics = nullptr);
 } // namespace parafluid::surface

@@ -7,9 +7,9 @@ namespace parafluid::surface
 {
 struct SurfaceMesh
 {
-  std::vector<float> points;             // x, y, z per vertex [m]
-  std::vector<float> normals;            // unit outward normal per vertex (empty when not computed)
-  std::vector<std::uint32_t> triangles;  // three vertex indices per triangle, counter-clockwise from outside
+  std::vector<float> points;            // x, y, z per vertex [m]
+  std::vector<float> normals;           // unit outward normal per vertex (empty when not computed)
+  std::vector<std::uint32_t> triangles; // three vertex indices per triangle, counter-clockwise from outside
 
   std::size_t vertexCount() const { return this->points.size() / 3; }
   std::size_t triangleCount() const { return this->triangles.size() / 3; }

@@ -11,5 +11,5 @@ namespace parafluid::surface
 /// lambda|mu pairs, using the umbrella (mean of edge neighbours) Laplacian. Deterministic for any
 /// number of threads. Vertices no triangle uses stay where they are.
 void taubinSmooth(std::vector<float>& points, const std::vector<std::uint32_t>& triangles, int iterations,
-  float lambda = 0.5f, float mu = -0.53f);
+                  float lambda = 0.5f, float mu = -0.53f);
 } // namespace parafluid::surface

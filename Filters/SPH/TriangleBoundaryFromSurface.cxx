@@ -1,4 +1,4 @@
-#include "vtkPFTriangleBoundary.h"
+#include "TriangleBoundaryFromSurface.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"

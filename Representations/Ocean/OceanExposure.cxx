@@ -1,5 +1,5 @@
+#include "OceanExposure.h"
 #include "parafluid/common/MathConstants.h"
-#include "vtkPFOceanExposure.h"
 
 #include <algorithm>
 #include <cmath>
@@ -46,10 +46,10 @@ double meanWaterLuminance(const OceanExposureScene& s)
   double forward[3] = { s.focal[0] - s.eye[0], s.focal[1] - s.eye[1], s.focal[2] - s.eye[2] };
   normalize(forward);
   double right[3] = { forward[1] * s.up[2] - forward[2] * s.up[1], forward[2] * s.up[0] - forward[0] * s.up[2],
-    forward[0] * s.up[1] - forward[1] * s.up[0] };
+                      forward[0] * s.up[1] - forward[1] * s.up[0] };
   normalize(right);
   const double up[3] = { right[1] * forward[2] - right[2] * forward[1], right[2] * forward[0] - right[0] * forward[2],
-    right[0] * forward[1] - right[1] * forward[0] };
+                         right[0] * forward[1] - right[1] * forward[0] };
   const double halfHeight = std::tan(0.5 * s.viewAngle * kPi / 180.0), halfWidth = halfHeight * s.aspect;
   double sum = 0.0;
   int hits = 0;
@@ -81,7 +81,9 @@ double meanWaterLuminance(const OceanExposureScene& s)
       const double shallow = std::exp(-depth / s.colorDepth);
       const double lit = (0.35 + 0.65 * std::max(s.sun[2], 0.0)) * s.sunIntensity;
       const double specular =
-        s.sunIntensity * std::pow(std::max(reflected[0] * s.sun[0] + reflected[1] * s.sun[1] + reflected[2] * s.sun[2], 0.0), s.shininess) *
+        s.sunIntensity *
+        std::pow(std::max(reflected[0] * s.sun[0] + reflected[1] * s.sun[1] + reflected[2] * s.sun[2], 0.0),
+                 s.shininess) *
         fresnel * 4.0;
       double color[3];
       for (int c = 0; c < 3; ++c)

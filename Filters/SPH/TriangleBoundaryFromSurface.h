@@ -1,5 +1,4 @@
-#ifndef vtkPFTriangleBoundary_h
-#define vtkPFTriangleBoundary_h
+#pragma once
 // Converts a surface (any vtkPolyData: polygons, strips) into the core's triangle boundary.
 #include "parafluid/common/TriangleBoundary.h"
 
@@ -15,5 +14,3 @@ namespace parafluid::vtk
 /// triangles or bad coordinates.
 std::shared_ptr<const TriangleBoundary> makeTriangleBoundary(vtkPolyData* surface, std::string& error);
 }
-
-#endif

@@ -1,5 +1,5 @@
+#include "OceanTextures.h"
 #include "parafluid/common/MathConstants.h"
-#include "vtkPFOceanTextures.h"
 
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -97,8 +97,8 @@ vtkSmartPointer<vtkTexture> makeRippleTexture(int size, unsigned seed)
   return texture;
 }
 
-vtkSmartPointer<vtkTexture> makeFixedPointTexture(
-  const double* values, int nx, int ny, int components, std::vector<double>& ranges)
+vtkSmartPointer<vtkTexture> makeFixedPointTexture(const double* values, int nx, int ny, int components,
+                                                  std::vector<double>& ranges)
 {
   const std::size_t samples = static_cast<std::size_t>(nx) * ny;
   ranges.assign(2 * static_cast<std::size_t>(components), 0.0);
@@ -160,7 +160,7 @@ vtkSmartPointer<vtkTexture> loadCubeMap(const std::array<std::string, 6>& files,
     if (!reader)
     {
       error = std::string("EnvironmentImages: cannot read the ") + faces[f] + " face '" + files[f] +
-        "' (missing, or not an image format VTK reads)";
+              "' (missing, or not an image format VTK reads)";
       return nullptr;
     }
     reader->SetFileName(files[f].c_str());

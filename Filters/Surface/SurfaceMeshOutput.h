@@ -1,7 +1,7 @@
 #pragma once
 // Shared by the surface filters: particle positions in, a Core SurfaceMesh out as vtkPolyData.
-#include "parafluid/surface/SurfaceMesh.h"
 #include "ParticleArrays.h"
+#include "parafluid/surface/SurfaceMesh.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"

@@ -4,8 +4,7 @@
  * the CPU for a grid of view rays against a flat sea (no waves, ripples or foam), so the exposure
  * can map that mean to mid-grey.
  */
-#ifndef vtkPFOceanExposure_h
-#define vtkPFOceanExposure_h
+#pragma once
 
 #include <functional>
 
@@ -17,7 +16,7 @@ struct OceanExposureScene
   double viewAngle = 30.0; // [degrees], vertical
   double aspect = 1.0;     // width / height
   double seaLevel = 0.0;
-  double sun[3];           // unit vector towards the sun
+  double sun[3]; // unit vector towards the sun
   double sunColor[3], sunIntensity = 1.0, shininess = 400.0;
   double horizon[3], zenith[3];
   double environmentMean[3]; // mean radiance of the cube map, used when hasEnvironment
@@ -29,5 +28,3 @@ struct OceanExposureScene
 /// Mean luminance over the rays (24 x 16) that hit the sea; 0 when none does.
 double meanWaterLuminance(const OceanExposureScene& scene);
 } // namespace parafluid::vtk
-
-#endif

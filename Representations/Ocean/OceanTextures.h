@@ -3,8 +3,7 @@
  * normal map, float data textures (bathymetry, wave phase fields) read with texelFetch, and the
  * environment cube map from six image files.
  */
-#ifndef vtkPFOceanTextures_h
-#define vtkPFOceanTextures_h
+#pragma once
 
 #include "vtkSmartPointer.h"
 
@@ -27,12 +26,10 @@ vtkSmartPointer<vtkTexture> makeRippleTexture(int size = 256, unsigned seed = 1)
 /// RGB texture, sample (i, j) component c at texel (i * components + c, j). ranges receives
 /// (lowest, span) per component; the shader decodes lowest + code * span / (2^24 - 1).
 /// Relative resolution 6e-8 of each component's range.
-vtkSmartPointer<vtkTexture> makeFixedPointTexture(
-  const double* values, int nx, int ny, int components, std::vector<double>& ranges);
+vtkSmartPointer<vtkTexture> makeFixedPointTexture(const double* values, int nx, int ny, int components,
+                                                  std::vector<double>& ranges);
 
 /// A cube map from six images (+X, -X, +Y, -Y, +Z, -Z), or null with `error` set; `mean`
 /// receives the mean colour of all faces (0..1), for the automatic exposure.
 vtkSmartPointer<vtkTexture> loadCubeMap(const std::array<std::string, 6>& files, std::string& error, double mean[3]);
 } // namespace parafluid::vtk
-
-#endif
