@@ -21,6 +21,8 @@
 
 #include "parafluid/ocean/SeaSettings.h"
 
+#include "AssignIfChanged.h"
+
 #include <vector>
 
 class PARAFLUIDOCEANFILTERS_EXPORT vtkPFGerstnerOcean : public vtkPolyDataAlgorithm
@@ -109,11 +111,7 @@ private:
   template<class Field, class Value>
   void SetSea(Field& field, Value value)
   {
-    if (field != static_cast<Field>(value))
-    {
-      field = static_cast<Field>(value);
-      this->Modified();
-    }
+    parafluid::vtk::assignIfChanged(this, field, value);
   }
   /// The sea, shared in form with the Gerstner Ocean representation (parafluid/ocean/SeaSettings.h).
   parafluid::ocean::SeaSettings Sea;

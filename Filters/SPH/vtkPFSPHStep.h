@@ -23,6 +23,8 @@
 
 #include "parafluid/sph/SPHParameters.h"
 
+#include "AssignIfChanged.h"
+
 #include <memory>
 
 class vtkAlgorithmOutput;
@@ -137,11 +139,7 @@ private:
   template<class Field, class Value>
   void SetParameter(Field& field, Value value)
   {
-    if (field != static_cast<Field>(value))
-    {
-      field = static_cast<Field>(value);
-      this->Modified();
-    }
+    parafluid::vtk::assignIfChanged(this, field, value);
   }
   /// The output index (0 .. NumberOfOutputs) of the time the pipeline asks for.
   long long RequestedOutputIndex(vtkInformation* outInfo) const;

@@ -20,20 +20,21 @@ class FluidShadePass
 public:
   FluidShadePass();
   ~FluidShadePass(); // where vtkOpenGLQuadHelper is complete
+  /// The mapper's settings of the same names (it fills every field).
   struct Settings
   {
-    int DisplayMode = 1; // vtkPFScreenSpaceFluidMapper::DisplayModes
-    double FluidColor[3] = { 0.1, 0.45, 0.75 };
-    double AttenuationDistance = 1.0;
-    double RefractiveIndex = 1.33;
-    double RefractionStrength = 0.1;
-    double Shininess = 150.0;
-    double SpecularStrength = 0.8;
-    double Ambient = 0.2;
-    double ColorMix = 0.8;
-    int ToonBands = 4;
-    double LineColor[3] = { 0.02, 0.06, 0.15 };
-    double DepthContourSpacing = 0.0; // particle radii
+    int DisplayMode; // vtkPFScreenSpaceFluidMapper::DisplayModes
+    double FluidColor[3];
+    double AttenuationDistance;
+    double RefractiveIndex;
+    double RefractionStrength;
+    double Shininess;
+    double SpecularStrength;
+    double Ambient;
+    double ColorMix;
+    int ToonBands;
+    double LineColor[3];
+    double DepthContourSpacing; // particle radii
   };
   /// What the pass reads: the smoothed depth target, and which of the other targets hold data.
   struct Inputs

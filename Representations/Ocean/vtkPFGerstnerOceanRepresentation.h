@@ -23,6 +23,8 @@
 
 #include "parafluid/ocean/SeaSettings.h"
 
+#include "AssignIfChanged.h"
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -123,11 +125,7 @@ private:
   template<class Field, class Value>
   void SetSea(Field& field, Value value)
   {
-    if (field != static_cast<Field>(value))
-    {
-      field = static_cast<Field>(value);
-      this->Modified();
-    }
+    parafluid::vtk::assignIfChanged(this, field, value);
   }
   /// The sea, shared in form with the Gerstner Ocean source (parafluid/ocean/SeaSettings.h).
   parafluid::ocean::SeaSettings Sea;
