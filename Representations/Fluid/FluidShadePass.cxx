@@ -108,7 +108,7 @@ void setEyeToCube(vtkShaderProgram* shade, vtkRenderer* renderer, vtkTexture* en
 } // namespace
 
 void FluidShadePass::Run(FluidFrame& frame, FluidScreenTargets& targets, const Inputs& inputs, vtkTexture* environment,
-                         const Settings& s)
+                         const FluidShadeSettings& s)
 {
   vtkOpenGLState* state = frame.State;
   vtkRenderer* renderer = frame.Renderer;

@@ -15,27 +15,28 @@ namespace parafluid
 class FluidScreenTargets;
 struct FluidFrame;
 
+/// The mapper's settings of the same names (vtkPFScreenSpaceFluidMapper::FillShading fills every field).
+struct FluidShadeSettings
+{
+  int DisplayMode; // vtkPFScreenSpaceFluidMapper::DisplayModes
+  double FluidColor[3];
+  double AttenuationDistance;
+  double RefractiveIndex;
+  double RefractionStrength;
+  double Shininess;
+  double SpecularStrength;
+  double Ambient;
+  double ColorMix;
+  int ToonBands;
+  double LineColor[3];
+  double DepthContourSpacing; // particle radii
+};
+
 class FluidShadePass
 {
 public:
   FluidShadePass();
   ~FluidShadePass(); // where vtkOpenGLQuadHelper is complete
-  /// The mapper's settings of the same names (it fills every field).
-  struct Settings
-  {
-    int DisplayMode; // vtkPFScreenSpaceFluidMapper::DisplayModes
-    double FluidColor[3];
-    double AttenuationDistance;
-    double RefractiveIndex;
-    double RefractionStrength;
-    double Shininess;
-    double SpecularStrength;
-    double Ambient;
-    double ColorMix;
-    int ToonBands;
-    double LineColor[3];
-    double DepthContourSpacing; // particle radii
-  };
   /// What the pass reads: the smoothed depth target, and which of the other targets hold data.
   struct Inputs
   {
@@ -49,7 +50,7 @@ public:
   /// the depth test on and depth writes on. `environment`: the mapper's cube map or null (then the
   /// renderer's environment cube map, else the background colours).
   void Run(FluidFrame& frame, FluidScreenTargets& targets, const Inputs& inputs, vtkTexture* environment,
-           const Settings& settings);
+           const FluidShadeSettings& settings);
   void Release(vtkWindow* window);
 
 private:

@@ -1,6 +1,5 @@
 #include "vtkPFScreenSpaceFluidMapper.h"
 
-#include "FluidBrushStrokePass.h"
 #include "FluidDepthSmoothingPass.h"
 #include "FluidFootprint.h"
 #include "FluidFrame.h"
@@ -9,9 +8,6 @@
 #include "FluidShadePass.h"
 #include "FluidSplatPass.h"
 #include "FluidThicknessBlurPass.h"
-#include "FluidToonLinePass.h"
-
-#include "parafluid/npr/BrushStrokes.h"
 
 #include "vtkActor.h"
 #include "vtkDataArray.h"
@@ -51,10 +47,7 @@ struct vtkPFScreenSpaceFluidMapper::Internals
   parafluid::FluidSplatPass Splats;
   parafluid::FluidThicknessBlurPass ThicknessBlur;
   parafluid::FluidDepthSmoothingPass Smoothing;
-  parafluid::FluidToonLinePass ToonLines;
   parafluid::FluidShadePass Shade;
-  parafluid::FluidBrushStrokePass Strokes; // laid out again when the data or settings change
-  vtkMTimeType StrokeKey = 0;
   vtkSmartPointer<vtkTexture> Environment;
   vtkNew<vtkMatrix4x4> ModelView; // model -> view of the frame being drawn (key matrix, transposed)
   float MaxPointSize = 0.0f;      // the context's largest point sprite, pixels (0: not asked yet)
@@ -66,10 +59,7 @@ struct vtkPFScreenSpaceFluidMapper::Internals
     this->Splats.Release(window);
     this->ThicknessBlur.Release(window);
     this->Smoothing.Release(window);
-    this->ToonLines.Release(window);
     this->Shade.Release(window);
-    this->Strokes.Release(window);
-    this->StrokeKey = 0;
     if (this->Environment)
     {
       this->Environment->ReleaseGraphicsResources(window);
@@ -112,118 +102,6 @@ void vtkPFScreenSpaceFluidMapper::SetRadiusArray(const char* name)
   }
 }
 
-void vtkPFScreenSpaceFluidMapper::SetStrokeVelocityArray(const char* name)
-{
-  const std::string value = name ? name : "";
-  if (value != this->StrokeVelocityArray)
-  {
-    this->StrokeVelocityArray = value;
-    this->Modified();
-  }
-}
-
-void vtkPFScreenSpaceFluidMapper::SetStrokeColorArray(const char* name)
-{
-  const std::string value = name ? name : "";
-  if (value != this->StrokeColorArray)
-  {
-    this->StrokeColorArray = value;
-    this->Modified();
-  }
-}
-
-void vtkPFScreenSpaceFluidMapper::LayOutStrokes(vtkPointSet* input, vtkUnsignedCharArray* colors,
-                                                vtkOpenGLRenderWindow* window)
-{
-  Internals& in = *this->Internal;
-  // The finite particles, and where each came from.
-  const vtkIdType n = input->GetNumberOfPoints();
-  vtkDataArray* velocities = input->GetPointData()->GetArray(this->StrokeVelocityArray.c_str());
-  if (velocities && velocities->GetNumberOfComponents() != 3)
-  {
-    velocities = nullptr;
-  }
-  if (!velocities)
-  {
-    vtkWarningMacro("Brush strokes: no 3-component point array '"
-                    << this->StrokeVelocityArray << "'; the water is taken as still (fixed strokes only).");
-  }
-  vtkDataArray* values = input->GetPointData()->GetArray(this->StrokeColorArray.c_str());
-  std::vector<float> xyz, velocity, value;
-  std::vector<vtkIdType> source;
-  xyz.reserve(static_cast<size_t>(3 * n));
-  velocity.reserve(static_cast<size_t>(3 * n));
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double x[3], v[3] = { 0.0, 0.0, 0.0 };
-    input->GetPoint(i, x);
-    if (velocities)
-    {
-      velocities->GetTuple(i, v);
-    }
-    if (!(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
-    {
-      continue;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      xyz.push_back(static_cast<float>(x[k]));
-      velocity.push_back(std::isfinite(v[k]) ? static_cast<float>(v[k]) : 0.0f);
-    }
-    value.push_back(values ? static_cast<float>(values->GetComponent(i, 0)) : 0.0f);
-    source.push_back(i);
-  }
-  parafluid::npr::BrushStrokeParameters parameters;
-  // A particle's drawn radius is half a spacing to a spacing: the flow is read over about two to
-  // four spacings.
-  parameters.flow.kernelRadius = 4.0 * in.Particles.MaxRadius();
-  parameters.flow.seedStride = this->StrokeSeedStride;
-  parameters.flow.pointsPerLine = 12;
-  parameters.flow.lineDuration = this->StrokeDuration;
-  parameters.flow.maxLines = static_cast<std::size_t>(this->MaxStrokes);
-  parameters.strokeLength = this->StrokeLength * in.Particles.MaxRadius();
-  // Three fixed strokes per stroke length each way: on screen they overlap into a painted cover.
-  parameters.fillSpacing = parameters.strokeLength / 3.0;
-  parameters.maxStrokes = static_cast<std::size_t>(this->MaxStrokes);
-  parafluid::npr::BrushStrokeSet strokes;
-  try
-  {
-    strokes = parafluid::npr::layoutBrushStrokes(xyz.data(), velocity.data(), value.data(), source.size(), parameters);
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro("Brush strokes: " << e.what());
-  }
-  // Colours: the scalar colouring, else the colour array from dark to light fluid colour.
-  const std::size_t count = strokes.strokeCount();
-  std::vector<float> rgb(3 * count);
-  float low = std::numeric_limits<float>::max(), high = -low;
-  for (float v : strokes.value)
-  {
-    low = std::min(low, v);
-    high = std::max(high, v);
-  }
-  for (std::size_t s = 0; s < count; ++s)
-  {
-    const vtkIdType particle = source[strokes.seed[s]];
-    for (int k = 0; k < 3; ++k)
-    {
-      if (colors)
-      {
-        const int nc = colors->GetNumberOfComponents();
-        rgb[3 * s + k] = colors->GetValue(nc * particle + (nc >= 3 ? k : 0)) / 255.0f;
-      }
-      else
-      {
-        const double t = values && high > low ? (strokes.value[s] - low) / (high - low) : 0.5;
-        const double dark = 0.6 * this->FluidColor[k], light = this->FluidColor[k] + 0.6 * (1.0 - this->FluidColor[k]);
-        rgb[3 * s + k] = static_cast<float>(dark + t * (light - dark));
-      }
-    }
-  }
-  in.Strokes.Upload(window, strokes, rgb);
-}
-
 void vtkPFScreenSpaceFluidMapper::SetEnvironmentTexture(vtkTexture* texture)
 {
   if (this->Internal->Environment != texture)
@@ -235,6 +113,7 @@ void vtkPFScreenSpaceFluidMapper::SetEnvironmentTexture(vtkTexture* texture)
 
 void vtkPFScreenSpaceFluidMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
+  this->ReleaseStyle(window);
   this->Internal->Release(window);
   this->Superclass::ReleaseGraphicsResources(window);
 }
@@ -287,18 +166,7 @@ bool vtkPFScreenSpaceFluidMapper::UploadParticles(vtkPointSet* input, vtkOpenGLR
   {
     return false; // nothing finite to draw
   }
-  this->LastStrokeCount = 0;
-  this->LastStrokeSegmentCount = 0;
-  if (this->DisplayMode == BrushStrokes)
-  {
-    if (key != in.StrokeKey)
-    {
-      this->LayOutStrokes(input, colors, window);
-      in.StrokeKey = key;
-    }
-    this->LastStrokeCount = static_cast<vtkIdType>(in.Strokes.StrokeCount());
-    this->LastStrokeSegmentCount = static_cast<vtkIdType>(in.Strokes.SegmentCount());
-  }
+  this->PrepareStyle(input, colors, window, key);
   return true;
 }
 
@@ -397,6 +265,7 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   }
   if (in.Context && in.Context != window)
   {
+    this->ReleaseStyle(in.Context);
     in.Release(in.Context);
   }
   in.Context = window;
@@ -417,7 +286,7 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   const bool thickness = mode == TransparentFluid || mode == Thickness;
   const bool refraction = mode == TransparentFluid;
   const bool smooth = mode != ParticleDepth && this->SmoothingIterations > 0;
-  const bool toon = mode == Toon;
+  const bool lines = this->StyleNeedsLines();
 
   vtkOpenGLState* state = frame.State;
   vtkOpenGLState::ScopedglViewport savedViewport(state);
@@ -432,7 +301,7 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
 
   in.Targets.Ensure(window, frame.Size[0], frame.Size[1], this->ChooseThicknessFactor(frame), in.Particles.HasColors(),
-                    toon);
+                    lines);
   frame.Framebuffer = in.Targets.Framebuffer;
   // The opaque scene drawn so far: its depth (occlusion) and, for refraction, its colour.
   in.Targets.CopyOpaqueScene(frame, refraction);
@@ -469,10 +338,7 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     smoothing.CurvatureFlowStep = this->CurvatureFlowStep;
     depth = in.Smoothing.Run(frame, in.Targets, smoothing);
   }
-  if (toon)
-  {
-    in.ToonLines.Run(frame, in.Targets, depth, { this->DepthRange, this->LineWidth, this->LineThreshold });
-  }
+  this->RunStylePasses(frame, in.Targets, depth);
   frame.Framebuffer->RemoveColorAttachment(0);
   state->PopFramebufferBindings();
 
@@ -482,9 +348,36 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   inputs.Thickness = thickness;
   inputs.OpaqueColor = refraction;
   inputs.ParticleColors = in.Particles.HasColors();
-  inputs.Lines = toon;
-  parafluid::FluidShadePass::Settings shading;
-  shading.DisplayMode = mode;
+  inputs.Lines = lines;
+  parafluid::FluidShadeSettings shading;
+  this->FillShading(shading);
+  in.Shade.Run(frame, in.Targets, inputs, in.Environment, shading);
+  this->DrawOverSurface(frame, in.Targets, depth);
+  this->LastPassCount = frame.PassCount;
+  // Report, do not hide, a GL error of these passes (release VTK builds check none).
+  const GLenum error = glGetError();
+  if (error != GL_NO_ERROR)
+  {
+    vtkErrorMacro("OpenGL error 0x" << std::hex << error << std::dec << " in the screen-space fluid passes.");
+  }
+}
+
+//------------------------------------------------------------------------------
+// Style hooks: the plain fluid has none.
+void vtkPFScreenSpaceFluidMapper::PrepareStyle(vtkPointSet*, vtkUnsignedCharArray*, vtkOpenGLRenderWindow*,
+                                               vtkMTimeType)
+{
+}
+
+void vtkPFScreenSpaceFluidMapper::RunStylePasses(parafluid::FluidFrame&, parafluid::FluidScreenTargets&, int) {}
+
+void vtkPFScreenSpaceFluidMapper::DrawOverSurface(parafluid::FluidFrame&, parafluid::FluidScreenTargets&, int) {}
+
+void vtkPFScreenSpaceFluidMapper::ReleaseStyle(vtkWindow*) {}
+
+void vtkPFScreenSpaceFluidMapper::FillShading(parafluid::FluidShadeSettings& shading) const
+{
+  shading.DisplayMode = this->DisplayMode;
   std::copy(this->FluidColor, this->FluidColor + 3, shading.FluidColor);
   shading.AttenuationDistance = this->AttenuationDistance;
   shading.RefractiveIndex = this->RefractiveIndex;
@@ -493,37 +386,13 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   shading.SpecularStrength = this->SpecularStrength;
   shading.Ambient = this->Ambient;
   shading.ColorMix = this->ColorMix;
-  shading.ToonBands = this->ToonBands;
-  std::copy(this->LineColor, this->LineColor + 3, shading.LineColor);
-  shading.DepthContourSpacing = this->DepthContourSpacing;
-  in.Shade.Run(frame, in.Targets, inputs, in.Environment, shading);
-  if (mode == BrushStrokes && in.Strokes.SegmentCount() > 0)
-  {
-    // The strokes over the shaded fluid, on its visible surface (whose depth is written already).
-    parafluid::FluidBrushStrokePass::View view{ frame.ModelView,
-                                                frame.Projection,
-                                                { frame.Size[0], frame.Size[1] },
-                                                { frame.Origin[0], frame.Origin[1] },
-                                                { frame.RectMin[0], frame.RectMin[1] },
-                                                { frame.RectMax[0], frame.RectMax[1] },
-                                                frame.Parallel,
-                                                { frame.ProjectionCoefficients[0], frame.ProjectionCoefficients[1],
-                                                  frame.ProjectionCoefficients[2], frame.ProjectionCoefficients[3] } };
-    state->vtkglDepthMask(GL_FALSE);
-    // A stroke more than 3 particle radii behind the surface runs through hidden water.
-    if (!in.Strokes.Draw(window, view, in.Targets.Depth[depth], in.Targets.EmptyVAO, this->StrokeWidth,
-                         3.0 * frame.MaxRadius))
-    {
-      vtkErrorMacro("The brush-stroke shader did not compile (see the messages above).");
-    }
-    state->vtkglDepthMask(GL_TRUE);
-    ++frame.PassCount;
-  }
-  this->LastPassCount = frame.PassCount;
-  // Report, do not hide, a GL error of these passes (release VTK builds check none).
-  const GLenum error = glGetError();
-  if (error != GL_NO_ERROR)
-  {
-    vtkErrorMacro("OpenGL error 0x" << std::hex << error << std::dec << " in the screen-space fluid passes.");
-  }
+  // Toon bands and lines belong to the styles; without one they are not drawn.
+  shading.ToonBands = 4;
+  std::fill(shading.LineColor, shading.LineColor + 3, 0.0);
+  shading.DepthContourSpacing = 0.0;
+}
+
+double vtkPFScreenSpaceFluidMapper::GetUploadedMaxRadius() const
+{
+  return this->Internal->Particles.MaxRadius();
 }

@@ -5,8 +5,7 @@
  * Render is a sequencer of pass classes, in this order; each GPU pass covers only the part of the
  * viewport the fluid covers (its bounds projected, plus the filters' margin), and none runs that
  * the settings do not need:
- *  1. FluidParticleBuffers: the particles to the GPU when they changed (brush strokes: their
- *     layout, parafluid::npr::layoutBrushStrokes);
+ *  1. FluidParticleBuffers: the particles to the GPU when they changed;
  *  2. FluidFootprint: where the fluid lands on screen (CPU), and whether point sprites are safe;
  *  3. FluidScreenTargets: the targets, and a copy of the opaque scene drawn so far;
  *  4. FluidSplatPass: every particle an exact ray-traced sphere, writing the eye-space distance of
@@ -16,13 +15,16 @@
  *  6. FluidDepthSmoothingPass: the depth smoothed SmoothingIterations times: the narrow-range
  *     filter (Truong & Yuksel 2018) or the bilateral filter as separable pairs of 1D passes, or
  *     screen-space curvature flow (van der Laan et al. 2009), one pass per step;
- *  7. FluidToonLinePass (toon display): the structure tensor of the depth (blurred), a difference
- *     of Gaussians across its edges and its average along them (flow-guided DoG) into lines;
+ *  7. the style's offscreen passes (RunStylePasses; the toon lines of vtkPFToonFluidMapper);
  *  8. FluidShadePass, into the view: normals from the smoothed depth, Fresnel reflection of the
  *     environment, refraction of the opaque scene behind with Beer-Lambert attenuation, specular
- *     from the renderer's lights (or toon bands and lines), and the surface's depth so it
+ *     from the renderer's lights (or a style's toon bands and lines), and the surface's depth so it
  *     composites with the scene;
- *  9. FluidBrushStrokePass (brush-stroke display): strokes over the shaded fluid.
+ *  9. the style's drawing over the surface (DrawOverSurface; the strokes of
+ *     vtkPFBrushStrokeFluidMapper).
+ *
+ * Styles (Representations/NPR) derive from this class and fill its protected hooks; they reuse
+ * every pass above.
  *
  * The opaque scene must have been drawn first: use it with vtkPFScreenSpaceFluidActor, which
  * renders it after all opaque, translucent and volumetric geometry.
@@ -32,7 +34,6 @@
 #include "ParaFluidFluidRepresentationsModule.h"
 #include "vtkMapper.h"
 
-#include "ParticleContract.h"
 #include <memory>
 
 #include <string>
@@ -43,6 +44,8 @@ class vtkTexture;
 namespace parafluid
 {
 struct FluidFrame;
+struct FluidShadeSettings;
+class FluidScreenTargets;
 }
 
 class PARAFLUIDFLUIDREPRESENTATIONS_EXPORT vtkPFScreenSpaceFluidMapper : public vtkMapper
@@ -65,6 +68,8 @@ public:
     Normals = 2,
     Thickness = 3,
     ParticleDepth = 4,
+    // The shading of the styles in Representations/NPR (vtkPFToonFluidMapper,
+    // vtkPFBrushStrokeFluidMapper); not a display mode of this class.
     Toon = 5,
     BrushStrokes = 6
   };
@@ -98,8 +103,8 @@ public:
   //@}
 
   //@{
-  /// What is drawn: see DisplayModes.
-  vtkSetClampMacro(DisplayMode, int, 0, 6);
+  /// What is drawn: see DisplayModes (OpaqueSurface to ParticleDepth).
+  vtkSetClampMacro(DisplayMode, int, 0, 4);
   vtkGetMacro(DisplayMode, int);
   /// Colour of the fluid (opaque surface), and the tint white light takes through
   /// AttenuationDistance world units of it (transparent fluid, Beer-Lambert).
@@ -129,52 +134,6 @@ public:
   void GetBounds(double bounds[6]) override { this->vtkMapper::GetBounds(bounds); }
 
   //@{
-  /// Toon display: lighting quantised into ToonBands bands of FluidColor; lines of LineColor
-  /// where the depth steps by about DepthRange particle radii or more and at silhouettes, found
-  /// by a flow-guided difference of Gaussians (Kang et al. 2007) of width LineWidth pixels,
-  /// drawn where its response passes LineThreshold (in DepthRange units: larger, fewer lines);
-  /// with DepthContourSpacing > 0, also contour lines of the depth every that many particle radii.
-  vtkSetClampMacro(ToonBands, int, 2, 16);
-  vtkGetMacro(ToonBands, int);
-  vtkSetVector3Macro(LineColor, double);
-  vtkGetVector3Macro(LineColor, double);
-  vtkSetClampMacro(LineWidth, double, 0.5, 8.0);
-  vtkGetMacro(LineWidth, double);
-  vtkSetClampMacro(LineThreshold, double, 0.001, 10.0);
-  vtkGetMacro(LineThreshold, double);
-  vtkSetClampMacro(DepthContourSpacing, double, 0.0, 1000.0);
-  vtkGetMacro(DepthContourSpacing, double);
-  //@}
-
-  //@{
-  /// Brush-stroke display: toon bands of FluidColor painted over with strokes StrokeWidth pixels
-  /// wide along the flow (parafluid::npr::layoutBrushStrokes): flow lines from every
-  /// StrokeSeedStride-th particle integrated over StrokeDuration seconds through
-  /// StrokeVelocityArray, kept where at least StrokeLength particle radii long, and strokes of
-  /// that fixed length filling the slower water, at most MaxStrokes. A stroke takes its seed
-  /// particle's colour: the scalar colouring when on, else StrokeColorArray (e.g. density)
-  /// from dark to light FluidColor over its range, else FluidColor. Strokes are kept to the
-  /// fluid's footprint and its visible surface.
-  vtkSetClampMacro(StrokeWidth, double, 1.0, 64.0);
-  vtkGetMacro(StrokeWidth, double);
-  vtkSetClampMacro(StrokeLength, double, 0.5, 1000.0);
-  vtkGetMacro(StrokeLength, double);
-  vtkSetClampMacro(StrokeSeedStride, int, 1, 1000000);
-  vtkGetMacro(StrokeSeedStride, int);
-  vtkSetClampMacro(StrokeDuration, double, 1e-6, 1e6);
-  vtkGetMacro(StrokeDuration, double);
-  vtkSetClampMacro(MaxStrokes, int, 1, 10000000);
-  vtkGetMacro(MaxStrokes, int);
-  void SetStrokeVelocityArray(const char* name);
-  const char* GetStrokeVelocityArray() const { return this->StrokeVelocityArray.c_str(); }
-  void SetStrokeColorArray(const char* name);
-  const char* GetStrokeColorArray() const { return this->StrokeColorArray.c_str(); }
-  /// Strokes laid out for the last drawn data (brush-stroke display), and their segments.
-  vtkIdType GetLastStrokeCount() const { return this->LastStrokeCount; }
-  vtkIdType GetLastStrokeSegmentCount() const { return this->LastStrokeSegmentCount; }
-  //@}
-
-  //@{
   /// What the last Render did, for tests and benchmarks: GPU passes run (splats, filters,
   /// shading), the screen rectangle they covered (x0, y0, x1, y1 in viewport pixels), and how
   /// the splats were drawn.
@@ -192,6 +151,24 @@ protected:
   ~vtkPFScreenSpaceFluidMapper() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
+  //@{
+  /// Hooks of the styles built on this mapper (Representations/NPR); by default they do nothing.
+  /// After the particles were uploaded (`key`: what their upload followed, an MTime).
+  virtual void PrepareStyle(vtkPointSet* input, vtkUnsignedCharArray* colors, vtkOpenGLRenderWindow* window,
+                            vtkMTimeType key);
+  /// Whether the style's passes need the structure-tensor and line targets.
+  virtual bool StyleNeedsLines() const { return false; }
+  /// Offscreen passes after the depth smoothing; the smoothed depth is targets.Depth[depth].
+  virtual void RunStylePasses(parafluid::FluidFrame& frame, parafluid::FluidScreenTargets& targets, int depth);
+  /// The shading pass's settings (the base fills the fluid's own).
+  virtual void FillShading(parafluid::FluidShadeSettings& shading) const;
+  /// Drawing into the view after the shading, on the fluid's surface (its depth is written).
+  virtual void DrawOverSurface(parafluid::FluidFrame& frame, parafluid::FluidScreenTargets& targets, int depth);
+  virtual void ReleaseStyle(vtkWindow* window);
+  /// Largest radius of the particles uploaded last [world units].
+  double GetUploadedMaxRadius() const;
+  //@}
+
 private:
   vtkPFScreenSpaceFluidMapper(const vtkPFScreenSpaceFluidMapper&) = delete;
   void operator=(const vtkPFScreenSpaceFluidMapper&) = delete;
@@ -201,15 +178,12 @@ private:
 
   double ParticleRadius = 0.01;
   std::string RadiusArray;
-  // Render's parts. The particles (and for brush strokes their layout) to the GPU when they
-  // changed; false when no particle can be drawn.
+  // Render's parts. The particles to the GPU when they changed; false when none can be drawn.
   bool UploadParticles(vtkPointSet* input, vtkOpenGLRenderWindow* window);
   // The camera and where the fluid lands on screen into `frame`; false when it is not on screen.
   bool PlaceOnScreen(vtkRenderer* renderer, vtkActor* actor, parafluid::FluidFrame& frame);
   // Full-resolution pixels per thickness pixel, each way: 2, or 4 for particles small on screen.
   int ChooseThicknessFactor(const parafluid::FluidFrame& frame) const;
-  // Brush-stroke display: lays the strokes out for `input` and uploads them.
-  void LayOutStrokes(vtkPointSet* input, vtkUnsignedCharArray* colors, vtkOpenGLRenderWindow* window);
   int SmoothingMethod = NarrowRange;
   int SmoothingIterations = 3;
   double FilterSize = 4.0;
@@ -225,20 +199,6 @@ private:
   double SpecularStrength = 0.8;
   double Ambient = 0.2;
   double ColorMix = 0.8;
-  int ToonBands = 4;
-  double LineColor[3] = { 0.02, 0.06, 0.15 };
-  double LineWidth = 1.0;
-  double LineThreshold = 0.1;
-  double DepthContourSpacing = 0.0;
-  double StrokeWidth = 6.0;
-  double StrokeLength = 6.0;
-  int StrokeSeedStride = 3;
-  double StrokeDuration = 0.3;
-  int MaxStrokes = 4000;
-  std::string StrokeVelocityArray = parafluid::contract::Velocity;
-  std::string StrokeColorArray = parafluid::contract::Density;
-  vtkIdType LastStrokeCount = 0;
-  vtkIdType LastStrokeSegmentCount = 0;
   int LastPassCount = 0;
   int LastScreenRect[4] = { 0, 0, 0, 0 };
   bool LastUsedPointSprites = false;

@@ -78,9 +78,7 @@ vtkPFScreenSpaceFluidRepresentation::vtkPFScreenSpaceFluidRepresentation()
   , Actor(vtkSmartPointer<vtkPFScreenSpaceFluidActor>::New())
   , Particles(vtkSmartPointer<vtkPolyData>::New())
 {
-  this->Actor->SetMapper(this->Mapper);
-  this->Mapper->SetScalarVisibility(0);
-  this->Mapper->SetColorModeToMapScalars();
+  this->UseMapper(this->Mapper);
 }
 
 vtkPFScreenSpaceFluidRepresentation::~vtkPFScreenSpaceFluidRepresentation() = default;
@@ -89,6 +87,14 @@ void vtkPFScreenSpaceFluidRepresentation::PrintSelf(ostream& os, vtkIndent inden
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ParticleRadius: " << this->ParticleRadius << "\n";
+}
+
+void vtkPFScreenSpaceFluidRepresentation::UseMapper(vtkPFScreenSpaceFluidMapper* mapper)
+{
+  this->Mapper = mapper;
+  this->Actor->SetMapper(this->Mapper);
+  this->Mapper->SetScalarVisibility(0);
+  this->Mapper->SetColorModeToMapScalars();
 }
 
 vtkPFScreenSpaceFluidMapper* vtkPFScreenSpaceFluidRepresentation::GetMapper() const
@@ -435,54 +441,6 @@ void vtkPFScreenSpaceFluidRepresentation::SetRefractiveIndex(double index)
 void vtkPFScreenSpaceFluidRepresentation::SetRefractionStrength(double strength)
 {
   this->Mapper->SetRefractionStrength(strength);
-}
-void vtkPFScreenSpaceFluidRepresentation::SetToonBands(int bands)
-{
-  this->Mapper->SetToonBands(bands);
-}
-void vtkPFScreenSpaceFluidRepresentation::SetLineColor(double r, double g, double b)
-{
-  this->Mapper->SetLineColor(r, g, b);
-}
-void vtkPFScreenSpaceFluidRepresentation::SetLineWidth(double pixels)
-{
-  this->Mapper->SetLineWidth(pixels);
-}
-void vtkPFScreenSpaceFluidRepresentation::SetLineThreshold(double threshold)
-{
-  this->Mapper->SetLineThreshold(threshold);
-}
-void vtkPFScreenSpaceFluidRepresentation::SetDepthContourSpacing(double radii)
-{
-  this->Mapper->SetDepthContourSpacing(radii);
-}
-void vtkPFScreenSpaceFluidRepresentation::SetStrokeWidth(double pixels)
-{
-  this->Mapper->SetStrokeWidth(pixels);
-}
-void vtkPFScreenSpaceFluidRepresentation::SetStrokeLength(double radii)
-{
-  this->Mapper->SetStrokeLength(radii);
-}
-void vtkPFScreenSpaceFluidRepresentation::SetStrokeSeedStride(int stride)
-{
-  this->Mapper->SetStrokeSeedStride(stride);
-}
-void vtkPFScreenSpaceFluidRepresentation::SetStrokeDuration(double seconds)
-{
-  this->Mapper->SetStrokeDuration(seconds);
-}
-void vtkPFScreenSpaceFluidRepresentation::SetMaxStrokes(int count)
-{
-  this->Mapper->SetMaxStrokes(count);
-}
-void vtkPFScreenSpaceFluidRepresentation::SetStrokeVelocityArray(const char* name)
-{
-  this->Mapper->SetStrokeVelocityArray(name);
-}
-void vtkPFScreenSpaceFluidRepresentation::SetStrokeColorArray(const char* name)
-{
-  this->Mapper->SetStrokeColorArray(name);
 }
 void vtkPFScreenSpaceFluidRepresentation::SetShininess(double shininess)
 {

@@ -71,18 +71,6 @@ public:
   void SetShininess(double shininess);
   void SetSpecularStrength(double strength);
   void SetColorMix(double mix);
-  void SetToonBands(int bands);
-  void SetLineColor(double r, double g, double b);
-  void SetLineWidth(double pixels);
-  void SetLineThreshold(double threshold);
-  void SetDepthContourSpacing(double radii);
-  void SetStrokeWidth(double pixels);
-  void SetStrokeLength(double radii);
-  void SetStrokeSeedStride(int stride);
-  void SetStrokeDuration(double seconds);
-  void SetMaxStrokes(int count);
-  void SetStrokeVelocityArray(const char* name);
-  void SetStrokeColorArray(const char* name);
   /// Six cube map faces (+X, -X, +Y, -Y, +Z, -Z; +Y of the images is world +Z), all or none.
   void SetEnvironmentImage(int face, const char* file);
   //@}
@@ -92,6 +80,10 @@ public:
 protected:
   vtkPFScreenSpaceFluidRepresentation();
   ~vtkPFScreenSpaceFluidRepresentation() override;
+
+  /// Draws with `mapper` instead (a style's mapper, Representations/NPR); call from the
+  /// constructor of a derived representation, before any setting.
+  void UseMapper(vtkPFScreenSpaceFluidMapper* mapper);
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

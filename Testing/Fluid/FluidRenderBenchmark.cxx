@@ -8,8 +8,10 @@
 // Needs an X display (run under scripts/with-xvfb.sh). Our depth comes from the window's depth
 // buffer, which our mapper writes; vtkOpenGLFluidMapper's from its own eye-z target.
 #include "FluidScenes.h"
+#include "vtkPFBrushStrokeFluidMapper.h"
 #include "vtkPFScreenSpaceFluidActor.h"
 #include "vtkPFScreenSpaceFluidMapper.h"
+#include "vtkPFToonFluidMapper.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -216,14 +218,30 @@ public:
 };
 vtkStandardNewMacro(PeekFluidMapper);
 
+/// The mapper of a display mode: toon and brush strokes are styles with mappers of their own
+/// (Representations/NPR) built on the screen-space fluid's passes.
+vtkSmartPointer<vtkPFScreenSpaceFluidMapper> fluidMapper(int mode)
+{
+  if (mode == vtkPFScreenSpaceFluidMapper::Toon)
+  {
+    return vtkSmartPointer<vtkPFToonFluidMapper>::New();
+  }
+  if (mode == vtkPFScreenSpaceFluidMapper::BrushStrokes)
+  {
+    return vtkSmartPointer<vtkPFBrushStrokeFluidMapper>::New();
+  }
+  auto mapper = vtkSmartPointer<vtkPFScreenSpaceFluidMapper>::New();
+  mapper->SetDisplayMode(mode);
+  return mapper;
+}
+
 vtkSmartPointer<vtkProp> ours(vtkPolyData* data, double radius, int method, int iterations, int mode)
 {
-  vtkNew<vtkPFScreenSpaceFluidMapper> mapper;
+  vtkSmartPointer<vtkPFScreenSpaceFluidMapper> mapper = fluidMapper(mode);
   mapper->SetInputDataObject(data);
   mapper->SetParticleRadius(radius);
   mapper->SetSmoothingMethod(method);
   mapper->SetSmoothingIterations(iterations);
-  mapper->SetDisplayMode(mode);
   auto actor = vtkSmartPointer<vtkPFScreenSpaceFluidActor>::New();
   actor->SetMapper(mapper);
   return actor;
@@ -279,6 +297,11 @@ vtkPFScreenSpaceFluidMapper* lastMapper(Window& w)
   return actor ? vtkPFScreenSpaceFluidMapper::SafeDownCast(actor->GetMapper()) : nullptr;
 }
 
+vtkPFBrushStrokeFluidMapper* lastStrokes(Window& w)
+{
+  return vtkPFBrushStrokeFluidMapper::SafeDownCast(lastMapper(w));
+}
+
 int check()
 {
   Window w(480, 360);
@@ -309,17 +332,17 @@ int check()
     show(w, ours(swirl, spacing, M::NarrowRange, 3, M::BrushStrokes));
     w.Render();
     std::printf("brush strokes on a swirling block: %lld strokes, %lld segments\n",
-                static_cast<long long>(lastMapper(w)->GetLastStrokeCount()),
-                static_cast<long long>(lastMapper(w)->GetLastStrokeSegmentCount()));
+                static_cast<long long>(lastStrokes(w)->GetLastStrokeCount()),
+                static_cast<long long>(lastStrokes(w)->GetLastStrokeSegmentCount()));
     expect(lastMapper(w)->GetLastPassCount() == 2 + 6 + 1,
            "brush strokes: one stroke pass over the smoothed surface, no toon line passes");
-    expect(lastMapper(w)->GetLastStrokeCount() > 100, "brush strokes: a swirling block gets strokes");
+    expect(lastStrokes(w)->GetLastStrokeCount() > 100, "brush strokes: a swirling block gets strokes");
   }
   // Toon: the lit ball is flat bands of the fluid colour (plus the highlight and the lines), a
   // dark silhouette runs round it, and its smooth interior has no lines.
   {
     show(w, ours(ball, r, M::NarrowRange, 3, M::Toon));
-    auto* toon = lastMapper(w);
+    auto* toon = vtkPFToonFluidMapper::SafeDownCast(lastMapper(w));
     toon->SetFluidColor(0.1, 0.45, 0.75);
     w.Render();
     vtkNew<vtkUnsignedCharArray> rgb;
@@ -679,8 +702,8 @@ int main(int argc, char* argv[])
       const double first = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::printf("%-36s %6s %10.1f   (first frame: upload + %lld strokes laid out, %lld segments)\n",
                   "ours / brush strokes, first frame", "3", 1e3 * first,
-                  static_cast<long long>(lastMapper(w)->GetLastStrokeCount()),
-                  static_cast<long long>(lastMapper(w)->GetLastStrokeSegmentCount()));
+                  static_cast<long long>(lastStrokes(w)->GetLastStrokeCount()),
+                  static_cast<long long>(lastStrokes(w)->GetLastStrokeSegmentCount()));
       csv << scene << ",ours,brush strokes first frame,3," << first << ",,,,\n";
     }
     if (only == "npr")
