@@ -22,6 +22,7 @@
 
 #include <cstring>
 #include <numeric>
+#include <string>
 #include <vector>
 
 namespace parafluid::vtk
@@ -109,6 +110,20 @@ inline double fieldValue(vtkFieldData* fieldData, const char* name, double fallb
 {
   vtkDataArray* array = fieldData ? vtkArrayDownCast<vtkDataArray>(fieldData->GetAbstractArray(name)) : nullptr;
   return array && array->GetNumberOfTuples() > 0 ? array->GetComponent(0, 0) : fallback;
+}
+
+/// The particle spacing d [m]: `property` when positive, else the particle_spacing field data;
+/// 0 when neither gives one (then say missingSpacing(property name) to the user).
+inline double particleSpacing(double property, vtkFieldData* fieldData)
+{
+  return property > 0.0 ? property : fieldValue(fieldData, contract::ParticleSpacing, 0.0);
+}
+
+inline std::string missingSpacing(const char* propertyName)
+{
+  return std::string("set ") + propertyName +
+         " (the distance between neighbouring particles, metres); the input has no particle_spacing field data to take "
+         "it from";
 }
 
 inline void setFieldValue(vtkFieldData* fieldData, const char* name, const double* values, int count)

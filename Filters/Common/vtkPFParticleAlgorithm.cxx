@@ -21,15 +21,10 @@ void vtkPFParticleAlgorithm::ReportError(const std::string& message)
 
 double vtkPFParticleAlgorithm::ParticleSpacingOr(double property, vtkPointSet* input, const char* propertyName)
 {
-  const double d = property > 0.0
-                     ? property
-                     : parafluid::vtk::fieldValue(input->GetFieldData(), parafluid::contract::ParticleSpacing, 0.0);
+  const double d = parafluid::vtk::particleSpacing(property, input->GetFieldData());
   if (!(d > 0.0))
   {
-    this->ReportError(
-      std::string("set ") + propertyName +
-      " (the distance between neighbouring particles, metres); the input has no particle_spacing field data to "
-      "take it from");
+    this->ReportError(parafluid::vtk::missingSpacing(propertyName));
     return 0.0;
   }
   return d;

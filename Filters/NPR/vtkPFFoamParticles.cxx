@@ -49,13 +49,10 @@ int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inpu
   }
   output->ShallowCopy(input);
   const vtkIdType n = input->GetNumberOfPoints();
-  const double d = this->ParticleSpacing > 0.0
-                     ? this->ParticleSpacing
-                     : parafluid::vtk::fieldValue(input->GetFieldData(), parafluid::contract::ParticleSpacing, 0.0);
+  const double d = parafluid::vtk::particleSpacing(this->ParticleSpacing, input->GetFieldData());
   if (n > 0 && !(d > 0.0))
   {
-    vtkErrorMacro("Foam Particles: set ParticleSpacing (the distance between neighbouring particles, metres); the "
-                  "input has no particle_spacing field data to take it from");
+    vtkErrorMacro("Foam Particles: " << parafluid::vtk::missingSpacing("ParticleSpacing"));
     return 0;
   }
   parafluid::npr::FoamParameters p;
