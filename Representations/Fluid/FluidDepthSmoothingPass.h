@@ -3,15 +3,10 @@
 // method: the narrow-range filter (Truong & Yuksel 2018) or the bilateral filter as separable
 // pairs of 1D passes per iteration, or screen-space curvature flow (van der Laan et al. 2009),
 // one pass per iteration. Depth steps larger than the depth range stay edges.
-#include <memory>
-
-class vtkOpenGLQuadHelper;
-class vtkWindow;
+#include "FluidScreenQuad.h" // the passes' shared declarations
 
 namespace parafluid
 {
-class FluidScreenTargets;
-struct FluidFrame;
 
 class FluidDepthSmoothingPass
 {

@@ -1,6 +1,7 @@
 #pragma once
 // The screen-space fluid's full-screen passes: a fragment program over the fluid's rectangle
-// (vtkOpenGLQuadHelper), built once per context from the shared GLSL prelude and its body.
+// (vtkOpenGLQuadHelper), built once per context from the shared GLSL prelude and its body; and
+// the declarations every pass header needs.
 #include "FluidFrame.h"
 
 #include <memory>
@@ -12,6 +13,8 @@ class vtkWindow;
 
 namespace parafluid
 {
+class FluidScreenTargets;
+
 /// Builds `quad` from FluidScreenCommon.glsl, `defines` and `body` the first time, readies its
 /// program after that, and sets the uniforms every screen pass reads (rectangle, viewport size,
 /// projection). Returns the program.

@@ -4,16 +4,11 @@
 // colours), refraction of the opaque scene behind with Beer-Lambert attenuation, specular from
 // the renderer's lights, or toon bands and lines; and the surface's depth, so that the fluid and
 // the opaque scene hide each other.
-#include <memory>
+#include "FluidScreenQuad.h" // the passes' shared declarations
 
-class vtkOpenGLQuadHelper;
 class vtkTexture;
-class vtkWindow;
-
 namespace parafluid
 {
-class FluidScreenTargets;
-struct FluidFrame;
 
 /// The mapper's settings of the same names (vtkPFScreenSpaceFluidMapper::FillShading fills every field).
 struct FluidShadeSettings

@@ -1,15 +1,10 @@
 #pragma once
 // Thickness (transparent fluid and the thickness display): the splatted chord lengths blurred by
 // a separable Gaussian at the thickness target's reduced resolution, in two passes.
-#include <memory>
-
-class vtkOpenGLQuadHelper;
-class vtkWindow;
+#include "FluidScreenQuad.h" // the passes' shared declarations
 
 namespace parafluid
 {
-class FluidScreenTargets;
-struct FluidFrame;
 
 class FluidThicknessBlurPass
 {

@@ -2,15 +2,10 @@
 // Toon display: line coverage from the smoothed depth by a flow-guided difference of Gaussians
 // (Kang, Lee & Chui 2007) in five passes: the structure tensor of the depth, its separable blur,
 // the DoG across the edges, and its average along them, thresholded.
-#include <memory>
-
-class vtkOpenGLQuadHelper;
-class vtkWindow;
+#include "FluidScreenQuad.h" // the passes' shared declarations
 
 namespace parafluid
 {
-class FluidScreenTargets;
-struct FluidFrame;
 
 class FluidToonLinePass
 {
