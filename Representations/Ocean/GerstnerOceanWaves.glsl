@@ -1,6 +1,6 @@
 //=========================================================================
 // ParaFluid Gerstner ocean: the wave model on the GPU. Mirrors
-// parafluid::ocean::GerstnerOcean::evaluate (Filters/Core/GerstnerOcean.cxx) line for line; a
+// parafluid::ocean::GerstnerOcean::evaluate (Filters/Ocean/Core/GerstnerOcean.cxx) line for line; a
 // pvpython test renders both and compares images and depth buffers. Uniforms (oceanAmplitude,
 // ...) are declared by VTK from the representation's custom uniforms; OCEAN_FLOOR is defined
 // when a bathymetry is bound, OCEAN_DEEP in deep water without one (oceanFloorTex: elevation; oceanPhase0..7: phase, wavenumber and
