@@ -4,7 +4,6 @@
 #include "ParticleStateArrays.h"
 #include "TriangleBoundaryFromSurface.h"
 
-#include "parafluid/sph/SPHParameters.h"
 #include "parafluid/sph/SPHSolver.h"
 
 #include "vtkDataArray.h"

@@ -85,8 +85,7 @@ int vtkPFCarpetSurface::RequestParticles(const Particles& particles, vtkInformat
           for (int i = 0; i < r; ++i)
           {
             const double x = b[0] + (i + 0.5) * (b[1] - b[0]) / r, y = b[2] + (j + 0.5) * (b[3] - b[2]) / r;
-            // Depth below sea level 0 is minus the ground height.
-            ground[static_cast<std::size_t>(j) * r + i] = static_cast<float>(-terrain->depth(x, y));
+            ground[static_cast<std::size_t>(j) * r + i] = static_cast<float>(terrain->heightAt(x, y));
           }
         }
       }

@@ -127,14 +127,18 @@ void HeightField::locate(double x, double y, int& i, int& j, double& fx, double&
   fy = gy - j;
 }
 
-double HeightField::depth(double x, double y) const
+double HeightField::heightAt(double x, double y) const
 {
   int i, j;
   double fx, fy;
   this->locate(x, y, i, j, fx, fy);
-  const double e = (1 - fx) * (1 - fy) * this->elevationAt(i, j) + fx * (1 - fy) * this->elevationAt(i + 1, j) +
-                   (1 - fx) * fy * this->elevationAt(i, j + 1) + fx * fy * this->elevationAt(i + 1, j + 1);
-  return this->SeaLevel - e;
+  return (1 - fx) * (1 - fy) * this->elevationAt(i, j) + fx * (1 - fy) * this->elevationAt(i + 1, j) +
+         (1 - fx) * fy * this->elevationAt(i, j + 1) + fx * fy * this->elevationAt(i + 1, j + 1);
+}
+
+double HeightField::depth(double x, double y) const
+{
+  return this->SeaLevel - this->heightAt(x, y);
 }
 
 void HeightField::depthGradient(double x, double y, double gradient[2]) const

@@ -1,6 +1,7 @@
 #pragma once
-// The sea floor under an ocean: elevation on a regular grid in x, y, and the sea level, giving
-// the water depth anywhere (bilinear, held constant beyond the grid's edges).
+// A height field: elevation on a regular grid in x, y (bilinear between nodes, held constant beyond
+// the grid's edges) and a water level above it, giving the depth of water anywhere. The ocean's
+// sea floor (ocean::Bathymetry) and the carpet surface's terrain are height fields.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -22,6 +23,8 @@ public:
   static HeightField fromTriangles(const std::vector<float>& points, const std::vector<std::uint32_t>& triangles,
                                    int nx, int ny, double seaLevel);
 
+  /// Elevation [m] at (x, y).
+  double heightAt(double x, double y) const;
   /// Water depth [m] at (x, y): sea level minus the floor; zero or negative on land.
   double depth(double x, double y) const;
   /// Gradient of the depth [m/m] at (x, y) (of the bilinear interpolant, per cell).
