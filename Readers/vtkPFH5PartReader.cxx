@@ -1,8 +1,11 @@
 #include "vtkPFH5PartReader.h"
 
-#include "H5Handle.h"
-#include "H5PartLayout.h"
 #include "ParticleArrays.h"
+#include "parafluid/common/MemoryBudget.h"
+#include "parafluid/h5part/Attributes.h"
+#include "parafluid/h5part/Datasets.h"
+#include "parafluid/h5part/Handle.h"
+#include "parafluid/h5part/Layout.h"
 
 #include "vtkDataArraySelection.h"
 #include "vtkDoubleArray.h"
@@ -18,131 +21,66 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 #include "vtkTypeInt64Array.h"
+#include "vtkTypeUInt64Array.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <new>
 #include <numeric>
+#include <sys/stat.h>
 
 namespace
 {
 using parafluid::h5::Handle;
+using parafluid::h5::ValueType;
 
-/// VTK array of the type that holds a dataset's values without loss, and its HDF5 memory type.
-vtkSmartPointer<vtkDataArray> arrayForDataset(hid_t dataset, hid_t& memoryType)
+vtkSmartPointer<vtkDataArray> arrayOf(ValueType type)
 {
-  Handle type(H5Dget_type(dataset), H5Tclose);
-  const std::size_t size = H5Tget_size(type);
-  if (H5Tget_class(type) == H5T_FLOAT)
+  switch (type)
   {
-    if (size <= 4)
-    {
-      memoryType = H5T_NATIVE_FLOAT;
+    case ValueType::Float32:
       return vtkSmartPointer<vtkFloatArray>::New();
-    }
-    memoryType = H5T_NATIVE_DOUBLE;
-    return vtkSmartPointer<vtkDoubleArray>::New();
+    case ValueType::Float64:
+      return vtkSmartPointer<vtkDoubleArray>::New();
+    case ValueType::Int32:
+      return vtkSmartPointer<vtkIntArray>::New();
+    case ValueType::Int64:
+      return vtkSmartPointer<vtkTypeInt64Array>::New();
+    default:
+      return vtkSmartPointer<vtkTypeUInt64Array>::New();
   }
-  if (size <= 4)
-  {
-    memoryType = H5T_NATIVE_INT;
-    return vtkSmartPointer<vtkIntArray>::New();
-  }
-  memoryType = H5T_NATIVE_INT64;
-  return vtkSmartPointer<vtkTypeInt64Array>::New();
 }
 
-/// Reads rows [offset, offset + count) of a dataset of N or N x k values into column `column`
-/// (of `stride` columns) of `target`. A component of a vector (x of the points, vx of velocity)
-/// is read contiguously and then interleaved: HDF5's own strided scatter is several times slower
-/// on chunked, compressed datasets.
-bool readSlice(hid_t group, const std::string& name, hid_t memoryType, hsize_t offset, hsize_t count, void* target,
-               hsize_t stride, hsize_t column)
+/// Sizes an array to n tuples; false when the memory could not be had (VTK then leaves it empty).
+bool allocate(vtkDataArray* array, int components, vtkIdType n)
 {
-  Handle dataset(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose);
-  if (!dataset.valid())
-  {
-    return false;
-  }
-  Handle fileSpace(H5Dget_space(dataset), H5Sclose);
-  const int rank = H5Sget_simple_extent_ndims(fileSpace);
-  hsize_t dims[2] = { 0, 1 };
-  H5Sget_simple_extent_dims(fileSpace, dims, nullptr);
-  const hsize_t width = rank == 2 ? dims[1] : 1;
-  if (count == 0)
-  {
-    return true;
-  }
-  const hsize_t fileStart[2] = { offset, 0 };
-  const hsize_t fileCount[2] = { count, width };
-  if (H5Sselect_hyperslab(fileSpace, H5S_SELECT_SET, fileStart, nullptr, fileCount, nullptr) < 0)
-  {
-    return false;
-  }
-  const hsize_t memoryDims[2] = { count, width };
-  Handle memorySpace(H5Screate_simple(rank, memoryDims, nullptr), H5Sclose);
-  if (width == stride)
-  {
-    return H5Dread(dataset, memoryType, memorySpace, fileSpace, H5P_DEFAULT, target) >= 0;
-  }
-  if (width != 1)
-  {
-    return false; // an N x k dataset is never a component of a wider array
-  }
-  const std::size_t valueSize = H5Tget_size(memoryType);
-  std::vector<unsigned char> component(static_cast<std::size_t>(count) * valueSize);
-  if (H5Dread(dataset, memoryType, memorySpace, fileSpace, H5P_DEFAULT, component.data()) < 0)
-  {
-    return false;
-  }
-  auto* out = static_cast<unsigned char*>(target) + column * valueSize;
-  const std::size_t step = static_cast<std::size_t>(stride) * valueSize;
-  for (hsize_t i = 0; i < count; ++i)
-  {
-    std::memcpy(out + i * step, component.data() + i * valueSize, valueSize);
-  }
-  return true;
-}
-
-herr_t collectAttributeName(hid_t, const char* name, const H5A_info_t*, void* data)
-{
-  static_cast<std::vector<std::string>*>(data)->emplace_back(name);
-  return 0;
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(n);
+  return array->GetNumberOfTuples() == n;
 }
 
 /// Numeric root attributes become field-data arrays; string attributes become string arrays.
-void readSceneConstants(hid_t file, vtkFieldData* fieldData)
+void readSceneConstants(hid_t file, vtkFieldData* fieldData, std::vector<std::string>& warnings)
 {
-  std::vector<std::string> names;
-  H5Aiterate2(file, H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, collectAttributeName, &names);
-  for (const std::string& name : names)
+  for (const auto& attribute : parafluid::h5::readAttributes(file, warnings))
   {
-    std::vector<double> values;
-    if (parafluid::h5::readNumericAttribute(file, name.c_str(), values))
+    if (attribute.text)
     {
-      vtkNew<vtkDoubleArray> array;
-      array->SetName(name.c_str());
-      array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
-      std::copy(values.begin(), values.end(), array->GetPointer(0));
-      fieldData->AddArray(array);
-      continue;
-    }
-    Handle attribute(H5Aopen(file, name.c_str(), H5P_DEFAULT), H5Aclose);
-    Handle type(H5Aget_type(attribute), H5Tclose);
-    if (H5Tget_class(type) != H5T_STRING || H5Tis_variable_str(type) > 0)
-    {
-      continue;
-    }
-    std::string text(H5Tget_size(type), '\0');
-    Handle memoryType(H5Tcopy(type), H5Tclose);
-    if (H5Aread(attribute, memoryType, text.data()) >= 0)
-    {
-      text.erase(std::find(text.begin(), text.end(), '\0'), text.end());
       vtkNew<vtkStringArray> array;
-      array->SetName(name.c_str());
-      array->InsertNextValue(text);
+      array->SetName(attribute.name.c_str());
+      for (const std::string& value : attribute.strings)
+      {
+        array->InsertNextValue(value);
+      }
       fieldData->AddArray(array);
+      continue;
     }
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(attribute.name.c_str());
+    array->SetNumberOfValues(static_cast<vtkIdType>(attribute.numbers.size()));
+    std::copy(attribute.numbers.begin(), attribute.numbers.end(), array->GetPointer(0));
+    fieldData->AddArray(array);
   }
 }
 
@@ -151,6 +89,19 @@ Handle openFile(const std::string& fileName, std::string& error)
   if (fileName.empty())
   {
     error = "no file name was given";
+    return {};
+  }
+  // H5Fis_hdf5 blocks forever on a named pipe and fails oddly on folders and devices: only
+  // regular files (or links to one) go to HDF5.
+  struct stat status;
+  if (::stat(fileName.c_str(), &status) != 0)
+  {
+    error = "cannot open '" + fileName + "' (missing or unreadable)";
+    return {};
+  }
+  if (!S_ISREG(status.st_mode))
+  {
+    error = "'" + fileName + "' is not a regular file (a folder, pipe or device)";
     return {};
   }
   parafluid::h5::QuietErrors quiet;
@@ -230,11 +181,20 @@ vtkMTimeType vtkPFH5PartReader::GetMTime()
   return std::max(this->Superclass::GetMTime(), this->PointArraySelection->GetMTime());
 }
 
+void vtkPFH5PartReader::WarnOnce(const std::string& warning)
+{
+  if (this->Warned.insert(warning).second)
+  {
+    vtkWarningMacro("ParaFluid H5Part Reader: '" << this->FileName << "': " << warning);
+  }
+}
+
 int vtkPFH5PartReader::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   this->StepGroups.clear();
   this->StepTimes.clear();
   this->InformationError.clear();
+  this->Warned.clear();
   std::string error;
   Handle file = openFile(this->FileName, error);
   if (!file.valid())
@@ -244,12 +204,17 @@ int vtkPFH5PartReader::RequestInformation(vtkInformation*, vtkInformationVector*
     return 0;
   }
   parafluid::h5::QuietErrors quiet;
-  const auto steps = parafluid::h5::listSteps(file, error);
+  std::vector<std::string> warnings;
+  const auto steps = parafluid::h5::listSteps(file, error, &warnings);
   if (steps.empty())
   {
     this->InformationError = "'" + this->FileName + "': " + error;
     vtkErrorMacro("ParaFluid H5Part Reader: " << this->InformationError);
     return 0;
+  }
+  for (const std::string& warning : warnings)
+  {
+    this->WarnOnce(warning);
   }
   for (const auto& s : steps)
   {
@@ -276,26 +241,10 @@ int vtkPFH5PartReader::RequestInformation(vtkInformation*, vtkInformationVector*
 
   vtkInformation* info = outputVector->GetInformationObject(0);
   info->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
-  if (std::is_sorted(this->StepTimes.begin(), this->StepTimes.end()) &&
-      std::adjacent_find(this->StepTimes.begin(), this->StepTimes.end()) == this->StepTimes.end())
-  {
-    info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), this->StepTimes.data(),
-              static_cast<int>(this->StepTimes.size()));
-    const double range[2] = { this->StepTimes.front(), this->StepTimes.back() };
-    info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
-  }
-  else
-  {
-    vtkWarningMacro("ParaFluid H5Part Reader: step times are not increasing; steps are offered by index");
-    for (std::size_t k = 0; k < this->StepTimes.size(); ++k)
-    {
-      this->StepTimes[k] = static_cast<double>(k);
-    }
-    info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), this->StepTimes.data(),
-              static_cast<int>(this->StepTimes.size()));
-    const double range[2] = { 0.0, static_cast<double>(this->StepTimes.size() - 1) };
-    info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
-  }
+  info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), this->StepTimes.data(),
+            static_cast<int>(this->StepTimes.size()));
+  const double range[2] = { this->StepTimes.front(), this->StepTimes.back() };
+  info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
   return 1;
 }
 
@@ -303,27 +252,52 @@ int vtkPFH5PartReader::RequestData(vtkInformation*, vtkInformationVector**, vtkI
 {
   vtkInformation* info = outputVector->GetInformationObject(0);
   vtkPolyData* output = vtkPolyData::GetData(info);
+  std::string error;
+  try
+  {
+    if (this->ReadStep(info, output, error))
+    {
+      return 1;
+    }
+  }
+  catch (const std::bad_alloc&)
+  {
+    error = "'" + this->FileName + "': not enough memory to read this step";
+  }
+  catch (const std::exception& e)
+  {
+    error = "'" + this->FileName + "': " + e.what();
+  }
+  output->Initialize();
+  vtkErrorMacro("ParaFluid H5Part Reader: " << error);
+  return 0;
+}
+
+bool vtkPFH5PartReader::ReadStep(vtkInformation* info, vtkPolyData* output, std::string& error)
+{
   if (this->StepGroups.empty())
   {
-    vtkErrorMacro("ParaFluid H5Part Reader: " << (this->InformationError.empty() ? std::string("no steps to read")
-                                                                                 : this->InformationError));
-    return 0;
+    error = this->InformationError.empty() ? std::string("no steps to read") : this->InformationError;
+    return false;
   }
-  std::string error;
   Handle file = openFile(this->FileName, error);
   if (!file.valid())
   {
-    vtkErrorMacro("ParaFluid H5Part Reader: " << error);
-    return 0;
+    return false;
   }
   parafluid::h5::QuietErrors quiet;
+  const std::string where = "'" + this->FileName + "': ";
 
-  // The step whose time is nearest the requested one.
+  // The step whose time is nearest the requested one (times are finite: listSteps sees to it).
   std::size_t step = 0;
-  double time = this->StepTimes[0];
   if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
   {
     const double requested = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    if (std::isnan(requested))
+    {
+      error = where + "the requested time is NaN";
+      return false;
+    }
     for (std::size_t k = 0; k < this->StepTimes.size(); ++k)
     {
       if (std::fabs(this->StepTimes[k] - requested) < std::fabs(this->StepTimes[step] - requested))
@@ -331,14 +305,18 @@ int vtkPFH5PartReader::RequestData(vtkInformation*, vtkInformationVector**, vtkI
         step = k;
       }
     }
-    time = this->StepTimes[step];
   }
+  const double time = this->StepTimes[step];
   const std::string& groupName = this->StepGroups[step];
   const auto layout = parafluid::h5::describeStep(file, groupName);
   if (!layout.error.empty())
   {
-    vtkErrorMacro("ParaFluid H5Part Reader: '" << this->FileName << "': " << layout.error);
-    return 0;
+    error = where + layout.error;
+    return false;
+  }
+  for (const std::string& warning : layout.warnings)
+  {
+    this->WarnOnce(warning);
   }
   Handle group(H5Gopen2(file, groupName.c_str(), H5P_DEFAULT), H5Gclose);
 
@@ -349,111 +327,147 @@ int vtkPFH5PartReader::RequestData(vtkInformation*, vtkInformationVector**, vtkI
   const int pieces = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
                        ? std::max(1, info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
                        : 1;
-  const hsize_t total = layout.particles;
-  const hsize_t begin = total * static_cast<hsize_t>(piece) / static_cast<hsize_t>(pieces);
-  const hsize_t end = total * static_cast<hsize_t>(piece + 1) / static_cast<hsize_t>(pieces);
-  const hsize_t count = end - begin;
+  const std::uint64_t total = layout.particles;
+  const std::uint64_t begin = total / pieces * piece + std::min<std::uint64_t>(piece, total % pieces);
+  const std::uint64_t count = total / pieces + (static_cast<std::uint64_t>(piece) < total % pieces ? 1 : 0);
   const auto n = static_cast<vtkIdType>(count);
 
-  // Coordinates, keeping the file's precision.
-  hid_t memoryType = H5T_NATIVE_FLOAT;
-  vtkSmartPointer<vtkDataArray> coordinates;
+  // What this step will take in memory, checked before anything is allocated.
+  const auto coordinateType = parafluid::h5::commonValueType(group, layout.coordinateDatasets) == ValueType::Float32
+                                ? ValueType::Float32
+                                : ValueType::Float64;
+  double bytes = static_cast<double>(count) * (3.0 * parafluid::h5::valueBytes(coordinateType) + 8.0 + 16.0);
+  std::vector<ValueType> arrayTypes;
+  for (const auto& source : layout.arrays)
   {
-    Handle first(H5Dopen2(group, layout.coordinateDatasets[0].c_str(), H5P_DEFAULT), H5Dclose);
-    coordinates = arrayForDataset(first, memoryType);
-    if (memoryType != H5T_NATIVE_FLOAT && memoryType != H5T_NATIVE_DOUBLE)
+    arrayTypes.push_back(parafluid::h5::commonValueType(group, source.datasets));
+    if (this->PointArraySelection->ArrayIsEnabled(source.name.c_str()))
     {
-      coordinates = vtkSmartPointer<vtkDoubleArray>::New();
-      memoryType = H5T_NATIVE_DOUBLE;
+      bytes += static_cast<double>(count) * source.components * parafluid::h5::valueBytes(arrayTypes.back());
     }
   }
-  coordinates->SetNumberOfComponents(3);
-  coordinates->SetNumberOfTuples(n);
-  bool ok = true;
+  const std::string tooLarge =
+    parafluid::checkMemoryBudget(bytes, groupName + " (" + std::to_string(total) + " particles, as the file declares)");
+  if (!tooLarge.empty())
+  {
+    error = where + tooLarge + "; deselect point arrays or read it under MPI in pieces";
+    return false;
+  }
+
+  // Coordinates, keeping the file's precision.
+  vtkSmartPointer<vtkDataArray> coordinates = arrayOf(coordinateType);
+  if (!allocate(coordinates, 3, n))
+  {
+    error = where + "not enough memory for the coordinates of " + groupName;
+    return false;
+  }
   for (std::size_t c = 0; c < layout.coordinateDatasets.size(); ++c)
   {
-    ok = ok &&
-         readSlice(group, layout.coordinateDatasets[c], memoryType, begin, count, coordinates->GetVoidPointer(0), 3, c);
-  }
-  if (!ok)
-  {
-    vtkErrorMacro("ParaFluid H5Part Reader: failed to read the coordinates of " << groupName);
-    return 0;
-  }
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    double p[3];
-    coordinates->GetTuple(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    if (!parafluid::h5::readSlice(group, layout.coordinateDatasets[c], coordinateType, begin, count,
+                                  coordinates->GetVoidPointer(0), 3, layout.coordinateDatasets.size() > 1 ? c : 0,
+                                  error))
     {
-      vtkWarningMacro("ParaFluid H5Part Reader: particle " << begin + static_cast<hsize_t>(i) << " of " << groupName
-                                                           << " has a NaN or infinite coordinate");
-      break;
+      error = where + groupName + ": " + error;
+      return false;
     }
   }
+  this->WarnAboutNonFinite(coordinates, "coordinate", groupName, begin);
   vtkNew<vtkPoints> points;
   points->SetData(coordinates);
   output->SetPoints(points);
-
   parafluid::vtk::setOneVertexPerPoint(output, n);
 
   // Stable ids: the file's, else the index in the file.
   vtkNew<vtkTypeInt64Array> ids;
   ids->SetName(parafluid::contract::Id);
-  ids->SetNumberOfValues(n);
-  if (!layout.idDataset.empty())
+  if (!allocate(ids, 1, n))
   {
-    ok = readSlice(group, layout.idDataset, H5T_NATIVE_INT64, begin, count, ids->GetPointer(0), 1, 0);
+    error = where + "not enough memory for the ids of " + groupName;
+    return false;
   }
-  else
+  std::string idProblem;
+  if (layout.idDataset.empty() ||
+      !parafluid::h5::readIds(group, layout.idDataset, begin, count,
+                              reinterpret_cast<std::int64_t*>(ids->GetPointer(0)), idProblem))
   {
+    if (!idProblem.empty())
+    {
+      this->WarnOnce(groupName + ": " + idProblem + "; each particle's id is its index in the file instead");
+    }
     std::iota(ids->GetPointer(0), ids->GetPointer(0) + n, static_cast<vtkTypeInt64>(begin));
   }
   output->GetPointData()->AddArray(ids);
 
-  for (const auto& source : layout.arrays)
+  for (std::size_t k = 0; k < layout.arrays.size(); ++k)
   {
-    if (!ok || this->CheckAbort())
+    const auto& source = layout.arrays[k];
+    if (this->CheckAbort())
     {
-      break;
+      error = where + "reading was aborted";
+      return false;
     }
     if (!this->PointArraySelection->ArrayIsEnabled(source.name.c_str()))
     {
       continue;
     }
-    Handle first(H5Dopen2(group, source.datasets[0].c_str(), H5P_DEFAULT), H5Dclose);
-    hid_t type = H5T_NATIVE_FLOAT;
-    auto array = arrayForDataset(first, type);
+    auto array = arrayOf(arrayTypes[k]);
     array->SetName(source.name.c_str());
-    array->SetNumberOfComponents(source.components);
-    array->SetNumberOfTuples(n);
-    for (std::size_t c = 0; c < source.datasets.size() && ok; ++c)
+    if (!allocate(array, source.components, n))
     {
-      ok = readSlice(group, source.datasets[c], type, begin, count, array->GetVoidPointer(0),
-                     static_cast<hsize_t>(source.components), source.datasets.size() > 1 ? c : 0);
+      error = where + "not enough memory for array " + source.name + " of " + groupName;
+      return false;
+    }
+    for (std::size_t c = 0; c < source.datasets.size(); ++c)
+    {
+      if (!parafluid::h5::readSlice(group, source.datasets[c], arrayTypes[k], begin, count, array->GetVoidPointer(0),
+                                    static_cast<std::uint64_t>(source.components), source.datasets.size() > 1 ? c : 0,
+                                    error))
+      {
+        error = where + groupName + ": " + error;
+        return false;
+      }
     }
     output->GetPointData()->AddArray(array);
-    this->UpdateProgress(0.1 + 0.9 * static_cast<double>(&source - layout.arrays.data() + 1) /
-                                 static_cast<double>(layout.arrays.size()));
-  }
-  if (!ok)
-  {
-    vtkErrorMacro("ParaFluid H5Part Reader: failed to read a dataset of " << groupName);
-    output->Initialize();
-    return 0;
+    this->UpdateProgress(0.1 + 0.9 * static_cast<double>(k + 1) / static_cast<double>(layout.arrays.size()));
   }
   if (auto* velocity = output->GetPointData()->GetArray(parafluid::contract::Velocity))
   {
     output->GetPointData()->SetVectors(velocity);
   }
 
-  readSceneConstants(file, output->GetFieldData());
+  std::vector<std::string> warnings;
+  readSceneConstants(file, output->GetFieldData(), warnings);
+  for (const std::string& warning : warnings)
+  {
+    this->WarnOnce(warning);
+  }
   vtkNew<vtkDoubleArray> timeArray;
   timeArray->SetName(parafluid::contract::Time);
   timeArray->InsertNextValue(time);
   output->GetFieldData()->AddArray(timeArray);
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
-  return 1;
+  return true;
+}
+
+void vtkPFH5PartReader::WarnAboutNonFinite(vtkDataArray* values, const char* what, const std::string& groupName,
+                                           std::uint64_t begin)
+{
+  const vtkIdType n = values->GetNumberOfTuples();
+  const int components = values->GetNumberOfComponents();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < components; ++c)
+    {
+      if (!std::isfinite(values->GetComponent(i, c)))
+      {
+        this->WarnOnce(groupName + ": particle " + std::to_string(begin + static_cast<std::uint64_t>(i)) +
+                       " has a NaN or infinite " + what +
+                       " (read as it is; filters that need finite values refuse or "
+                       "drop such particles)");
+        return;
+      }
+    }
+  }
 }
 
 void vtkPFH5PartReader::PrintSelf(ostream& os, vtkIndent indent)

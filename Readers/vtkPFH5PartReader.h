@@ -9,6 +9,12 @@
  * reads its own contiguous slice of particles. Numeric root attributes (particle_spacing,
  * smoothing_length, rest_density, ...) go to field data. Output: one vertex per particle and an
  * int64 "id" array (the id dataset, else the particle's index in the file).
+ *
+ * What a file declares is checked before anything is allocated (README, "What the reader
+ * refuses"): datasets never written or beyond the end of the file, missing sources of virtual
+ * datasets, steps larger than the memory budget are errors; datasets no point array can hold,
+ * attributes it cannot read, non-integer ids and step times that are not finite and increasing
+ * are warnings that say what was done instead.
  */
 #pragma once
 
@@ -16,9 +22,12 @@
 #include "vtkNew.h"
 #include "vtkPolyDataAlgorithm.h"
 
+#include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
+class vtkDataArray;
 class vtkDataArraySelection;
 
 class PARAFLUIDREADERS_EXPORT vtkPFH5PartReader : public vtkPolyDataAlgorithm
@@ -58,4 +67,10 @@ private:
   std::vector<std::string> StepGroups;
   std::vector<double> StepTimes;
   std::string InformationError; // why RequestInformation failed, repeated by RequestData
+  std::set<std::string> Warned; // warnings given since the file was (re)opened: each is given once
+
+  /// The step nearest the requested time into `output`; false with `error` when it cannot be read.
+  bool ReadStep(vtkInformation* info, vtkPolyData* output, std::string& error);
+  void WarnOnce(const std::string& warning);
+  void WarnAboutNonFinite(vtkDataArray* values, const char* what, const std::string& groupName, std::uint64_t begin);
 };

@@ -1,7 +1,9 @@
 #include "vtkPFH5PartWriter.h"
 
-#include "H5Handle.h"
 #include "ParticleArrays.h"
+#include "TemporaryFiles.h"
+#include "parafluid/h5part/Attributes.h"
+#include "parafluid/h5part/Handle.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -17,17 +19,25 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
 
 #include <algorithm>
 #include <cstdio>
+#include <new>
 #include <unistd.h>
 
 using parafluid::h5::Handle;
 
 struct vtkPFH5PartWriter::OpenFile
 {
-  Handle File;
+  explicit OpenFile(const std::string& temporaryName)
+    : TemporaryName(temporaryName)
+    , Guard(temporaryName)
+  {
+  }
   std::string TemporaryName;
+  parafluid::h5::TemporaryFileGuard Guard; // removes the temporary if a signal ends the process
+  Handle File;
 };
 
 namespace
@@ -58,6 +68,27 @@ bool writeDataset(hid_t group, const std::string& name, hid_t memoryType, hid_t 
     return false;
   }
   return n == 0 || H5Dwrite(dataset, memoryType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0;
+}
+
+bool writeStringAttribute(hid_t object, const char* name, vtkStringArray* strings)
+{
+  std::size_t width = 1;
+  for (vtkIdType k = 0; k < strings->GetNumberOfValues(); ++k)
+  {
+    width = std::max(width, strings->GetValue(k).size() + 1);
+  }
+  const auto count = static_cast<hsize_t>(strings->GetNumberOfValues());
+  std::vector<char> text(static_cast<std::size_t>(count) * width, '\0');
+  for (vtkIdType k = 0; k < strings->GetNumberOfValues(); ++k)
+  {
+    const std::string& value = strings->GetValue(k);
+    std::copy(value.begin(), value.end(), text.begin() + static_cast<std::ptrdiff_t>(k * width));
+  }
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(type, width);
+  Handle space(H5Screate_simple(1, &count, nullptr), H5Sclose);
+  Handle attribute(H5Acreate2(object, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  return attribute.valid() && H5Awrite(attribute, type, text.data()) >= 0;
 }
 
 bool writeDoubleAttribute(hid_t object, const char* name, const double* values, hsize_t count)
@@ -149,36 +180,34 @@ vtkTypeBool vtkPFH5PartWriter::ProcessRequest(vtkInformation* request, vtkInform
     vtkDataObject* local = inputInfo->Get(vtkDataObject::DATA_OBJECT());
     const bool allSteps = this->WriteAllTimeSteps && !this->InputTimes.empty();
     // Under MPI every process holds a piece: process 0 gathers them and writes the one file, so
-    // processes never write (and rename) over each other.
+    // processes never write (and rename) over each other. Process 0 then tells the others whether
+    // the step was written, so that a failure there (a missing folder, a full disk) stops every
+    // process at the same step instead of leaving the others waiting in the next gather.
     bool writesHere = true;
     vtkSmartPointer<vtkDataObject> input = parafluid::vtk::gatherToFirstProcess(local, writesHere);
-    if (!writesHere)
+    bool ok = true;
+    if (writesHere)
     {
-      ++this->CurrentStep;
-      if (allSteps && this->CurrentStep < static_cast<int>(this->InputTimes.size()))
+      double time = 0.0;
+      if (allSteps)
       {
-        request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
-        return 1;
+        time = this->InputTimes[this->CurrentStep];
       }
-      request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
-      this->CurrentStep = 0;
-      return 1;
+      else if (local && local->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()))
+      {
+        time = local->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP());
+      }
+      try
+      {
+        ok = (this->CurrentStep > 0 || this->BeginFile()) && this->WriteStep(input, this->CurrentStep, time);
+      }
+      catch (const std::bad_alloc&)
+      {
+        vtkErrorMacro("ParaFluid H5Part Writer: not enough memory to write step " << this->CurrentStep);
+        ok = false;
+      }
     }
-    if (this->CurrentStep == 0 && !this->BeginFile())
-    {
-      request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
-      return 0;
-    }
-    double time = 0.0;
-    if (allSteps)
-    {
-      time = this->InputTimes[this->CurrentStep];
-    }
-    else if (local->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()))
-    {
-      time = local->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP());
-    }
-    if (!this->WriteStep(input, this->CurrentStep, time))
+    if (!parafluid::vtk::agreeOnAllProcesses(ok))
     {
       this->AbandonFile();
       this->CurrentStep = 0;
@@ -194,7 +223,7 @@ vtkTypeBool vtkPFH5PartWriter::ProcessRequest(vtkInformation* request, vtkInform
     }
     request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
     this->CurrentStep = 0;
-    return this->FinishFile() ? 1 : 0;
+    return parafluid::vtk::agreeOnAllProcesses(!writesHere || this->FinishFile()) ? 1 : 0;
   }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
@@ -208,10 +237,14 @@ bool vtkPFH5PartWriter::BeginFile()
     return false;
   }
   parafluid::h5::QuietErrors quiet;
-  this->File = std::make_unique<OpenFile>();
-  this->File->TemporaryName = this->FileName + ".tmp-" + std::to_string(::getpid());
-  this->File->File =
-    Handle(H5Fcreate(this->File->TemporaryName.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  // Temporaries that killed writers left beside this target (SIGKILL cannot be caught).
+  parafluid::h5::removeStaleTemporaries(this->FileName);
+  this->File = std::make_unique<OpenFile>(parafluid::h5::temporaryNameFor(this->FileName));
+  // The 1.8 file format at least: attributes larger than 64 kB (long field-data arrays) go to
+  // dense storage instead of failing.
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  H5Pset_libver_bounds(access, H5F_LIBVER_V18, H5F_LIBVER_LATEST);
+  this->File->File = Handle(H5Fcreate(this->File->TemporaryName.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access), H5Fclose);
   if (!this->File->File.valid())
   {
     vtkErrorMacro("ParaFluid H5Part Writer: cannot create '" << this->File->TemporaryName
@@ -278,7 +311,18 @@ bool vtkPFH5PartWriter::WriteStep(vtkDataObject* input, int stepIndex, double ti
     const std::string name = array->GetName();
     if (name == "x" || name == "y" || name == "z")
     {
-      continue; // would collide with the coordinates
+      vtkWarningMacro("ParaFluid H5Part Writer: point array '" << name
+                                                               << "' is not written: its name is a coordinate's");
+      continue;
+    }
+    std::string datasetName = name;
+    if (name == parafluid::contract::Id && array->GetNumberOfComponents() != 1)
+    {
+      // The H5Part id is one whole number per particle; a vector named id keeps its values under
+      // another name instead of making the file unreadable as H5Part.
+      datasetName = "id_components";
+      vtkWarningMacro("ParaFluid H5Part Writer: point array 'id' has " << array->GetNumberOfComponents()
+                                                                       << " components; written as 'id_components'");
     }
     hid_t memoryType, fileType;
     vtkSmartPointer<vtkDataArray> source = array;
@@ -296,7 +340,7 @@ bool vtkPFH5PartWriter::WriteStep(vtkDataObject* input, int stepIndex, double ti
       source = ids;
       typesFor(source, memoryType, fileType);
     }
-    if (!writeDataset(group, name, memoryType, fileType, source->GetVoidPointer(0), n,
+    if (!writeDataset(group, datasetName, memoryType, fileType, source->GetVoidPointer(0), n,
                       static_cast<hsize_t>(source->GetNumberOfComponents()), level))
     {
       vtkErrorMacro("ParaFluid H5Part Writer: failed writing array '" << name << "' of " << groupName);
@@ -309,10 +353,34 @@ bool vtkPFH5PartWriter::WriteStep(vtkDataObject* input, int stepIndex, double ti
     vtkFieldData* fieldData = input->GetFieldData();
     for (int k = 0; fieldData && k < fieldData->GetNumberOfArrays(); ++k)
     {
-      vtkDataArray* array = fieldData->GetArray(k);
-      if (!array || !array->GetName() || std::string(array->GetName()) == parafluid::contract::Time ||
-          array->GetNumberOfValues() == 0)
+      vtkAbstractArray* abstract = fieldData->GetAbstractArray(k);
+      if (!abstract || !abstract->GetName() || std::string(abstract->GetName()) == parafluid::contract::Time ||
+          abstract->GetNumberOfValues() == 0)
       {
+        continue;
+      }
+      const std::string name = abstract->GetName();
+      if (static_cast<std::size_t>(abstract->GetNumberOfValues()) > parafluid::h5::kMaxAttributeValues)
+      {
+        vtkWarningMacro("ParaFluid H5Part Writer: field data '"
+                        << name << "' (" << abstract->GetNumberOfValues()
+                        << " values) is not written: an H5Part root attribute holds at most "
+                        << parafluid::h5::kMaxAttributeValues << " values");
+        continue;
+      }
+      if (auto* strings = vtkStringArray::SafeDownCast(abstract))
+      {
+        if (!writeStringAttribute(file, name.c_str(), strings))
+        {
+          vtkWarningMacro("ParaFluid H5Part Writer: field data '" << name << "' could not be written");
+        }
+        continue;
+      }
+      vtkDataArray* array = vtkDataArray::SafeDownCast(abstract);
+      if (!array)
+      {
+        vtkWarningMacro("ParaFluid H5Part Writer: field data '" << name
+                                                                << "' is neither numbers nor text: not written");
         continue;
       }
       std::vector<double> values(static_cast<std::size_t>(array->GetNumberOfValues()));
@@ -320,7 +388,10 @@ bool vtkPFH5PartWriter::WriteStep(vtkDataObject* input, int stepIndex, double ti
       {
         values[static_cast<std::size_t>(v)] = array->GetVariantValue(v).ToDouble();
       }
-      writeDoubleAttribute(file, array->GetName(), values.data(), values.size());
+      if (!writeDoubleAttribute(file, name.c_str(), values.data(), values.size()))
+      {
+        vtkWarningMacro("ParaFluid H5Part Writer: field data '" << name << "' could not be written");
+      }
     }
   }
   return true;

@@ -4,6 +4,7 @@
 #include "ParticleContract.h"
 
 #include "vtkCellArray.h"
+#include "vtkCommunicator.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
@@ -148,6 +149,22 @@ inline void setOneVertexPerPoint(vtkPolyData* output, vtkIdType n)
   vertices->SetData(offsets, connectivity);
   output->SetVerts(vertices);
 }
+/// Under MPI, true only when `ok` is true on every process (every process must call it, at the
+/// same point): a failure on one process becomes a failure of all, before any of them goes on to
+/// the next collective call. In a serial session, `ok` itself.
+inline bool agreeOnAllProcesses(bool ok)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (!controller || controller->GetNumberOfProcesses() < 2)
+  {
+    return ok;
+  }
+  const int local = ok ? 1 : 0;
+  int all = 0;
+  controller->AllReduce(&local, &all, 1, vtkCommunicator::MIN_OP);
+  return all == 1;
+}
+
 /// The pieces of all processes as one point set on process 0 (the point arrays every piece has);
 /// on other processes nothing. In a serial session the input itself.
 inline vtkSmartPointer<vtkDataObject> gatherToFirstProcess(vtkDataObject* input, bool& writesHere)

@@ -7,6 +7,9 @@
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
 
+#include <exception>
+#include <new>
+
 vtkPFParticleAlgorithm::vtkPFParticleAlgorithm(const char* label)
   : Label(label)
 {
@@ -56,14 +59,39 @@ int vtkPFParticleAlgorithm::RequestData(vtkInformation*, vtkInformationVector** 
     bool extraHere = true;
     gatheredExtra = parafluid::vtk::gatherToFirstProcess(localExtra, extraHere);
   }
+  int result = 1;
   if (!holdsAll)
   {
     output->Initialize();
-    return 1;
   }
-  Particles particles;
-  particles.Gathered = vtkPointSet::SafeDownCast(gathered);
-  particles.Local = local;
-  particles.Extra = vtkPointSet::SafeDownCast(gatheredExtra);
-  return this->RequestParticles(particles, inputVector, outInfo, output);
+  else
+  {
+    Particles particles;
+    particles.Gathered = vtkPointSet::SafeDownCast(gathered);
+    particles.Local = local;
+    particles.Extra = vtkPointSet::SafeDownCast(gatheredExtra);
+    // Cores throw std::invalid_argument for what they cannot do and std::bad_alloc when memory
+    // runs out: both become an error message, never an abort of ParaView.
+    try
+    {
+      result = this->RequestParticles(particles, inputVector, outInfo, output);
+    }
+    catch (const std::bad_alloc&)
+    {
+      this->ReportError("not enough memory for this many particles at these settings");
+      result = 0;
+    }
+    catch (const std::exception& e)
+    {
+      this->ReportError(e.what());
+      result = 0;
+    }
+    if (!result)
+    {
+      output->Initialize();
+    }
+  }
+  // Process 0's verdict is every process's: an error there must not leave the others running on
+  // into a collective call that process 0 never makes.
+  return parafluid::vtk::agreeOnAllProcesses(result != 0) ? 1 : 0;
 }

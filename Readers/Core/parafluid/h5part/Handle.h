@@ -1,7 +1,7 @@
 #pragma once
 // Owns one HDF5 identifier and closes it with the matching H5?close, so that every early error
 // return in the reader and writer releases what it opened.
-#include "vtk_hdf5.h"
+#include "parafluid/h5part/Hdf5.h"
 
 #include <utility>
 

@@ -1,0 +1,174 @@
+#include "parafluid/h5part/Datasets.h"
+
+#include "parafluid/h5part/Handle.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace parafluid::h5
+{
+ValueType commonValueType(hid_t group, const std::vector<std::string>& datasets)
+{
+  bool anyFloat = false, wideFloat = false, wideInteger = false, needsInt64 = false, needsUInt64 = false,
+       anySigned = false;
+  for (const std::string& name : datasets)
+  {
+    Handle dataset(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose);
+    Handle type(dataset.valid() ? H5Dget_type(dataset) : -1, H5Tclose);
+    if (!type.valid())
+    {
+      continue;
+    }
+    const std::size_t size = H5Tget_size(type);
+    if (H5Tget_class(type) == H5T_FLOAT)
+    {
+      anyFloat = true;
+      wideFloat = wideFloat || size > 4;
+      continue;
+    }
+    const bool isSigned = H5Tget_sign(type) == H5T_SGN_2;
+    anySigned = anySigned || isSigned;
+    // float32 holds integers of up to 24 bits exactly: 8- and 16-bit ones.
+    wideInteger = wideInteger || size > 2;
+    if (isSigned ? size > 4 : size >= 4)
+    {
+      needsInt64 = true;
+    }
+    if (!isSigned && size > 4)
+    {
+      needsUInt64 = true;
+    }
+  }
+  if (anyFloat)
+  {
+    return wideFloat || wideInteger ? ValueType::Float64 : ValueType::Float32;
+  }
+  if (needsUInt64)
+  {
+    // uint64 beside signed integers has no exact common integer type; doubles are nearest.
+    return anySigned ? ValueType::Float64 : ValueType::UInt64;
+  }
+  return needsInt64 ? ValueType::Int64 : ValueType::Int32;
+}
+
+hid_t memoryType(ValueType type)
+{
+  switch (type)
+  {
+    case ValueType::Float32:
+      return H5T_NATIVE_FLOAT;
+    case ValueType::Float64:
+      return H5T_NATIVE_DOUBLE;
+    case ValueType::Int32:
+      return H5T_NATIVE_INT32;
+    case ValueType::Int64:
+      return H5T_NATIVE_INT64;
+    default:
+      return H5T_NATIVE_UINT64;
+  }
+}
+
+std::size_t valueBytes(ValueType type)
+{
+  return type == ValueType::Float32 || type == ValueType::Int32 ? 4 : 8;
+}
+
+namespace
+{
+bool readRows(hid_t dataset, hid_t memory, std::uint64_t offset, std::uint64_t count, std::uint64_t width, void* target)
+{
+  Handle fileSpace(H5Dget_space(dataset), H5Sclose);
+  const int rank = H5Sget_simple_extent_ndims(fileSpace);
+  const hsize_t fileStart[2] = { offset, 0 };
+  const hsize_t fileCount[2] = { count, width };
+  if (rank < 1 || H5Sselect_hyperslab(fileSpace, H5S_SELECT_SET, fileStart, nullptr, fileCount, nullptr) < 0)
+  {
+    return false;
+  }
+  Handle memorySpace(H5Screate_simple(rank, fileCount, nullptr), H5Sclose);
+  return H5Dread(dataset, memory, memorySpace, fileSpace, H5P_DEFAULT, target) >= 0;
+}
+} // namespace
+
+bool readSlice(hid_t group, const std::string& name, ValueType type, std::uint64_t offset, std::uint64_t count,
+               void* target, std::uint64_t stride, std::uint64_t column, std::string& error)
+{
+  Handle dataset(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!dataset.valid())
+  {
+    error = "cannot open dataset " + name;
+    return false;
+  }
+  Handle fileSpace(H5Dget_space(dataset), H5Sclose);
+  const int rank = H5Sget_simple_extent_ndims(fileSpace);
+  hsize_t dims[2] = { 0, 1 };
+  if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(fileSpace, dims, nullptr) < 0 || offset + count > dims[0])
+  {
+    error = "dataset " + name + " does not have the rows asked for";
+    return false;
+  }
+  const std::uint64_t width = rank == 2 ? dims[1] : 1;
+  if (count == 0)
+  {
+    return true;
+  }
+  const hid_t memory = memoryType(type);
+  if (width == stride && column == 0)
+  {
+    if (!readRows(dataset, memory, offset, count, width, target))
+    {
+      error = "HDF5 failed to read dataset " + name;
+      return false;
+    }
+    return true;
+  }
+  if (width != 1 || column >= stride)
+  {
+    error = "dataset " + name + " has " + std::to_string(width) + " columns where 1 is expected";
+    return false;
+  }
+  // A component of a vector (x of the points, vx of velocity) is read contiguously and then
+  // interleaved: HDF5's own strided scatter is several times slower on chunked, compressed data.
+  const std::size_t bytes = valueBytes(type);
+  std::vector<unsigned char> component(static_cast<std::size_t>(count) * bytes);
+  if (!readRows(dataset, memory, offset, count, 1, component.data()))
+  {
+    error = "HDF5 failed to read dataset " + name;
+    return false;
+  }
+  auto* out = static_cast<unsigned char*>(target) + column * bytes;
+  const std::size_t step = static_cast<std::size_t>(stride) * bytes;
+  for (std::uint64_t i = 0; i < count; ++i)
+  {
+    std::memcpy(out + i * step, component.data() + i * bytes, bytes);
+  }
+  return true;
+}
+
+bool readIds(hid_t group, const std::string& name, std::uint64_t offset, std::uint64_t count, std::int64_t* ids,
+             std::string& error)
+{
+  if (commonValueType(group, { name }) != ValueType::Float32 && commonValueType(group, { name }) != ValueType::Float64)
+  {
+    return readSlice(group, name, ValueType::Int64, offset, count, ids, 1, 0, error);
+  }
+  std::vector<double> values(static_cast<std::size_t>(count));
+  if (!readSlice(group, name, ValueType::Float64, offset, count, values.data(), 1, 0, error))
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < values.size(); ++i)
+  {
+    const double v = values[i];
+    // 2^63 is the first double beyond int64's range.
+    if (!(std::fabs(v) < 9.2233720368547758e18) || v != std::floor(v))
+    {
+      error = "dataset " + name + " holds " + std::to_string(v) + " at particle " + std::to_string(offset + i) +
+              ", not a whole number";
+      return false;
+    }
+    ids[i] = static_cast<std::int64_t>(v);
+  }
+  return true;
+}
+} // namespace parafluid::h5

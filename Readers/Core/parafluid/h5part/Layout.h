@@ -1,0 +1,60 @@
+#pragma once
+// What an H5Part file holds: its steps (groups "Step#<n>", with an optional time attribute) and,
+// per step, the particle count, where the coordinates are and which datasets form point arrays.
+// Everything a file declares is checked against what it can hold before a reader allocates for
+// it: a dataset whose values were never written (unallocated chunks or storage), one that ends
+// beyond the end of the file, a virtual or external dataset whose source file is missing, a
+// shape no point array has. No VTK types; the VTK reader and the sanitizer corpus test use it.
+#include "parafluid/h5part/Hdf5.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace parafluid::h5
+{
+struct StepEntry
+{
+  std::string group; // "Step#12"
+  long index = 0;    // 12
+  double time = 0.0; // from the time/Time/TimeValue attribute, else the index
+};
+
+/// One point array and the datasets it is read from: a single dataset (N or N x k values) or
+/// three component datasets (vx, vy, vz or velocity_x, ...) combined into one vector.
+struct ArraySource
+{
+  std::string name;
+  std::vector<std::string> datasets;
+  int components = 1;
+};
+
+struct StepLayout
+{
+  std::uint64_t particles = 0;
+  /// Either three datasets x, y, z or one N x 3 dataset ("position" / "positions").
+  std::vector<std::string> coordinateDatasets;
+  std::string idDataset; // empty when the file has no usable "id" dataset
+  std::vector<ArraySource> arrays;
+  std::string error;                 // empty when the step is readable
+  std::vector<std::string> warnings; // datasets left out, and why
+};
+
+/// A point array of more components than this is refused (a 2-D dataset N x k with k in the
+/// millions is a matrix, not a per-particle value).
+constexpr std::uint64_t kMaxComponents = 1024;
+
+/// Steps sorted by index; steps whose time attribute is NaN/infinite or not increasing make every
+/// step's time its position in the list (with a warning). On failure returns nothing and sets error.
+std::vector<StepEntry> listSteps(hid_t file, std::string& error, std::vector<std::string>* warnings = nullptr);
+
+/// Reads the layout of one step group and checks that its datasets hold what they declare.
+StepLayout describeStep(hid_t file, const std::string& group);
+
+/// Reads a numeric attribute of at most `maxValues` values; false when absent, not numeric or larger.
+bool readNumericAttribute(hid_t object, const char* name, std::vector<double>& values, std::size_t maxValues = 4096);
+
+/// Empty when the dataset's values are all in the file; else why not ("never written", "ends
+/// beyond the end of the file", "source file 'a.h5' of the virtual dataset is missing").
+std::string checkStorage(hid_t dataset, const std::string& fileFolder);
+} // namespace parafluid::h5
