@@ -384,6 +384,10 @@ StepLayout describeStep(hid_t file, const std::string& groupName)
   if (shapes.empty())
   {
     layout.error = groupName + " holds no numeric datasets (an empty step)";
+    for (const std::string& warning : layout.warnings)
+    {
+      layout.error += "; " + warning;
+    }
     return layout;
   }
   // A dataset that does not hold what it declares: an error for coordinates, left out otherwise.

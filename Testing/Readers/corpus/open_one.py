@@ -1,0 +1,64 @@
+"""Opens one corpus file with the ParaFluid H5Part reader and says what it gave.
+
+open_file(path) returns a dict: the error and warning texts, the first step's particle count, the
+first values of each point array, the field data, the number of time steps and the last step's
+particle count. The corpus driver calls it in a process of its own per file.
+"""
+import math
+
+from paraview.simple import *
+from paraview import servermanager
+import pftest
+
+
+class Messages:
+    def __init__(self, obj):
+        self.errors, self.warnings = [], []
+        obj.AddObserver("ErrorEvent", self.on_error)
+        obj.AddObserver("WarningEvent", self.on_warning)
+
+    @pftest.calldata_type(pftest.VTK_STRING)
+    def on_error(self, _obj, _event, text):
+        self.errors.append(text)
+
+    @pftest.calldata_type(pftest.VTK_STRING)
+    def on_warning(self, _obj, _event, text):
+        self.warnings.append(text)
+
+
+def number(v):
+    v = float(v)
+    return v if math.isfinite(v) else str(v)
+
+
+def values(array, limit=8):
+    n = min(array.GetNumberOfValues(), limit)
+    if array.IsA("vtkStringArray"):
+        return [array.GetValue(k) for k in range(n)]
+    return [number(array.GetValue(k)) for k in range(n)]
+
+
+def open_file(path, reader_type):
+    reader = reader_type()
+    messages = Messages(reader.GetClientSideObject())
+    reader.FileName = path  # after the observers: RequestInformation's warnings count too
+    reader.UpdatePipelineInformation()
+    reader.UpdatePipeline()
+    data = servermanager.Fetch(reader)
+    steps = list(reader.TimestepValues) if reader.TimestepValues else []
+    result = {"steps": len(steps)}
+    if data is not None and not messages.errors:
+        result["points"] = data.GetNumberOfPoints()
+        pd, fd = data.GetPointData(), data.GetFieldData()
+        result["arrays"] = {pd.GetArray(i).GetName(): values(pd.GetArray(i)) for i in range(pd.GetNumberOfArrays())}
+        result["field"], result["strings"] = {}, {}
+        for i in range(fd.GetNumberOfArrays()):
+            a = fd.GetAbstractArray(i)
+            result["strings" if a.IsA("vtkStringArray") else "field"][a.GetName()] = values(a)
+        if len(steps) > 1:
+            reader.UpdatePipeline(steps[-1])
+            last = servermanager.Fetch(reader)
+            result["last_points"] = last.GetNumberOfPoints() if last is not None else None
+    result["error"] = " | ".join(messages.errors)
+    result["warning"] = " | ".join(messages.warnings)
+    return result
