@@ -4,9 +4,13 @@
 
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPointSet.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <cmath>
 #include <exception>
 #include <new>
 
@@ -31,6 +35,80 @@ double vtkPFParticleAlgorithm::ParticleSpacingOr(double property, vtkPointSet* i
     return 0.0;
   }
   return d;
+}
+
+vtkSmartPointer<vtkPointSet> vtkPFParticleAlgorithm::ApplyNonFinitePolicy(vtkPointSet* input)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  std::vector<vtkDataArray*> arrays;
+  for (const std::string& name : this->FiniteArrays)
+  {
+    if (vtkDataArray* array = input->GetPointData()->GetArray(name.c_str()))
+    {
+      arrays.push_back(array);
+    }
+  }
+  // Which particles are bad, and what of them.
+  std::vector<char> keep(static_cast<std::size_t>(n), 1);
+  vtkIdType bad = 0, firstBad = -1;
+  std::string firstWhat;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    std::string what = std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) ? "" : "position";
+    for (std::size_t k = 0; k < arrays.size() && what.empty(); ++k)
+    {
+      for (int c = 0; c < arrays[k]->GetNumberOfComponents(); ++c)
+      {
+        if (!std::isfinite(arrays[k]->GetComponent(i, c)))
+        {
+          what = this->FiniteArrays[k];
+          break;
+        }
+      }
+    }
+    if (!what.empty())
+    {
+      keep[static_cast<std::size_t>(i)] = 0;
+      if (bad++ == 0)
+      {
+        firstBad = i;
+        firstWhat = what;
+      }
+    }
+  }
+  if (bad == 0)
+  {
+    return input;
+  }
+  const std::string example = "particle " + std::to_string(firstBad) + " has a NaN or infinite " + firstWhat;
+  if (this->NonFinitePolicy == NonFinite::Refuse)
+  {
+    this->ReportError(example + " (" + std::to_string(bad) +
+                      " particles have such values); this filter needs finite input: fix or remove them upstream");
+    return nullptr;
+  }
+  vtkWarningMacro(<< this->Label << ": " << bad << " of " << n
+                  << " particles were left out for NaN or infinite values (" << example << ")");
+  auto finite = vtkSmartPointer<vtkPolyData>::New();
+  finite->GetFieldData()->ShallowCopy(input->GetFieldData());
+  vtkNew<vtkPoints> points;
+  points->SetDataType(input->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(n - bad);
+  finite->GetPointData()->CopyAllocate(input->GetPointData(), n - bad);
+  vtkIdType out = 0;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (keep[static_cast<std::size_t>(i)])
+    {
+      points->SetPoint(out, input->GetPoint(i));
+      finite->GetPointData()->CopyData(input->GetPointData(), i, out);
+      ++out;
+    }
+  }
+  finite->SetPoints(points);
+  return finite;
 }
 
 int vtkPFParticleAlgorithm::RequestData(vtkInformation*, vtkInformationVector** inputVector,
@@ -66,15 +144,16 @@ int vtkPFParticleAlgorithm::RequestData(vtkInformation*, vtkInformationVector** 
   }
   else
   {
+    vtkSmartPointer<vtkPointSet> finite = this->ApplyNonFinitePolicy(vtkPointSet::SafeDownCast(gathered));
     Particles particles;
-    particles.Gathered = vtkPointSet::SafeDownCast(gathered);
+    particles.Gathered = finite;
     particles.Local = local;
     particles.Extra = vtkPointSet::SafeDownCast(gatheredExtra);
     // Cores throw std::invalid_argument for what they cannot do and std::bad_alloc when memory
     // runs out: both become an error message, never an abort of ParaView.
     try
     {
-      result = this->RequestParticles(particles, inputVector, outInfo, output);
+      result = finite ? this->RequestParticles(particles, inputVector, outInfo, output) : 0;
     }
     catch (const std::bad_alloc&)
     {

@@ -13,8 +13,10 @@
 
 #include "ParaFluidFiltersCommonModule.h"
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h"
 
 #include <string>
+#include <vector>
 
 class vtkPointSet;
 
@@ -39,6 +41,20 @@ protected:
   virtual int RequestParticles(const Particles& particles, vtkInformationVector** inputVector, vtkInformation* outInfo,
                                vtkPolyData* output) = 0;
 
+  /// What the filter does with particles whose position (or one of `arrays`) is NaN or infinite:
+  /// Refuse them (an error naming the first such particle) or Drop them (a warning saying how
+  /// many were left out). Default: Refuse, positions only.
+  enum class NonFinite
+  {
+    Refuse,
+    Drop
+  };
+  void SetNonFinitePolicy(NonFinite policy, std::vector<std::string> arrays = {})
+  {
+    this->NonFinitePolicy = policy;
+    this->FiniteArrays = std::move(arrays);
+  }
+
   /// An optional input port whose points are gathered too (seeds); -1: none.
   void SetGatheredInputPort(int port) { this->GatheredInputPort = port; }
 
@@ -55,6 +71,12 @@ private:
   vtkPFParticleAlgorithm(const vtkPFParticleAlgorithm&) = delete;
   void operator=(const vtkPFParticleAlgorithm&) = delete;
 
+  /// The particles with finite positions and arrays, `input` itself when all are; null after an
+  /// error (Refuse).
+  vtkSmartPointer<vtkPointSet> ApplyNonFinitePolicy(vtkPointSet* input);
+
   std::string Label;
   int GatheredInputPort = -1;
+  NonFinite NonFinitePolicy = NonFinite::Refuse;
+  std::vector<std::string> FiniteArrays;
 };

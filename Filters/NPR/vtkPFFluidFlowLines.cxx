@@ -19,6 +19,8 @@ vtkPFFluidFlowLines::vtkPFFluidFlowLines()
 {
   this->SetNumberOfInputPorts(2);
   this->SetGatheredInputPort(1); // the seeds
+  // A particle with a NaN velocity would poison every line that passes near it.
+  this->SetNonFinitePolicy(NonFinite::Drop, { parafluid::contract::Velocity });
 }
 
 vtkPFFluidFlowLines::~vtkPFFluidFlowLines() = default;

@@ -43,6 +43,8 @@ vtkPFSPHStep::vtkPFSPHStep()
   , Cached(std::make_unique<Cache>())
 {
   this->SetNumberOfInputPorts(2);
+  // A simulation cannot start from NaN: refused, naming the particle.
+  this->SetNonFinitePolicy(NonFinite::Refuse, { parafluid::contract::Velocity });
   // Zero: taken from the input's field data when the simulation starts.
   this->Parameters.smoothingLength = 0.0f;
   this->Parameters.particleMass = 0.0f;

@@ -24,6 +24,7 @@ vtkPFCarpetSurface::vtkPFCarpetSurface()
   , Carpet(new parafluid::surface::CarpetSurface)
 {
   this->SetNumberOfInputPorts(2);
+  this->SetNonFinitePolicy(NonFinite::Drop);
 }
 
 vtkPFCarpetSurface::~vtkPFCarpetSurface() = default;

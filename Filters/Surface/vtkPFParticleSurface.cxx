@@ -16,6 +16,7 @@ vtkStandardNewMacro(vtkPFParticleSurface);
 vtkPFParticleSurface::vtkPFParticleSurface()
   : vtkPFParticleAlgorithm("Particle Surface")
 {
+  this->SetNonFinitePolicy(NonFinite::Drop);
 }
 
 vtkPFParticleSurface::~vtkPFParticleSurface() = default;

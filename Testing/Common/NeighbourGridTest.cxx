@@ -1,5 +1,6 @@
 // The uniform grid finds exactly the neighbours a brute-force search finds.
 #include "parafluid/common/NeighbourGrid.h"
+#include "parafluid/common/ParticleNeighbourhood.h"
 
 #include <gtest/gtest.h>
 
@@ -147,3 +148,31 @@ TEST(NeighbourGrid, RejectsBadInputWithAClearError)
   EXPECT_THROW(grid.build(x.data(), y.data(), z.data(), 2, -1.0f), std::invalid_argument);
 }
 } // namespace
+
+TEST(ParticleNeighbourhood, NaNAndInfiniteQueryPointsFindNothingAndStayInTheGrid)
+{
+  // A NaN coordinate used to survive the clamp to the grid and be cast to a cell index (undefined
+  // behaviour, then a read outside the cell table). Now it finds nothing; infinite points clamp to
+  // the edge cells and, being far from every particle, also find nothing.
+  std::vector<float> xyz;
+  for (int i = 0; i < 8; ++i)
+  {
+    xyz.insert(xyz.end(), { 0.1f * i, 0.05f * i, 0.0f });
+  }
+  parafluid::ParticleNeighbourhood near;
+  near.build(xyz.data(), xyz.size() / 3, 0.15f);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  const float queries[][3] = { { nan, 0.0f, 0.0f }, { 0.2f, nan, 0.1f },  { 0.0f, 0.0f, nan },
+                               { inf, 0.0f, 0.0f }, { -inf, -inf, 0.0f }, { 1e30f, 0.0f, -1e30f } };
+  for (const auto& q : queries)
+  {
+    int visits = 0;
+    near.forEachNear(q, [&](std::uint32_t, float, float, float, float) { ++visits; });
+    EXPECT_EQ(visits, 0);
+  }
+  int visits = 0;
+  const float inside[3] = { 0.2f, 0.1f, 0.0f };
+  near.forEachNear(inside, [&](std::uint32_t, float, float, float, float) { ++visits; });
+  EXPECT_GE(visits, 1); // the lookup still works where it should
+}

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -162,4 +163,29 @@ TEST(FlowLines, EmptyInputAndBadParameters)
   p.lineDuration = 0.1;
   const float bad[3] = { NAN, 0, 0 };
   EXPECT_THROW(traceFlowLines(bad, still, 1, p), std::invalid_argument);
+}
+
+TEST(FlowLines, NaNAndHugeVelocitiesEndLinesInsteadOfPoisoningThem)
+{
+  // One particle's velocity is NaN, another's overflows a float step: the lines near them stop
+  // (no NaN point is ever emitted) and the query at a NaN point finds no neighbour (it used to
+  // cast NaN to a cell index and read outside the grid).
+  std::vector<float> xyz, velocity;
+  vortex(xyz, velocity);
+  velocity[3 * 10] = std::numeric_limits<float>::quiet_NaN();
+  velocity[3 * 500 + 1] = 3e38f;
+  FlowLineParameters p;
+  p.kernelRadius = 2 * kSpacing;
+  p.lineDuration = 0.5;
+  p.seedStride = 1;
+  const FlowLineSet lines = traceFlowLines(xyz.data(), velocity.data(), xyz.size() / 3, p);
+  ASSERT_GT(lines.lineCount(), 0u);
+  for (float v : lines.points)
+  {
+    ASSERT_TRUE(std::isfinite(v));
+  }
+  for (float s : lines.speed)
+  {
+    ASSERT_TRUE(std::isfinite(s));
+  }
 }

@@ -37,7 +37,8 @@ bool velocityAt(const ParticleNeighbourhood& near, const float* velocity, const 
   {
     v[a] = static_cast<float>(sum[a] / weight);
   }
-  return true;
+  // A velocity that overflows float, or a NaN from the particles, ends the line here.
+  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
 }
 
 /// One step of length dt from x; false where the field is undefined along the way.

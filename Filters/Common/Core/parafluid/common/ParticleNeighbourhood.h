@@ -28,7 +28,9 @@ public:
   template<class Visit>
   void forEachNear(const float p[3], Visit&& visit) const
   {
-    if (this->Sorted.empty())
+    // A NaN or infinite query point has no neighbours (and must not reach the float-to-int cast
+    // below: NaN survives min/max and its conversion is undefined).
+    if (this->Sorted.empty() || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
     {
       return;
     }
