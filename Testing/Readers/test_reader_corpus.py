@@ -12,9 +12,10 @@ import sys
 
 import pftest
 
-from paraview.simple import *
+from paraview.simple import LoadPlugin  # noqa: F401 (not *: it would shadow all/any)
+from paraview import simple
 
-pftest.load(globals())
+pftest.load(vars(simple))
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "corpus"))
 import open_one  # noqa: E402
@@ -37,7 +38,7 @@ def start(entry):
             resource.setrlimit(resource.RLIMIT_AS, (ADDRESS_SPACE_BYTES, ADDRESS_SPACE_BYTES))
             resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
             signal.alarm(TIME_LIMIT_S)  # SIGALRM ends a hung child
-            result = open_one.open_file(os.path.join(folder, entry["file"]), ParaFluidH5PartReader)
+            result = open_one.open_file(os.path.join(folder, entry["file"]), simple.ParaFluidH5PartReader)
             with open(out, "w") as f:
                 json.dump(result, f)
             code = 0

@@ -1,0 +1,70 @@
+"""Under MPI (pvbatch, 2 ranks), an error on one rank is every rank's: each collective filter and
+the writer, failing on process 0 only, must end on both processes with the error reported, and
+the session must go on working. Before, the writer to a missing folder and Particle Surface
+without a spacing left process 1 waiting forever in the next gather."""
+import builtins
+import os
+import tempfile
+
+from paraview.simple import *
+from paraview import servermanager
+import pftest
+
+pftest.load(globals())
+ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
+pftest.check(ranks == 2, "run with 2 MPI ranks (got %d)" % ranks)
+
+
+def expect_error(proxy, words, time=None):
+    catcher = pftest.ErrorCatcher(proxy)
+    if time is None:
+        proxy.UpdatePipeline()
+    else:
+        proxy.UpdatePipeline(time)
+    text = catcher.text()
+    pftest.check(builtins.all(w in text for w in words), "%s: expected %s in the error, got %r" % (proxy.GetXMLLabel(), words, text))
+
+
+def still_works():
+    """A healthy pipeline after the failure: both processes are still in step."""
+    block = ParticleBlock(BlockBounds=[0, 0.2, 0, 0.2, 0, 0.2], Spacing=0.05)
+    data = pftest.fetch(block)
+    pftest.check(data.GetNumberOfPoints() == 64, "after the error the session no longer works (%d points)" % data.GetNumberOfPoints())
+    Delete(block)
+
+
+# Particle Surface on one particle without particle_spacing: the error is raised on process 0 after
+# the gather.
+one = ProgrammableSource(Script=pftest.particle_script("P = np.zeros((1, 3))"))
+expect_error(ParticleSurfaceMarchingCubes(Input=one), ["Particle Surface", "ParticleSpacing"])
+still_works()
+
+# Carpet Surface and Fluid Flow Lines likewise.
+expect_error(CarpetSurface(Input=one), ["Carpet Surface"])
+still_works()
+expect_error(FluidFlowLines(Input=one), ["Fluid Flow Lines", "ParticleSpacing"])
+still_works()
+
+# SPH Step refusing NaN input on process 0.
+nan = ProgrammableSource(Script=pftest.particle_script("P = np.array([[0, 0, 0], [np.nan, 0, 0]]); h = 0.1"))
+expect_error(SPHStep(Input=nan, DomainBounds=[-1, 1, -1, 1, -1, 1]), ["SPH Step", "NaN"])
+still_works()
+
+# The writer, all time steps, into a folder that does not exist.
+block = ParticleBlock(BlockBounds=[0, 0.2, 0, 0.2, 0, 0.2], Spacing=0.05)
+sph = SPHStep(Input=block, OutputInterval=0.002, NumberOfOutputs=3)
+missing = os.path.join(tempfile.mkdtemp(prefix="parafluid-mpi-"), "no-such-folder", "out.h5part")
+writer = CreateWriter(missing, sph)
+writer.WriteAllTimeSteps = 1
+catcher = pftest.ErrorCatcher(writer)
+writer.UpdatePipeline()
+pftest.check("cannot create" in catcher.text(), "writer to a missing folder: %r" % catcher.text())
+pftest.check(not os.path.exists(missing), "a file appeared in a missing folder")
+still_works()
+
+# And a good write after it, with every step.
+good = os.path.join(tempfile.mkdtemp(prefix="parafluid-mpi-"), "out.h5part")
+SaveData(good, proxy=sph, WriteAllTimeSteps=1)
+copy = ParaFluidH5PartReader(FileName=good)
+pftest.check(len(copy.TimestepValues) == len(sph.TimestepValues), "the write after the error holds %d steps of %d" % (len(copy.TimestepValues), len(sph.TimestepValues)))
+print("MPI error paths: ok")
