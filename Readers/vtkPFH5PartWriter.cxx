@@ -236,6 +236,12 @@ bool vtkPFH5PartWriter::BeginFile()
     vtkErrorMacro("ParaFluid H5Part Writer: no file name was given");
     return false;
   }
+  if (this->CompressionLevel < 0 || this->CompressionLevel > 9)
+  {
+    vtkErrorMacro("ParaFluid H5Part Writer: CompressionLevel = " << this->CompressionLevel
+                                                                 << " is not allowed: it must be from 0 to 9");
+    return false;
+  }
   parafluid::h5::QuietErrors quiet;
   // Temporaries that killed writers left beside this target (SIGKILL cannot be caught).
   parafluid::h5::removeStaleTemporaries(this->FileName);

@@ -34,7 +34,8 @@ public:
   vtkBooleanMacro(WriteAllTimeSteps, bool);
 
   /// Deflate level 0 (none) .. 9; default 1, which already halves typical particle data cheaply.
-  vtkSetClampMacro(CompressionLevel, int, 0, 9);
+  /// Other values are refused when the write starts.
+  vtkSetMacro(CompressionLevel, int);
   vtkGetMacro(CompressionLevel, int);
 
   vtkTypeBool ProcessRequest(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

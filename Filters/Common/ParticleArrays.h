@@ -21,6 +21,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <cmath>
 #include <cstring>
 #include <numeric>
 #include <string>
@@ -118,6 +119,18 @@ inline double fieldValue(vtkFieldData* fieldData, const char* name, double fallb
 inline double particleSpacing(double property, vtkFieldData* fieldData)
 {
   return property > 0.0 ? property : fieldValue(fieldData, contract::ParticleSpacing, 0.0);
+}
+
+/// Empty when a spacing property's value means something: 0 (take the input's particle_spacing)
+/// or a finite spacing up to 1000 m; else a sentence naming the property.
+inline std::string spacingPropertyProblem(double property, const char* propertyName)
+{
+  if (std::isfinite(property) && property >= 0.0 && property <= 1000.0)
+  {
+    return {};
+  }
+  return std::string(propertyName) + " = " + std::to_string(property) +
+         " is not allowed: it must be 0 (take the input's particle_spacing) or a spacing up to 1000 m";
 }
 
 inline std::string missingSpacing(const char* propertyName)

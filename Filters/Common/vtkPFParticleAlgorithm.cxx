@@ -28,6 +28,12 @@ void vtkPFParticleAlgorithm::ReportError(const std::string& message)
 
 double vtkPFParticleAlgorithm::ParticleSpacingOr(double property, vtkPointSet* input, const char* propertyName)
 {
+  const std::string problem = parafluid::vtk::spacingPropertyProblem(property, propertyName);
+  if (!problem.empty())
+  {
+    this->ReportError(problem);
+    return 0.0;
+  }
   const double d = parafluid::vtk::particleSpacing(property, input->GetFieldData());
   if (!(d > 0.0))
   {

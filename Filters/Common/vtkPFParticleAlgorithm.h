@@ -12,6 +12,7 @@
 #pragma once
 
 #include "ParaFluidFiltersCommonModule.h"
+#include "ParameterCheck.h"
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkSmartPointer.h"
 
@@ -61,6 +62,16 @@ protected:
   /// The particle spacing d [m]: `property` when positive, else the input's particle_spacing field
   /// data, else 0 after an error that names `propertyName`.
   double ParticleSpacingOr(double property, vtkPointSet* input, const char* propertyName);
+
+  /// True when `check` found nothing; else reports its problem and returns false.
+  bool Accept(const parafluid::vtk::ParameterCheck& check)
+  {
+    if (!check.ok())
+    {
+      this->ReportError(check.problem());
+    }
+    return check.ok();
+  }
 
   /// vtkErrorMacro with the filter's label in front.
   void ReportError(const std::string& message);

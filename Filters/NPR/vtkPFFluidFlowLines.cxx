@@ -52,6 +52,13 @@ int vtkPFFluidFlowLines::RequestParticles(const Particles& particles, vtkInforma
   vtkPointSet* seeds = particles.Extra;
   const vtkIdType n = input->GetNumberOfPoints();
 
+  parafluid::vtk::ParameterCheck check;
+  check.inRange("KernelRadius", this->KernelRadius, 1.0, 10.0, "particle spacings")
+    .inRange("LineDuration", this->LineDuration, 1e-4, 1e4, "s");
+  if (!this->Accept(check))
+  {
+    return 0;
+  }
   parafluid::npr::FlowLineParameters p;
   // Without particles there is nothing to trace, and no spacing is needed.
   const double d = n > 0 ? this->ParticleSpacingOr(this->ParticleSpacing, particles.Local, "ParticleSpacing") : 0.0;

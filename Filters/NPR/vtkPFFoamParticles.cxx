@@ -1,5 +1,7 @@
 #include "vtkPFFoamParticles.h"
 
+#include "ParameterCheck.h"
+
 #include "ParticleArrays.h"
 
 #include "parafluid/npr/FoamClassifier.h"
@@ -49,6 +51,17 @@ int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inpu
   }
   output->ShallowCopy(input);
   const vtkIdType n = input->GetNumberOfPoints();
+  parafluid::vtk::ParameterCheck check;
+  check.inRange("KernelRadius", this->KernelRadius, 1.0, 10.0, "particle spacings")
+    .inRange("CrestThreshold", this->CrestThreshold, 0.01, 100.0)
+    .require(parafluid::vtk::spacingPropertyProblem(this->ParticleSpacing, "ParticleSpacing").empty(),
+             parafluid::vtk::spacingPropertyProblem(this->ParticleSpacing, "ParticleSpacing"));
+  if (!check.ok())
+  {
+    vtkErrorMacro("Foam Particles: " << check.problem());
+    output->Initialize();
+    return 0;
+  }
   const double d = parafluid::vtk::particleSpacing(this->ParticleSpacing, input->GetFieldData());
   if (n > 0 && !(d > 0.0))
   {

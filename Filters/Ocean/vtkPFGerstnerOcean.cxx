@@ -1,5 +1,8 @@
 #include "vtkPFGerstnerOcean.h"
 
+#include "ParameterCheck.h"
+#include "parafluid/common/MemoryBudget.h"
+
 #include "ParticleContract.h"
 
 #include "HeightFieldFromData.h"
@@ -75,12 +78,29 @@ int vtkPFGerstnerOcean::FillInputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
+namespace
+{
+/// Time steps offered at most: beyond it the GUI's time list itself becomes the slow part.
+constexpr double kMaxFrames = 100000.0;
+} // namespace
+
 int vtkPFGerstnerOcean::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  const double duration = std::max(this->Duration, 0.0);
-  const double rate = this->FrameRate > 0.0 ? this->FrameRate : 30.0;
-  const auto frames = static_cast<int>(std::min(std::floor(duration * rate + 1e-9), 100000.0));
+  parafluid::vtk::ParameterCheck check;
+  check.inRange("Duration", this->Duration, 0.0, 1e6, "s")
+    .inRange("FrameRate", this->FrameRate, 1e-3, 1e4, "frames per second")
+    .require(this->Duration * this->FrameRate <= kMaxFrames,
+             "Duration x FrameRate = " + parafluid::vtk::ParameterCheck::number(this->Duration * this->FrameRate) +
+               " frames, more than " + std::to_string(static_cast<int>(kMaxFrames)) + ": lower Duration or FrameRate");
+  if (!check.ok())
+  {
+    vtkErrorMacro("Gerstner Ocean: " << check.problem());
+    return 0;
+  }
+  const double duration = this->Duration;
+  const double rate = this->FrameRate;
+  const auto frames = static_cast<int>(std::floor(duration * rate + 1e-9));
   std::vector<double> times;
   for (int k = 0; k <= frames; ++k)
   {
@@ -102,15 +122,25 @@ int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inpu
                         ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
                         : 0.0;
   const int nx = this->Resolution[0], ny = this->Resolution[1];
-  if (nx < 2 || ny < 2 || static_cast<double>(nx) * ny > 1.0e8)
+  parafluid::vtk::ParameterCheck check;
+  check.inRange("Resolution", nx, 2, 65536)
+    .inRange("Resolution", ny, 2, 65536)
+    .allInRange("Size", this->Size, 2, 1e-6, 1e7, "m")
+    .allInRange("Origin", this->Origin, 2, -1e7, 1e7, "m")
+    .require(this->Sea.validate().empty(), this->Sea.validate());
+  // About 60 bytes a vertex: points, normals, two triangles' connectivity, foam and wave arrays.
+  const std::string memory = parafluid::checkMemoryBudget(60.0 * nx * ny, "a sea of Resolution " + std::to_string(nx) +
+                                                                            " x " + std::to_string(ny));
+  check.require(memory.empty(), memory);
+  if (!check.ok())
   {
-    vtkErrorMacro("Resolution must be at least 2 x 2 and at most 1e8 points, got " << nx << " x " << ny);
+    vtkErrorMacro("Gerstner Ocean: " << check.problem());
     return 0;
   }
-  if (!(this->Size[0] > 0.0) || !(this->Size[1] > 0.0) || !std::isfinite(this->Origin[0] + this->Origin[1]))
+  if (static_cast<double>(nx) * ny > 4.0e6)
   {
-    vtkErrorMacro("Size must be positive and Origin finite");
-    return 0;
+    vtkWarningMacro("Gerstner Ocean: Resolution " << nx << " x " << ny << " is " << static_cast<double>(nx) * ny / 1e6
+                                                  << " million vertices per frame: expect a slow update");
   }
 
   const OceanParameters p = this->Sea.parameters();

@@ -1,5 +1,8 @@
 #include "vtkPFParticleBlock.h"
 
+#include "ParameterCheck.h"
+#include "parafluid/common/MemoryBudget.h"
+
 #include "ParticleArrays.h"
 
 #include "parafluid/common/ParticleLattice.h"
@@ -9,9 +12,11 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkTypeInt64Array.h"
+#include <cmath>
 
 #include <exception>
 
@@ -25,6 +30,33 @@ vtkPFParticleBlock::vtkPFParticleBlock()
 int vtkPFParticleBlock::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  parafluid::vtk::ParameterCheck check;
+  check.inRange("Spacing", this->Spacing, 1e-6, 1e3, "m")
+    .box("BlockBounds", this->BlockBounds, false)
+    .box("DomainBounds", this->DomainBounds, true)
+    .inRange("RestDensity", this->RestDensity, 1e-6, 1e6, "kg/m^3");
+  // What the block will take: about 60 bytes a particle (position, velocity, density, pressure,
+  // mass, id, vertex), checked before the lattice is made.
+  double count = 1.0;
+  for (int a = 0; a < 3 && check.ok(); ++a)
+  {
+    count *= std::floor((this->BlockBounds[2 * a + 1] - this->BlockBounds[2 * a]) / this->Spacing + 1e-9) + 1.0;
+  }
+  const std::string memory =
+    check.ok() ? parafluid::checkMemoryBudget(60.0 * count, "a block of " + std::to_string(count) + " particles")
+               : std::string();
+  check.require(memory.empty(), memory + "; raise Spacing or shrink BlockBounds");
+  if (!check.ok())
+  {
+    vtkErrorMacro("Particle Block: " << check.problem());
+    return 0;
+  }
+  if (count > 1e7)
+  {
+    vtkWarningMacro("Particle Block: " << count / 1e6
+                                       << " million particles: filters downstream (SPH Step) will be slow");
+  }
+  this->UpdateProgress(0.0);
   const double h = 2.0 * this->Spacing; // about 33 neighbours inside the kernel radius
   parafluid::ParticleLattice lattice;
   float mass = 0.0f;
@@ -57,6 +89,7 @@ int vtkPFParticleBlock::RequestData(vtkInformation*, vtkInformationVector**, vtk
   output->SetPoints(points);
   parafluid::vtk::setOneVertexPerPoint(output, n);
 
+  this->UpdateProgress(0.5);
   auto addScalar = [&](const char* name, float value)
   {
     vtkNew<vtkFloatArray> a;

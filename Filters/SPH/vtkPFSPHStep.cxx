@@ -65,7 +65,7 @@ void vtkPFSPHStep::SetWallFriction(int friction)
 
 void vtkPFSPHStep::SetWallRestitution(double value)
 {
-  this->SetParameter(this->Parameters.wallRestitution, std::clamp(value, 0.0, 1.0));
+  this->SetParameter(this->Parameters.wallRestitution, value); // checked when the run starts
 }
 
 void vtkPFSPHStep::SetGravity(double x, double y, double z)
@@ -117,6 +117,12 @@ int vtkPFSPHStep::RequestInformation(vtkInformation*, vtkInformationVector** inp
   this->InputHasTime = inInfo->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) &&
                        inInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()) > 0;
   this->StartTime = this->InputHasTime ? inInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[0] : 0.0;
+  if (this->NumberOfOutputs < 0 || this->NumberOfOutputs > 100000)
+  {
+    this->ReportError("NumberOfOutputs = " + std::to_string(this->NumberOfOutputs) +
+                      " is not allowed: it must be from 0 to 100000 (output times offered)");
+    return 0;
+  }
   const double interval = this->OutputInterval > 0.0 ? this->OutputInterval : 1.0;
   std::vector<double> times(static_cast<std::size_t>(this->NumberOfOutputs) + 1);
   for (std::size_t k = 0; k < times.size(); ++k)
@@ -192,6 +198,32 @@ int vtkPFSPHStep::RequestParticles(const Particles& particles, vtkInformationVec
 bool vtkPFSPHStep::ResolveParameters(vtkFieldData* fd, SPHParameters& p)
 {
   p = this->Parameters;
+  // The properties the core does not check itself, or whose 0 means "automatic" (the core sees
+  // only the resolved value).
+  const double domainProperty[6] = { p.domainBounds[0], p.domainBounds[1], p.domainBounds[2],
+                                     p.domainBounds[3], p.domainBounds[4], p.domainBounds[5] };
+  const bool automaticDomain = std::all_of(domainProperty, domainProperty + 6, [](double v) { return v == 0.0; });
+  const double gravity[3] = { p.gravity[0], p.gravity[1], p.gravity[2] };
+  parafluid::vtk::ParameterCheck check;
+  check.inRange("SmoothingLength", p.smoothingLength, 0.0, 1e3, "m (0: from the input)")
+    .inRange("ParticleMass", p.particleMass, 0.0, 1e6, "kg (0: from the input's spacing)")
+    .inRange("RestDensity", p.restDensity, 1e-6, 1e6, "kg/m^3")
+    .inRange("GasStiffness", p.gasStiffness, 0.0, 1e12, "m^2/s^2")
+    .inRange("Viscosity", p.viscosity, 0.0, 1e9, "Pa s")
+    .inRange("SurfaceTension", p.surfaceTension, 0.0, 1e3, "N/m")
+    .inRange("WallRestitution", p.wallRestitution, 0.0, 1.0)
+    .allInRange("Gravity", gravity, 3, -1e6, 1e6, "m/s^2")
+    .inRange("OutputInterval", this->OutputInterval, 1e-9, 1e6, "s")
+    .inRange("TimeStep", p.timeStep, 1e-9, 1e3, "s")
+    .inRange("MaxTimeStep", p.maxTimeStep, 1e-9, 1e3, "s");
+  if (!automaticDomain)
+  {
+    check.box("DomainBounds", domainProperty, true);
+  }
+  if (!this->Accept(check))
+  {
+    return false;
+  }
   const double spacing = parafluid::vtk::fieldValue(fd, contract::ParticleSpacing, 0.0);
   if (!(p.smoothingLength > 0.0f))
   {

@@ -88,7 +88,7 @@ public:
   /// [kg]; 0 = the mass that gives rest density on the input's particle_spacing lattice.
   void SetParticleMass(double value) { this->SetParameter(this->Parameters.particleMass, value); }
   double GetParticleMass() const { return this->Parameters.particleMass; }
-  /// Fraction of the normal velocity kept when a particle bounces off a wall (clamped to 0..1).
+  /// Fraction of the normal velocity kept when a particle bounces off a wall (0..1).
   void SetWallRestitution(double value);
   double GetWallRestitution() const { return this->Parameters.wallRestitution; }
   /// Tangential stress of the walls: 0 free-slip, 1 no-slip (through the viscosity), 2 the

@@ -47,9 +47,12 @@ int vtkPFCarpetSurface::RequestParticles(const Particles& particles, vtkInformat
   vtkDataObject* terrainData = inputVector[1]->GetNumberOfInformationObjects() > 0
                                  ? inputVector[1]->GetInformationObject(0)->Get(vtkDataObject::DATA_OBJECT())
                                  : nullptr;
-  if (!(this->FallAcceleration >= 0.0) || !(this->MinDepth >= 0.0))
+  parafluid::vtk::ParameterCheck check;
+  check.inRange("FallAcceleration", this->FallAcceleration, 0.0, 1e6, "m/s^2")
+    .inRange("MinDepth", this->MinDepth, 0.0, 1e6, "m")
+    .inRange("Resolution", this->Resolution, 1, 65536);
+  if (!this->Accept(check))
   {
-    this->ReportError("FallAcceleration and MinDepth must be zero or positive");
     return 0;
   }
   vtkPointSet* local = particles.Local;

@@ -96,4 +96,10 @@ labels = fd.GetAbstractArray("labels")
 pftest.check(labels is not None and labels.GetValue(1) == "second", "string field data was not kept")
 pftest.check(np.array_equal(pftest.point_array(data, "id_components"), np.ones((10, 3))), "the 3-component id's values were lost")
 pftest.check(np.array_equal(pftest.point_array(data, "id"), np.arange(10)), "ids of a file without a usable id dataset")
+# A compression level outside 0..9 is refused by name (it used to be clamped without a word).
+bad_level = CreateWriter(os.path.join(out, "level.h5part"), small)
+bad_level.CompressionLevel = -1
+catcher = pftest.ErrorCatcher(bad_level)
+bad_level.UpdatePipeline()
+pftest.check("CompressionLevel" in catcher.text(), "CompressionLevel -1: %r" % catcher.text())
 print("writer safety: ok")

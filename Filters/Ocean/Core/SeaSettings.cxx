@@ -1,6 +1,7 @@
 #include "parafluid/ocean/SeaSettings.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace parafluid::ocean
@@ -37,6 +38,59 @@ OceanParameters SeaSettings::parameters() const
   p.breakingLean = this->breakingLean;
   p.breakingShift = this->breakingShift;
   return p;
+}
+
+namespace
+{
+/// Empty when v is finite and in [lo, hi]; else why not, naming the property.
+std::string outside(const char* name, double v, double lo, double hi)
+{
+  if (std::isfinite(v) && v >= lo && v <= hi)
+  {
+    return {};
+  }
+  std::ostringstream text;
+  text << name << " = " << v << " is not allowed: it must be a finite number from " << lo << " to " << hi;
+  return text.str();
+}
+} // namespace
+
+std::string SeaSettings::validate() const
+{
+  // Distances up to 1e7 m (a sea 10000 km across) and angles up to 1e6 degrees: beyond them float
+  // phases lose every digit and the output would be noise.
+  const std::string checks[] = {
+    outside("WindDirection", this->windDirection, -1e6, 1e6),
+    outside("WindLean", this->windLean, 0.0, 0.5),
+    outside("WaterDepth", this->waterDepth, 0.0, 1e5),
+    outside("MaxSteepness", this->maxSteepness, 0.01, 1.0),
+    outside("BreakingDepthRatio", this->breakingDepthRatio, 0.01, 10.0),
+    outside("BreakingStretch", this->breakingStretch, 0.0, 10.0),
+    outside("BreakingLean", this->breakingLean, 0.0, 1.4),
+    outside("BreakingShift", this->breakingShift, 0.0, 10.0),
+    outside("SeaLevel", this->seaLevel, -1e7, 1e7),
+    outside("BathymetryResolution", this->bathymetryResolution, 2, 8192),
+  };
+  for (const std::string& problem : checks)
+  {
+    if (!problem.empty())
+    {
+      return problem;
+    }
+  }
+  for (std::size_t w = 0; w + 4 < this->waves.size(); w += 5)
+  {
+    const double* wave = &this->waves[w];
+    const std::string problem =
+      outside("Waves (amplitude)", wave[0], 0.0, 1e3) + outside("Waves (wavelength)", wave[1], 1e-3, 1e7) +
+      outside("Waves (direction)", wave[2], -1e6, 1e6) + outside("Waves (steepness)", wave[3], 0.0, 1.0) +
+      outside("Waves (phase)", wave[4], -1e6, 1e6);
+    if (!problem.empty())
+    {
+      return problem + " (wave " + std::to_string(w / 5) + ")";
+    }
+  }
+  return {};
 }
 
 std::string SeaSettings::key() const

@@ -31,6 +31,9 @@ struct SeaSettings
   bool setWave(int index, const double values[5]);
   /// The wave model's parameters: the preset's waves or the list, deep water at depth 0.
   OceanParameters parameters() const;
+  /// Empty when every setting is finite and in its range; else a sentence naming the first bad
+  /// one by its property name (WindLean, Waves, ...) and what it allows.
+  std::string validate() const;
   /// Every setting as text (full precision): equal keys, equal seas.
   std::string key() const;
 };

@@ -1,0 +1,160 @@
+"""Every numeric property of every ParaFluid source and filter, at NaN, +Inf, -Inf, 0, -1 and 1e30:
+a clean error that names the property, or a documented meaning, never a crash, a hang, NaN output
+or silent acceptance.
+
+The documented meaning is the property's domain in the plugin XML (what the GUI allows and its
+tooltip states): a value inside the domain must run and give finite output, or be refused by name
+(the memory budget, a run too long to finish); a value outside it must be refused by name. The
+few properties whose meaning is not a plain range (bounds, vectors, 0 = automatic) are in SPECIAL.
+"""
+import builtins
+import math
+import sys
+
+import numpy as np
+from paraview.simple import *
+from paraview import servermanager
+import pftest
+
+pftest.load(globals())
+BAD = [float("nan"), float("inf"), float("-inf"), 0.0, -1.0, 1e30]
+
+block = ParticleBlock(BlockBounds=[0, 0.1, 0, 0.1, 0, 0.1], Spacing=0.025, DomainBounds=[0, 0.2, 0, 0.2, 0, 0.2])
+terrain = Plane(Origin=[-1, -1, -0.5], Point1=[1, -1, -0.5], Point2=[-1, 1, -0.5])
+MAKERS = {
+    "ParticleBlock": lambda: ParticleBlock(BlockBounds=[0, 0.1, 0, 0.1, 0, 0.1], Spacing=0.025,
+                                           DomainBounds=[0, 0.2, 0, 0.2, 0, 0.2]),
+    "SPHStep": lambda: SPHStep(Input=block, OutputInterval=0.002, NumberOfOutputs=1),
+    "ParticleSurfaceMarchingCubes": lambda: ParticleSurfaceMarchingCubes(Input=block),
+    "CarpetSurface": lambda: CarpetSurface(Input=block, Resolution=16),
+    "FluidFlowLines": lambda: FluidFlowLines(Input=block),
+    "FoamParticles": lambda: FoamParticles(Input=block),
+    "GerstnerOcean": lambda: GerstnerOcean(Resolution=[16, 16], BathymetryResolution=16),
+}
+# (proxy, property) -> function(values) -> True when the values are valid (must run), False when
+# they must be refused. Properties not listed follow their XML domain.
+def bounds_valid(b):
+    return all(math.isfinite(v) for v in b) and all(b[2 * a] <= b[2 * a + 1] for a in range(3))
+
+
+SPECIAL = {
+    ("ParticleBlock", "BlockBounds"): bounds_valid,  # an empty box gives no particles
+    ("ParticleBlock", "DomainBounds"): lambda b: bounds_valid(b) and all(b[2 * a] < b[2 * a + 1] for a in range(3)),
+    # all zero: taken from the input's domain_bounds field data
+    ("SPHStep", "DomainBounds"): lambda b: all(v == 0 for v in b) or (
+        bounds_valid(b) and all(b[2 * a] < b[2 * a + 1] for a in range(3))),
+    ("SPHStep", "Gravity"): lambda g: all(math.isfinite(v) and abs(v) < 1e6 for v in g),
+    ("GerstnerOcean", "Origin"): lambda o: all(math.isfinite(v) and abs(v) < 1e12 for v in o),
+    ("GerstnerOcean", "SeaLevel"): lambda v: math.isfinite(v[0]) and abs(v[0]) < 1e12,
+    ("GerstnerOcean", "WindDirection"): lambda v: math.isfinite(v[0]) and abs(v[0]) < 1e12,
+    # amplitude, wavelength, direction, steepness, phase per wave
+    ("GerstnerOcean", "Waves"): lambda w: all(math.isfinite(v) for v in w) and w[1] > 0 and w[0] >= 0 and abs(w[2]) < 1e12 and abs(w[4]) < 1e12 and 0 <= w[3] <= 1,
+}
+SKIP = {"TimestepValues"}
+
+
+def domain_valid(prop, values):
+    """The XML domain's verdict on `values`; None when the property has no domain."""
+    sm = prop.SMProperty
+    for name in ("range", "bool", "enum"):
+        domain = sm.GetDomain(name)
+        if domain is None:
+            continue
+        if domain.IsA("vtkSMBooleanDomain"):
+            return all(v in (0, 1) for v in values)
+        if domain.IsA("vtkSMEnumerationDomain"):
+            allowed = {domain.GetEntryValue(k) for k in range(domain.GetNumberOfEntries())}
+            return all(v in allowed for v in values)
+        ok = True
+        for k, v in enumerate(values):
+            if not math.isfinite(v):
+                return False
+            e = min(k, domain.GetNumberOfEntries() - 1) if hasattr(domain, "GetNumberOfEntries") else 0
+            if domain.GetMinimumExists(e) and v < domain.GetMinimum(e):
+                ok = False
+            if domain.GetMaximumExists(e) and v > domain.GetMaximum(e):
+                ok = False
+        return ok
+    return None
+
+
+class Messages:
+    def __init__(self, proxy):
+        self.errors = []
+        proxy.GetClientSideObject().AddObserver("ErrorEvent", self.on_error)
+
+    @pftest.calldata_type(pftest.VTK_STRING)
+    def on_error(self, _o, _e, text):
+        self.errors.append(text)
+
+
+def output_finite(data):
+    if data is None:
+        return True
+    pts = data.GetPoints() if hasattr(data, "GetPoints") else None
+    if pts is not None and pts.GetNumberOfPoints() and not np.all(np.isfinite(pftest.points(data))):
+        return False
+    pd = data.GetPointData()
+    for i in range(pd.GetNumberOfArrays()):
+        a = pd.GetArray(i)
+        if a is not None and a.GetDataType() in (10, 11) and a.GetNumberOfTuples():
+            if not np.all(np.isfinite(pftest.point_array(data, pd.GetArrayName(i)))):
+                return False
+    return True
+
+
+failures = []
+cases = 0
+for xml_name, make in MAKERS.items():
+    probe = make()
+    names = [n for n in probe.ListProperties()]
+    for label in names:
+        prop = probe.GetProperty(label)
+        sm = prop.SMProperty
+        if label in SKIP or not (sm.IsA("vtkSMDoubleVectorProperty") or sm.IsA("vtkSMIntVectorProperty")):
+            continue
+        if sm.GetInformationOnly() or sm.GetNumberOfElements() == 0:
+            continue
+        property_name = sm.GetXMLName()
+        default = list(prop) if sm.GetNumberOfElements() > 1 else [prop.GetData()]
+        for bad in BAD:
+            # One element set to the bad value (the max of a pair or a box, the only one else).
+            index = 1 if len(default) in (2, 6) else 0
+            values = list(default)
+            values[index] = bad
+            cases += 1
+            proxy = make()
+            messages = Messages(proxy)
+            try:
+                proxy.SetPropertyWithName(label, values if len(values) > 1 else values[0])
+            except Exception as exc:  # ParaView refuses it before the filter sees it (NaN to an int)
+                Delete(proxy)
+                continue
+            special = SPECIAL.get((xml_name, property_name))
+            valid = special(values) if special else domain_valid(prop, values)
+            if valid is None:
+                valid = all(math.isfinite(v) for v in values)
+            try:
+                times = proxy.TimestepValues
+                t = times[-1] if times else None
+            except AttributeError:
+                t = None
+            where = "%s.%s = %r" % (xml_name, property_name, values if len(values) > 1 else values[0])
+            print("case " + where, flush=True)  # the last one printed names a crash
+            data = pftest.fetch(proxy, t)
+            error = " ".join(messages.errors)
+            if error:
+                if property_name not in error:
+                    failures.append("%s: the error does not name the property: %r" % (where, error[-300:]))
+            elif not valid:
+                failures.append("%s: accepted silently (outside its documented domain)" % where)
+            elif not output_finite(data):
+                failures.append("%s: NaN or infinite output" % where)
+            Delete(proxy)
+            sys.stdout.flush()
+    Delete(probe)
+
+for failure in failures:
+    print(failure)
+pftest.check(not failures, "%d of %d parameter cases failed" % (len(failures), cases))
+print("parameter table: %d cases clean" % cases)
