@@ -186,6 +186,7 @@ int vtkPFSPHStep::RequestParticles(const Particles& particles, vtkInformationVec
     cache.InputTime = inputTime;
     cache.BoundaryTime = boundaryTime;
   }
+  this->WarnAboutLongRun(target);
   const int advanced = this->AdvanceTo(target);
   if (advanced != 1)
   {
@@ -193,6 +194,25 @@ int vtkPFSPHStep::RequestParticles(const Particles& particles, vtkInformationVec
   }
   this->WriteOutput(particles.Gathered, target, output);
   return 1;
+}
+
+void vtkPFSPHStep::WarnAboutLongRun(long long target)
+{
+  // The first step's length says how many the requested time needs; a run that will take
+  // millions of steps (a huge Viscosity, a tiny SmoothingLength, a very stiff fluid) is announced
+  // before the progress bar starts crawling, with what makes the steps short.
+  const Cache& cache = *this->Cached;
+  const double span = static_cast<double>(target - cache.OutputIndex) * this->OutputInterval;
+  const double dt = cache.Solver->proposedTimeStep();
+  const double steps = dt > 0.0 ? span / dt : 0.0;
+  const double particles = static_cast<double>(cache.Solver->state().size());
+  if (steps * std::max(particles, 1.0) > 1e10 || steps > 1e6)
+  {
+    vtkWarningMacro(<< "SPH Step: reaching t = " << this->StartTime + target * this->OutputInterval << " s needs about "
+                    << steps << " time steps of " << dt << " s for " << particles
+                    << " particles: a long run (the step shrinks with a high Viscosity, a small SmoothingLength or a "
+                       "large GasStiffness; progress is shown and the run can be aborted)");
+  }
 }
 
 bool vtkPFSPHStep::ResolveParameters(vtkFieldData* fd, SPHParameters& p)

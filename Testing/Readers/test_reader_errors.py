@@ -84,3 +84,21 @@ zero = SPHStep(Input=ParticleBlock(BlockBounds=[0, 0.001, 0, 0.001, 0, 0.001]), 
 d = pftest.fetch(zero, zero.TimestepValues[-1])
 pftest.check(d.GetNumberOfPoints() == 0, "zero particles in, zero out")
 print("reader errors: ok")
+
+# A run that needs millions of steps (Viscosity 1e6 Pa s shrinks the explicit viscous step) is
+# announced before it starts, and can be aborted from the warning on.
+slow = SPHStep(Input=ParticleBlock(), Viscosity=1e6, NumberOfOutputs=1)
+slow_object = slow.GetClientSideObject()
+long_run = []
+
+
+@pftest.calldata_type(pftest.VTK_STRING)
+def abort_on_warning(_o, _e, text):
+    long_run.append(text)
+    slow_object.SetAbortExecute(1)
+
+
+slow_object.AddObserver("WarningEvent", abort_on_warning)
+slow.UpdatePipeline(slow.TimestepValues[-1])
+pftest.check(len(long_run) == 1 and "time steps" in long_run[0] and "Viscosity" in long_run[0], "no long-run warning: %r" % long_run)
+print("long runs: ok")

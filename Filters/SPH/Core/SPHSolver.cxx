@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 namespace parafluid::sph
 {
@@ -67,6 +69,26 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial,
                                   ") has a NaN or infinite position or velocity");
     }
   }
+  this->checkCoincident();
+  {
+    // The scene's own speed scale: free fall over the domain's largest extent, and the fastest
+    // particle at the start.
+    const SPHParameters& p = this->Parameters;
+    double extent = 0.0, g = 0.0, v0 = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      extent = std::max(extent, static_cast<double>(p.domainBounds[2 * a + 1] - p.domainBounds[2 * a]));
+      g += static_cast<double>(p.gravity[a]) * p.gravity[a];
+    }
+    const ParticleState& s = this->State;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      v0 = std::max(v0, std::sqrt(static_cast<double>(s.vx[i]) * s.vx[i] + static_cast<double>(s.vy[i]) * s.vy[i] +
+                                  static_cast<double>(s.vz[i]) * s.vz[i]));
+    }
+    // 1 m/s floor: a weightless scene at rest may still start to move (surface tension).
+    this->SpeedLimit = 10.0 * (std::sqrt(2.0 * std::sqrt(g) * extent) + v0) + 1.0;
+  }
   // Particles that start outside the domain are reflected inside, as the walls would do.
   this->drift(0.0f);
   this->sortByCell();
@@ -114,8 +136,8 @@ std::int64_t SPHSolver::advance(double duration, const std::function<bool(double
     if (dt < smallest && dt < remaining)
     {
       throw std::runtime_error("SPH became unstable at t = " + std::to_string(this->Time) +
-                               " s: the adaptive time step fell to " + std::to_string(dt) +
-                               " s; lower GasStiffness or raise Viscosity");
+                               " s: the adaptive time step fell to " + std::to_string(dt) + " s; " +
+                               this->stabilityAdvice());
     }
     if (progress && taken % 8 == 0 && !progress(duration > 0.0 ? 1.0 - (end - this->Time) / duration : 1.0))
     {
@@ -145,13 +167,13 @@ double SPHSolver::step(double maxStep)
   catch (const std::invalid_argument&)
   {
     // The neighbour grid refuses non-finite positions: the step blew up before the check below.
-    throw std::runtime_error(
-      "SPH became unstable at step " + std::to_string(this->Steps) +
-      " (non-finite positions): turn on AdaptiveTimeStep or reduce TimeStep or GasStiffness, or raise Viscosity");
+    throw std::runtime_error("SPH became unstable at step " + std::to_string(this->Steps) +
+                             " (non-finite positions): " + this->stabilityAdvice());
   }
   ++this->Steps;
   this->checkFinite();
   this->measureCompression();
+  this->checkPhysical();
   return this->Last.timeStep;
 }
 
@@ -248,9 +270,8 @@ void SPHSolver::checkFinite() const
   }
   if (!std::isfinite(total))
   {
-    throw std::runtime_error(
-      "SPH became unstable at step " + std::to_string(this->Steps) +
-      " (non-finite velocity): turn on AdaptiveTimeStep or reduce TimeStep or GasStiffness, or raise Viscosity");
+    throw std::runtime_error("SPH became unstable at step " + std::to_string(this->Steps) +
+                             " (non-finite velocity): " + this->stabilityAdvice());
   }
 }
 
@@ -266,6 +287,87 @@ void SPHSolver::measureCompression()
     total += std::max(rho[i] - rho0, 0.0f);
   }
   this->Last.meanCompression = n > 0 ? total / (static_cast<double>(n) * rho0) : 0.0;
+  float highest = 0.0f;
+#pragma omp parallel for schedule(static) reduction(max : highest) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    highest = std::max(highest, rho[i]);
+  }
+  this->Last.maxDensityRatio = static_cast<double>(highest) / rho0;
+}
+
+std::string SPHSolver::stabilityAdvice() const
+{
+  const SPHParameters& p = this->Parameters;
+  if (p.pressureSolver == PressureSolverType::DFSPH)
+  {
+    return p.adaptiveTimeStep ? "lower CFLNumber or MaxTimeStep, or raise MaxPressureIterations"
+                              : "lower TimeStep or turn on AdaptiveTimeStep, or raise MaxPressureIterations";
+  }
+  return p.adaptiveTimeStep ? "lower CFLNumber or MaxTimeStep, or raise GasStiffness (a stiffer, less compressible "
+                              "fluid) or Viscosity"
+                            : "lower TimeStep or turn on AdaptiveTimeStep (the step must stay below the CFL limit of "
+                              "the speed of sound sqrt(GasStiffness))";
+}
+
+void SPHSolver::checkPhysical() const
+{
+  // Weakly compressible water stays within a few percent of rest density and DFSPH within its
+  // tolerance; twice the rest density, or a particle ten times faster than anything in the scene
+  // can make it go, is a run that has blown up even if no number is NaN yet.
+  constexpr double kMaxDensityRatio = 2.0;
+  if (this->Last.maxDensityRatio > kMaxDensityRatio)
+  {
+    throw std::runtime_error("SPH stopped at t = " + std::to_string(this->Time) + " s: the density reached " +
+                             std::to_string(this->Last.maxDensityRatio) +
+                             " x RestDensity (a liquid stays within a few percent): the run has blown up; " +
+                             this->stabilityAdvice());
+  }
+  const ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  float v2 = 0.0f;
+#pragma omp parallel for schedule(static) reduction(max : v2) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    v2 = std::max(v2, s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+  }
+  const double speed = std::sqrt(static_cast<double>(v2));
+  if (speed > this->SpeedLimit)
+  {
+    throw std::runtime_error("SPH stopped at t = " + std::to_string(this->Time) + " s: a particle moves at " +
+                             std::to_string(speed) + " m/s, more than the " + std::to_string(this->SpeedLimit) +
+                             " m/s this scene allows (ten times free fall across the domain plus the fastest start): "
+                             "the run has blown up; " +
+                             this->stabilityAdvice());
+  }
+}
+
+void SPHSolver::checkCoincident() const
+{
+  const ParticleState& s = this->State;
+  std::vector<std::uint32_t> order(s.size());
+  std::iota(order.begin(), order.end(), 0u);
+  auto key = [&](std::uint32_t i) { return std::make_tuple(s.x[i], s.y[i], s.z[i]); };
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+  std::size_t shared = 0;
+  std::uint32_t first = 0, second = 0;
+  for (std::size_t k = 1; k < order.size(); ++k)
+  {
+    if (key(order[k]) == key(order[k - 1]) && shared++ == 0)
+    {
+      first = std::min(order[k], order[k - 1]);
+      second = std::max(order[k], order[k - 1]);
+    }
+  }
+  if (shared > 0)
+  {
+    throw std::invalid_argument(
+      "SPH: " + std::to_string(shared) + " particles share their position with another (first: particles " +
+      std::to_string(first) + " and " + std::to_string(second) + " at (" + std::to_string(s.x[first]) + ", " +
+      std::to_string(s.y[first]) + ", " + std::to_string(s.z[first]) +
+      ")); SPH forces vanish at zero distance, so they would never separate: remove the duplicates upstream (the "
+      "Clean filter) or move them apart");
+  }
 }
 
 void SPHSolver::sortByCell()

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 
 namespace parafluid
 {
@@ -61,6 +62,8 @@ public:
     int divergenceIterations = 0; // DFSPH only
     /// Mean over all particles of max(rho - rho0, 0) / rho0 after the step (measured, not predicted).
     double meanCompression = 0.0;
+    /// Largest density over rho0 after the step.
+    double maxDensityRatio = 0.0;
   };
   const StepStatistics& lastStep() const { return this->Last; }
 
@@ -77,6 +80,11 @@ public:
   double kineticEnergy() const;
   /// Bytes held per particle by the state, scratch and the neighbour grid.
   double bytesPerParticle() const;
+  /// The fastest a particle may move in this scene before the run counts as blown up [m/s]: ten
+  /// times the free-fall speed over the domain's largest extent plus the fastest initial speed.
+  double speedLimit() const { return this->SpeedLimit; }
+  /// What to change when the run blows up, in the properties of the chosen solver.
+  std::string stabilityAdvice() const;
 
 private:
   void sortByCell();
@@ -88,6 +96,12 @@ private:
   /// The LogLaw wall shear over dt, implicit in the tangential velocity (WallFriction.cxx).
   void applyWallFriction(float dt);
   void measureCompression();
+  /// Throws when the density or a speed is far beyond what the scene allows (a blown-up run
+  /// that has not reached NaN yet).
+  void checkPhysical() const;
+  /// Throws when two particles share a position: SPH forces vanish at zero distance, so they
+  /// would never separate.
+  void checkCoincident() const;
 
   /// Viscosity, surface tension, gravity and (when withPressure) the equation-of-state pressure
   /// into State.a*; each pass is compiled in only when its coefficient is non-zero (SPHForces.cxx).
@@ -110,6 +124,7 @@ private:
   float ParticleSpacing = 0.0f;       // [m] edge of the cube a particle fills at rest density
   std::int64_t Steps = 0;
   double Time = 0.0;
+  double SpeedLimit = 0.0; // [m/s], see speedLimit()
   StepStatistics Last;
   std::unique_ptr<PressureSolver> Pressure; // WCSPH or DFSPH (SPHParameters::pressureSolver)
 };
