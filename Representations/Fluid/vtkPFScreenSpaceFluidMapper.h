@@ -32,6 +32,7 @@
 #pragma once
 
 #include "ParaFluidFluidRepresentationsModule.h"
+#include "SetParameterMacros.h"
 #include "vtkMapper.h"
 
 #include <memory>
@@ -76,7 +77,7 @@ public:
 
   //@{
   /// Particle radius in world units (when RadiusArray is empty or missing).
-  vtkSetClampMacro(ParticleRadius, double, 1e-12, 1e30);
+  vtkPFSetClampMacro(ParticleRadius, double, 1e-12, 1e30);
   vtkGetMacro(ParticleRadius, double);
   /// Point array holding each particle's radius [world units]; empty: ParticleRadius for all.
   void SetRadiusArray(const char* name);
@@ -88,41 +89,41 @@ public:
   /// and bilateral; at most MaxFilterRadius pixels each side), the depth band in particle radii
   /// (narrow-range mu, bilateral sigma, curvature-flow boundary), and the curvature-flow step as
   /// a fraction of the explicit scheme's stability limit (below 1).
-  vtkSetClampMacro(SmoothingMethod, int, 0, 2);
+  vtkPFSetClampMacro(SmoothingMethod, int, 0, 2);
   vtkGetMacro(SmoothingMethod, int);
-  vtkSetClampMacro(SmoothingIterations, int, 0, 1000);
+  vtkPFSetClampMacro(SmoothingIterations, int, 0, 1000);
   vtkGetMacro(SmoothingIterations, int);
-  vtkSetClampMacro(FilterSize, double, 0.1, 50.0);
+  vtkPFSetClampMacro(FilterSize, double, 0.1, 50.0);
   vtkGetMacro(FilterSize, double);
-  vtkSetClampMacro(MaxFilterRadius, int, 1, 64);
+  vtkPFSetClampMacro(MaxFilterRadius, int, 1, 64);
   vtkGetMacro(MaxFilterRadius, int);
-  vtkSetClampMacro(DepthRange, double, 0.01, 100.0);
+  vtkPFSetClampMacro(DepthRange, double, 0.01, 100.0);
   vtkGetMacro(DepthRange, double);
-  vtkSetClampMacro(CurvatureFlowStep, double, 0.001, 0.95);
+  vtkPFSetClampMacro(CurvatureFlowStep, double, 0.001, 0.95);
   vtkGetMacro(CurvatureFlowStep, double);
   //@}
 
   //@{
   /// What is drawn: see DisplayModes (OpaqueSurface to ParticleDepth).
-  vtkSetClampMacro(DisplayMode, int, 0, 4);
+  vtkPFSetClampMacro(DisplayMode, int, 0, 4);
   vtkGetMacro(DisplayMode, int);
   /// Colour of the fluid (opaque surface), and the tint white light takes through
   /// AttenuationDistance world units of it (transparent fluid, Beer-Lambert).
-  vtkSetVector3Macro(FluidColor, double);
+  vtkPFSetFiniteVector3Macro(FluidColor, double);
   vtkGetVector3Macro(FluidColor, double);
-  vtkSetClampMacro(AttenuationDistance, double, 1e-12, 1e30);
+  vtkPFSetClampMacro(AttenuationDistance, double, 1e-12, 1e30);
   vtkGetMacro(AttenuationDistance, double);
   /// Index of refraction (1.33 for water): sets Schlick's R0.
-  vtkSetClampMacro(RefractiveIndex, double, 1.0, 4.0);
+  vtkPFSetClampMacro(RefractiveIndex, double, 1.0, 4.0);
   vtkGetMacro(RefractiveIndex, double);
   /// How far the scene behind shifts: world units per unit of normal x thickness.
-  vtkSetClampMacro(RefractionStrength, double, 0.0, 10.0);
+  vtkPFSetClampMacro(RefractionStrength, double, 0.0, 10.0);
   vtkGetMacro(RefractionStrength, double);
-  vtkSetClampMacro(Shininess, double, 1.0, 10000.0);
-  vtkSetClampMacro(SpecularStrength, double, 0.0, 10.0);
-  vtkSetClampMacro(Ambient, double, 0.0, 1.0);
+  vtkPFSetClampMacro(Shininess, double, 1.0, 10000.0);
+  vtkPFSetClampMacro(SpecularStrength, double, 0.0, 10.0);
+  vtkPFSetClampMacro(Ambient, double, 0.0, 1.0);
   /// Weight of the colour mapped from the scalars (ScalarVisibility) against FluidColor.
-  vtkSetClampMacro(ColorMix, double, 0.0, 1.0);
+  vtkPFSetClampMacro(ColorMix, double, 0.0, 1.0);
   /// A cube map (vtkTexture with CubeMap on) to reflect; without it the renderer's environment
   /// texture when it has one, else the view's background colours.
   void SetEnvironmentTexture(vtkTexture* texture);

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "ParaFluidNPRRepresentationsModule.h"
+#include "SetParameterMacros.h"
 #include "vtkPFToonFluidMapper.h"
 
 #include "ParticleContract.h"
@@ -34,17 +35,17 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// [pixels]
-  vtkSetClampMacro(StrokeWidth, double, 1.0, 64.0);
+  vtkPFSetClampMacro(StrokeWidth, double, 1.0, 64.0);
   vtkGetMacro(StrokeWidth, double);
   /// [particle radii]
-  vtkSetClampMacro(StrokeLength, double, 0.5, 1000.0);
+  vtkPFSetClampMacro(StrokeLength, double, 0.5, 1000.0);
   vtkGetMacro(StrokeLength, double);
-  vtkSetClampMacro(StrokeSeedStride, int, 1, 1000000);
+  vtkPFSetClampMacro(StrokeSeedStride, int, 1, 1000000);
   vtkGetMacro(StrokeSeedStride, int);
   /// [s] of flow integrated along each flow stroke.
-  vtkSetClampMacro(StrokeDuration, double, 1e-6, 1e6);
+  vtkPFSetClampMacro(StrokeDuration, double, 1e-6, 1e6);
   vtkGetMacro(StrokeDuration, double);
-  vtkSetClampMacro(MaxStrokes, int, 1, 10000000);
+  vtkPFSetClampMacro(MaxStrokes, int, 1, 10000000);
   vtkGetMacro(MaxStrokes, int);
   void SetStrokeVelocityArray(const char* name);
   const char* GetStrokeVelocityArray() const { return this->StrokeVelocityArray.c_str(); }

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "ParaFluidNPRRepresentationsModule.h"
+#include "SetParameterMacros.h"
 #include "vtkPFScreenSpaceFluidMapper.h"
 
 #include <memory>
@@ -30,17 +31,17 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Brightness levels of the fluid colour.
-  vtkSetClampMacro(ToonBands, int, 2, 16);
+  vtkPFSetClampMacro(ToonBands, int, 2, 16);
   vtkGetMacro(ToonBands, int);
-  vtkSetVector3Macro(LineColor, double);
+  vtkPFSetFiniteVector3Macro(LineColor, double);
   vtkGetVector3Macro(LineColor, double);
   /// [pixels]
-  vtkSetClampMacro(LineWidth, double, 0.5, 8.0);
+  vtkPFSetClampMacro(LineWidth, double, 0.5, 8.0);
   vtkGetMacro(LineWidth, double);
-  vtkSetClampMacro(LineThreshold, double, 0.001, 10.0);
+  vtkPFSetClampMacro(LineThreshold, double, 0.001, 10.0);
   vtkGetMacro(LineThreshold, double);
   /// Depth contour lines every this many particle radii; 0: none.
-  vtkSetClampMacro(DepthContourSpacing, double, 0.0, 1000.0);
+  vtkPFSetClampMacro(DepthContourSpacing, double, 0.0, 1000.0);
   vtkGetMacro(DepthContourSpacing, double);
 
 protected:

@@ -19,6 +19,7 @@
 #pragma once
 
 #include "ParaFluidOceanRepresentationsModule.h"
+#include "SetParameterMacros.h"
 #include "vtkGeometryRepresentationWithFaces.h"
 
 #include "parafluid/ocean/SeaSettings.h"
@@ -69,35 +70,35 @@ public:
   //@{
   /// Shading. ShadingMode 0: realistic; 1: one solid colour (SolidColor), for checking shapes;
   /// 2: the wave normal as a colour (0.5 + 0.5 n).
-  vtkSetClampMacro(ShadingMode, int, 0, 2);
-  vtkSetVector3Macro(SolidColor, double);
-  vtkSetVector3Macro(DeepColor, double);
-  vtkSetVector3Macro(ShallowColor, double);
+  vtkPFSetClampMacro(ShadingMode, int, 0, 2);
+  vtkPFSetFiniteVector3Macro(SolidColor, double);
+  vtkPFSetFiniteVector3Macro(DeepColor, double);
+  vtkPFSetFiniteVector3Macro(ShallowColor, double);
   /// Metres of water over which the colour goes from shallow to deep.
-  vtkSetMacro(ColorDepth, double);
-  vtkSetVector3Macro(FoamColor, double);
-  vtkSetMacro(FoamAmount, double);
+  vtkPFSetFiniteMacro(ColorDepth, double);
+  vtkPFSetFiniteVector3Macro(FoamColor, double);
+  vtkPFSetFiniteMacro(FoamAmount, double);
   /// Sun elevation and azimuth [degrees], colour and intensity (linear radiance).
-  vtkSetMacro(SunElevation, double);
-  vtkSetMacro(SunAzimuth, double);
-  vtkSetVector3Macro(SunColor, double);
-  vtkSetMacro(SunIntensity, double);
-  vtkSetMacro(Shininess, double);
+  vtkPFSetFiniteMacro(SunElevation, double);
+  vtkPFSetFiniteMacro(SunAzimuth, double);
+  vtkPFSetFiniteVector3Macro(SunColor, double);
+  vtkPFSetFiniteMacro(SunIntensity, double);
+  vtkPFSetFiniteMacro(Shininess, double);
   /// Procedural sky (when no environment images are given).
-  vtkSetVector3Macro(HorizonColor, double);
-  vtkSetVector3Macro(ZenithColor, double);
+  vtkPFSetFiniteVector3Macro(HorizonColor, double);
+  vtkPFSetFiniteVector3Macro(ZenithColor, double);
   /// Six cube map faces (+X, -X, +Y, -Y, +Z, -Z; +Y of the images is world +Z), all or none.
   void SetEnvironmentImage(int face, const char* file);
-  vtkSetMacro(EnvironmentScale, double);
+  vtkPFSetFiniteMacro(EnvironmentScale, double);
   /// Capillary ripples: metres per tile of the normal map, strength (0 off), drift speed, and the
   /// distance beyond which they fade out.
-  vtkSetMacro(RippleScale, double);
-  vtkSetMacro(RippleStrength, double);
-  vtkSetMacro(RippleSpeed, double);
-  vtkSetMacro(RippleFade, double);
+  vtkPFSetFiniteMacro(RippleScale, double);
+  vtkPFSetFiniteMacro(RippleStrength, double);
+  vtkPFSetFiniteMacro(RippleSpeed, double);
+  vtkPFSetFiniteMacro(RippleFade, double);
   /// Exposure of the tone mapping; with AutoExposure, chosen so the average water pixel maps to
   /// mid-grey (18 % linear) instead.
-  vtkSetMacro(Exposure, double);
+  vtkPFSetFiniteMacro(Exposure, double);
   vtkSetMacro(AutoExposure, bool);
   /// The exposure used by the last render (the automatic one when AutoExposure is on).
   double GetEffectiveExposure() const { return this->EffectiveExposure; }
@@ -122,9 +123,20 @@ private:
   void UpdateShaders();
   void UpdateUniforms(double time);
 
+  /// Sets one field of the sea; a value that leaves the settings invalid (NaN, out of range) is
+  /// ignored with a warning that names the property (SeaSettings::validate), as the source refuses it.
   template<class Field, class Value>
   void SetSea(Field& field, Value value)
   {
+    const Field previous = field;
+    field = static_cast<Field>(value);
+    const std::string problem = this->Sea.validate();
+    field = previous;
+    if (!problem.empty())
+    {
+      vtkWarningMacro(<< problem << "; the property keeps its value");
+      return;
+    }
     parafluid::vtk::assignIfChanged(this, field, value);
   }
   /// The sea, shared in form with the Gerstner Ocean source (parafluid/ocean/SeaSettings.h).
