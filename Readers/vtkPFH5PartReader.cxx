@@ -28,7 +28,6 @@
 #include <cstring>
 #include <new>
 #include <numeric>
-#include <sys/stat.h>
 
 namespace
 {
@@ -86,41 +85,7 @@ void readSceneConstants(hid_t file, vtkFieldData* fieldData, std::vector<std::st
 
 Handle openFile(const std::string& fileName, std::string& error)
 {
-  if (fileName.empty())
-  {
-    error = "no file name was given";
-    return {};
-  }
-  // H5Fis_hdf5 blocks forever on a named pipe and fails oddly on folders and devices: only
-  // regular files (or links to one) go to HDF5.
-  struct stat status;
-  if (::stat(fileName.c_str(), &status) != 0)
-  {
-    error = "cannot open '" + fileName + "' (missing or unreadable)";
-    return {};
-  }
-  if (!S_ISREG(status.st_mode))
-  {
-    error = "'" + fileName + "' is not a regular file (a folder, pipe or device)";
-    return {};
-  }
-  parafluid::h5::QuietErrors quiet;
-  if (H5Fis_hdf5(fileName.c_str()) <= 0)
-  {
-    FILE* probe = std::fopen(fileName.c_str(), "rb");
-    error = probe ? "'" + fileName + "' is not an HDF5 file" : "cannot open '" + fileName + "' (missing or unreadable)";
-    if (probe)
-    {
-      std::fclose(probe);
-    }
-    return {};
-  }
-  Handle file(H5Fopen(fileName.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  if (!file.valid())
-  {
-    error = "HDF5 could not open '" + fileName + "'";
-  }
-  return file;
+  return Handle(parafluid::h5::openForReading(fileName, error), H5Fclose);
 }
 } // namespace
 

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The tests: install what is missing, build if needed, run the whole suite with ctest
-# (Core GoogleTest, pvpython pipelines, the image baseline under Xvfb, the 2-rank MPI test).
+# (Core GoogleTest, pvpython pipelines, the image baselines under Xvfb, the 2-rank MPI tests,
+# the reader's fuzz corpus), then the sanitizer build of the Cores (scripts/sanitize.sh).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${PARAFLUID_BUILD_DIR:-$root/build}"
 bash "$root/scripts/build.sh"
 cd "$build"
 ctest --output-on-failure --parallel "$(nproc)" "$@"
+bash "$root/scripts/sanitize.sh"

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <map>
 #include <set>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace parafluid::h5
@@ -281,6 +282,40 @@ bool readNumericAttribute(hid_t object, const char* name, std::vector<double>& v
   }
   values.resize(static_cast<std::size_t>(count));
   return H5Aread(attribute, H5T_NATIVE_DOUBLE, values.data()) >= 0;
+}
+
+hid_t openForReading(const std::string& fileName, std::string& error)
+{
+  if (fileName.empty())
+  {
+    error = "no file name was given";
+    return -1;
+  }
+  // H5Fis_hdf5 blocks forever on a named pipe and fails oddly on folders and devices: only
+  // regular files (or links to one) go to HDF5.
+  struct stat status;
+  if (::stat(fileName.c_str(), &status) != 0 || ::access(fileName.c_str(), R_OK) != 0)
+  {
+    error = "cannot open '" + fileName + "' (missing or unreadable)";
+    return -1;
+  }
+  if (!S_ISREG(status.st_mode))
+  {
+    error = "'" + fileName + "' is not a regular file (a folder, pipe or device)";
+    return -1;
+  }
+  QuietErrors quiet;
+  if (H5Fis_hdf5(fileName.c_str()) <= 0)
+  {
+    error = "'" + fileName + "' is not an HDF5 file";
+    return -1;
+  }
+  const hid_t file = H5Fopen(fileName.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0)
+  {
+    error = "HDF5 could not open '" + fileName + "'";
+  }
+  return file;
 }
 
 std::vector<StepEntry> listSteps(hid_t file, std::string& error, std::vector<std::string>* warnings)

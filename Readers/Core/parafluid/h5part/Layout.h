@@ -44,6 +44,10 @@ struct StepLayout
 /// millions is a matrix, not a per-particle value).
 constexpr std::uint64_t kMaxComponents = 1024;
 
+/// Opens an HDF5 file for reading; -1 with `error` when it is missing, not a regular file (a
+/// named pipe would block HDF5 forever), not HDF5 or unreadable. Close with H5Fclose.
+hid_t openForReading(const std::string& fileName, std::string& error);
+
 /// Steps sorted by index; steps whose time attribute is NaN/infinite or not increasing make every
 /// step's time its position in the list (with a warning). On failure returns nothing and sets error.
 std::vector<StepEntry> listSteps(hid_t file, std::string& error, std::vector<std::string>* warnings = nullptr);
