@@ -419,19 +419,34 @@ void vtkPFH5PartReader::WarnAboutNonFinite(vtkDataArray* values, const char* wha
 {
   const vtkIdType n = values->GetNumberOfTuples();
   const int components = values->GetNumberOfComponents();
-  for (vtkIdType i = 0; i < n; ++i)
+  // A typed scan of the raw values (the coordinates are float or double): GetComponent's virtual
+  // call per value cost as much as the read itself.
+  auto firstNonFinite = [&](const auto* v) -> vtkIdType
   {
-    for (int c = 0; c < components; ++c)
+    const vtkIdType total = n * components;
+    for (vtkIdType k = 0; k < total; ++k)
     {
-      if (!std::isfinite(values->GetComponent(i, c)))
+      if (!std::isfinite(v[k]))
       {
-        this->WarnOnce(groupName + ": particle " + std::to_string(begin + static_cast<std::uint64_t>(i)) +
-                       " has a NaN or infinite " + what +
-                       " (read as it is; filters that need finite values refuse or "
-                       "drop such particles)");
-        return;
+        return k / components;
       }
     }
+    return -1;
+  };
+  vtkIdType bad = -1;
+  if (auto* floats = vtkFloatArray::SafeDownCast(values))
+  {
+    bad = firstNonFinite(floats->GetPointer(0));
+  }
+  else if (auto* doubles = vtkDoubleArray::SafeDownCast(values))
+  {
+    bad = firstNonFinite(doubles->GetPointer(0));
+  }
+  if (bad >= 0)
+  {
+    this->WarnOnce(groupName + ": particle " + std::to_string(begin + static_cast<std::uint64_t>(bad)) +
+                   " has a NaN or infinite " + what +
+                   " (read as it is; filters that need finite values refuse or drop such particles)");
   }
 }
 

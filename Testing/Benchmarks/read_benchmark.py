@@ -18,6 +18,17 @@ repeats = int(sys.argv[2]) if len(sys.argv) > 2 else 5
 folder = tempfile.mkdtemp(prefix="parafluid-bench-")
 
 files = {}
+# The issue's file: eight contiguous float32 datasets as h5py writes them, no id.
+path = os.path.join(folder, "h5py8.h5part")
+subprocess.run(["/usr/bin/python3", "-c", f"""
+import h5py, numpy as np
+rng = np.random.default_rng(2)
+with h5py.File({path!r}, 'w') as f:
+    g = f.create_group('Step#0')
+    for name in ('x', 'y', 'z', 'vx', 'vy', 'vz', 'density', 'pressure'):
+        g.create_dataset(name, data=rng.random({n}, dtype=np.float32))
+"""], check=True)
+files["h5py8"] = path
 for label, compression in (("plain", None), ("deflate1", 1)):
     path = os.path.join(folder, "%s.h5part" % label)
     # h5py runs in its own process so this one holds only ParaView's HDF5.
