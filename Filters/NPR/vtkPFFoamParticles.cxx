@@ -1,5 +1,6 @@
 #include "vtkPFFoamParticles.h"
 
+#include "GuardedRequest.h"
 #include "ParameterCheck.h"
 
 #include "ParticleArrays.h"
@@ -42,109 +43,114 @@ int vtkPFFoamParticles::FillInputPortInformation(int, vtkInformation* info)
 int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                     vtkInformationVector* outputVector)
 {
-  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
-  vtkPointSet* output = vtkPointSet::GetData(outputVector);
-  if (!input || !output)
-  {
-    vtkErrorMacro("Foam Particles: the input is not a point set (particles)");
-    return 0;
-  }
-  output->ShallowCopy(input);
-  const vtkIdType n = input->GetNumberOfPoints();
-  parafluid::vtk::ParameterCheck check;
-  check.inRange("KernelRadius", this->KernelRadius, 1.0, 10.0, "particle spacings")
-    .inRange("CrestThreshold", this->CrestThreshold, 0.01, 100.0)
-    .require(parafluid::vtk::spacingPropertyProblem(this->ParticleSpacing, "ParticleSpacing").empty(),
-             parafluid::vtk::spacingPropertyProblem(this->ParticleSpacing, "ParticleSpacing"));
-  if (!check.ok())
-  {
-    vtkErrorMacro("Foam Particles: " << check.problem());
-    output->Initialize();
-    return 0;
-  }
-  const double d = parafluid::vtk::particleSpacing(this->ParticleSpacing, input->GetFieldData());
-  if (n > 0 && !(d > 0.0))
-  {
-    vtkErrorMacro("Foam Particles: " << parafluid::vtk::missingSpacing("ParticleSpacing"));
-    return 0;
-  }
-  parafluid::npr::FoamParameters p;
-  p.kernelRadius = this->KernelRadius * (d > 0.0 ? d : 1.0);
-  p.particleVolume = d > 0.0 ? d * d * d : 1.0;
-  p.crestThreshold = this->CrestThreshold;
-  p.sprayNeighbours = this->SprayNeighbours;
-  const std::string problem = parafluid::npr::validate(p);
-  if (!problem.empty())
-  {
-    vtkErrorMacro("Foam Particles: " << problem);
-    return 0;
-  }
+  return parafluid::vtk::guardedRequest(
+    this, "Foam Particles",
+    [&]() -> int
+    {
+      vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+      vtkPointSet* output = vtkPointSet::GetData(outputVector);
+      if (!input || !output)
+      {
+        vtkErrorMacro("Foam Particles: the input is not a point set (particles)");
+        return 0;
+      }
+      output->ShallowCopy(input);
+      const vtkIdType n = input->GetNumberOfPoints();
+      parafluid::vtk::ParameterCheck check;
+      check.inRange("KernelRadius", this->KernelRadius, 1.0, 10.0, "particle spacings")
+        .inRange("CrestThreshold", this->CrestThreshold, 0.01, 100.0)
+        .require(parafluid::vtk::spacingPropertyProblem(this->ParticleSpacing, "ParticleSpacing").empty(),
+                 parafluid::vtk::spacingPropertyProblem(this->ParticleSpacing, "ParticleSpacing"));
+      if (!check.ok())
+      {
+        vtkErrorMacro("Foam Particles: " << check.problem());
+        output->Initialize();
+        return 0;
+      }
+      const double d = parafluid::vtk::particleSpacing(this->ParticleSpacing, input->GetFieldData());
+      if (n > 0 && !(d > 0.0))
+      {
+        vtkErrorMacro("Foam Particles: " << parafluid::vtk::missingSpacing("ParticleSpacing"));
+        return 0;
+      }
+      parafluid::npr::FoamParameters p;
+      p.kernelRadius = this->KernelRadius * (d > 0.0 ? d : 1.0);
+      p.particleVolume = d > 0.0 ? d * d * d : 1.0;
+      p.crestThreshold = this->CrestThreshold;
+      p.sprayNeighbours = this->SprayNeighbours;
+      const std::string problem = parafluid::npr::validate(p);
+      if (!problem.empty())
+      {
+        vtkErrorMacro("Foam Particles: " << problem);
+        return 0;
+      }
 
-  // Stable ids: the IdArray, else the point index (with a warning: foam then follows slots, not particles).
-  std::vector<std::int64_t> ids(static_cast<std::size_t>(n));
-  vtkDataArray* idArray = input->GetPointData()->GetArray(this->IdArray.c_str());
-  if (n > 0 && !idArray)
-  {
-    vtkWarningMacro("Foam Particles: no point array '" << this->IdArray
-                                                       << "' of particle ids; using point order, so foam follows "
-                                                          "particles only if their order never changes");
-  }
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    ids[static_cast<std::size_t>(i)] = idArray ? static_cast<std::int64_t>(idArray->GetComponent(i, 0)) : i;
-  }
+      // Stable ids: the IdArray, else the point index (with a warning: foam then follows slots, not particles).
+      std::vector<std::int64_t> ids(static_cast<std::size_t>(n));
+      vtkDataArray* idArray = input->GetPointData()->GetArray(this->IdArray.c_str());
+      if (n > 0 && !idArray)
+      {
+        vtkWarningMacro("Foam Particles: no point array '" << this->IdArray
+                                                           << "' of particle ids; using point order, so foam follows "
+                                                              "particles only if their order never changes");
+      }
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        ids[static_cast<std::size_t>(i)] = idArray ? static_cast<std::int64_t>(idArray->GetComponent(i, 0)) : i;
+      }
 
-  std::vector<float> positionStorage;
-  const float* xyz = n > 0 ? parafluid::vtk::positionsAsFloat(input, positionStorage) : nullptr;
-  parafluid::npr::FoamScores scores;
-  try
-  {
-    scores = parafluid::npr::scoreFoam(xyz, static_cast<std::size_t>(n), p);
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro("Foam Particles: " << e.what());
-    return 0;
-  }
-  this->UpdateProgress(0.9);
+      std::vector<float> positionStorage;
+      const float* xyz = n > 0 ? parafluid::vtk::positionsAsFloat(input, positionStorage) : nullptr;
+      parafluid::npr::FoamScores scores;
+      try
+      {
+        scores = parafluid::npr::scoreFoam(xyz, static_cast<std::size_t>(n), p);
+      }
+      catch (const std::exception& e)
+      {
+        vtkErrorMacro("Foam Particles: " << e.what());
+        return 0;
+      }
+      this->UpdateProgress(0.9);
 
-  // The hysteresis continues forward in time under unchanged settings; the same time again redoes
-  // the last step; anything else starts again.
-  const double time = input->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP())
-                        ? input->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
-                        : 0.0;
-  const vtkMTimeType settings = this->GetMTime();
-  const bool sameSettings = this->HasState && settings == this->StateSettings;
-  if (sameSettings && time == this->LastTime)
-  {
-    *this->State = *this->StateBefore;
-  }
-  else if (sameSettings && time > this->LastTime)
-  {
-    *this->StateBefore = *this->State;
-  }
-  else
-  {
-    this->State->reset();
-    this->StateBefore->reset();
-  }
-  std::vector<std::uint8_t> foam;
-  this->State->update(ids.data(), scores.candidate.data(), static_cast<std::size_t>(n), this->PersistFrames, foam);
-  this->HasState = true;
-  this->LastTime = time;
-  this->StateSettings = settings;
+      // The hysteresis continues forward in time under unchanged settings; the same time again redoes
+      // the last step; anything else starts again.
+      const double time = input->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP())
+                            ? input->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP())
+                            : 0.0;
+      const vtkMTimeType settings = this->GetMTime();
+      const bool sameSettings = this->HasState && settings == this->StateSettings;
+      if (sameSettings && time == this->LastTime)
+      {
+        *this->State = *this->StateBefore;
+      }
+      else if (sameSettings && time > this->LastTime)
+      {
+        *this->StateBefore = *this->State;
+      }
+      else
+      {
+        this->State->reset();
+        this->StateBefore->reset();
+      }
+      std::vector<std::uint8_t> foam;
+      this->State->update(ids.data(), scores.candidate.data(), static_cast<std::size_t>(n), this->PersistFrames, foam);
+      this->HasState = true;
+      this->LastTime = time;
+      this->StateSettings = settings;
 
-  vtkNew<vtkUnsignedCharArray> foamArray;
-  foamArray->SetName("foam");
-  foamArray->SetNumberOfTuples(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    foamArray->SetValue(i, foam[static_cast<std::size_t>(i)]);
-  }
-  output->GetPointData()->AddArray(foamArray);
-  output->GetPointData()->AddArray(parafluid::vtk::floatArray("foam_score", 1, scores.score));
-  this->UpdateProgress(1.0);
-  return 1;
+      vtkNew<vtkUnsignedCharArray> foamArray;
+      foamArray->SetName("foam");
+      foamArray->SetNumberOfTuples(n);
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        foamArray->SetValue(i, foam[static_cast<std::size_t>(i)]);
+      }
+      output->GetPointData()->AddArray(foamArray);
+      output->GetPointData()->AddArray(parafluid::vtk::floatArray("foam_score", 1, scores.score));
+      this->UpdateProgress(1.0);
+      return 1;
+    });
 }
 
 void vtkPFFoamParticles::PrintSelf(ostream& os, vtkIndent indent)

@@ -1,5 +1,6 @@
 #include "vtkPFGerstnerOcean.h"
 
+#include "GuardedRequest.h"
 #include "ParameterCheck.h"
 #include "parafluid/common/MemoryBudget.h"
 
@@ -115,156 +116,162 @@ int vtkPFGerstnerOcean::RequestInformation(vtkInformation*, vtkInformationVector
 int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                     vtkInformationVector* outputVector)
 {
-  using namespace parafluid::ocean;
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkPolyData* output = vtkPolyData::GetData(outInfo);
-  const double time = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-                        ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-                        : 0.0;
-  const int nx = this->Resolution[0], ny = this->Resolution[1];
-  parafluid::vtk::ParameterCheck check;
-  check.inRange("Resolution", nx, 2, 65536)
-    .inRange("Resolution", ny, 2, 65536)
-    .allInRange("Size", this->Size, 2, 1e-6, 1e7, "m")
-    .allInRange("Origin", this->Origin, 2, -1e7, 1e7, "m")
-    .require(this->Sea.validate().empty(), this->Sea.validate());
-  // About 60 bytes a vertex: points, normals, two triangles' connectivity, foam and wave arrays.
-  const std::string memory = parafluid::checkMemoryBudget(60.0 * nx * ny, "a sea of Resolution " + std::to_string(nx) +
-                                                                            " x " + std::to_string(ny));
-  check.require(memory.empty(), memory);
-  if (!check.ok())
-  {
-    vtkErrorMacro("Gerstner Ocean: " << check.problem());
-    return 0;
-  }
-  if (static_cast<double>(nx) * ny > 4.0e6)
-  {
-    vtkWarningMacro("Gerstner Ocean: Resolution " << nx << " x " << ny << " is " << static_cast<double>(nx) * ny / 1e6
-                                                  << " million vertices per frame: expect a slow update");
-  }
-
-  const OceanParameters p = this->Sea.parameters();
-  if (this->Sea.seaState == CUSTOM && p.waves.empty())
-  {
-    vtkWarningMacro("Sea State is Custom but the wave list is empty: the sea is flat");
-  }
-
-  std::shared_ptr<Bathymetry> floor;
-  vtkDataObject* floorData =
-    this->GetNumberOfInputConnections(1) > 0 ? vtkDataObject::GetData(inputVector[1], 0) : nullptr;
-  if (floorData)
-  {
-    std::string error;
-    floor = parafluid::vtk::heightFieldFrom(floorData, this->Sea.seaLevel, this->Sea.bathymetryResolution, error);
-    if (!floor)
+  return parafluid::vtk::guardedRequest(
+    this, "Gerstner Ocean",
+    [&]() -> int
     {
-      vtkErrorMacro("Bathymetry: " << error);
-      return 0;
-    }
-  }
-  const double region[4] = { this->Origin[0], this->Origin[0] + this->Size[0], this->Origin[1],
-                             this->Origin[1] + this->Size[1] };
-  std::unique_ptr<GerstnerOcean> ocean;
-  try
-  {
-    ocean = std::make_unique<GerstnerOcean>(p, floor, region);
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro(<< e.what());
-    return 0;
-  }
+      using namespace parafluid::ocean;
+      vtkInformation* outInfo = outputVector->GetInformationObject(0);
+      vtkPolyData* output = vtkPolyData::GetData(outInfo);
+      const double time = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+                            ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+                            : 0.0;
+      const int nx = this->Resolution[0], ny = this->Resolution[1];
+      parafluid::vtk::ParameterCheck check;
+      check.inRange("Resolution", nx, 2, 65536)
+        .inRange("Resolution", ny, 2, 65536)
+        .allInRange("Size", this->Size, 2, 1e-6, 1e7, "m")
+        .allInRange("Origin", this->Origin, 2, -1e7, 1e7, "m")
+        .require(this->Sea.validate().empty(), this->Sea.validate());
+      // About 60 bytes a vertex: points, normals, two triangles' connectivity, foam and wave arrays.
+      const std::string memory = parafluid::checkMemoryBudget(
+        60.0 * nx * ny, "a sea of Resolution " + std::to_string(nx) + " x " + std::to_string(ny));
+      check.require(memory.empty(), memory);
+      if (!check.ok())
+      {
+        vtkErrorMacro("Gerstner Ocean: " << check.problem());
+        return 0;
+      }
+      if (static_cast<double>(nx) * ny > 4.0e6)
+      {
+        vtkWarningMacro("Gerstner Ocean: Resolution " << nx << " x " << ny << " is "
+                                                      << static_cast<double>(nx) * ny / 1e6
+                                                      << " million vertices per frame: expect a slow update");
+      }
 
-  // Rest points, row by row; evaluated a block of rows at a time for progress and abort.
-  const vtkIdType n = static_cast<vtkIdType>(nx) * ny;
-  std::vector<float> xs(static_cast<std::size_t>(n)), ys(static_cast<std::size_t>(n));
-  for (int j = 0; j < ny; ++j)
-  {
-    for (int i = 0; i < nx; ++i)
-    {
-      const std::size_t k = static_cast<std::size_t>(j) * nx + i;
-      xs[k] = static_cast<float>(region[0] + this->Size[0] * i / (nx - 1));
-      ys[k] = static_cast<float>(region[2] + this->Size[1] * j / (ny - 1));
-    }
-  }
-  vtkNew<vtkFloatArray> displacement, normals, jacobian, foam, depth;
-  displacement->SetNumberOfComponents(3);
-  displacement->SetNumberOfTuples(n);
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(n);
-  jacobian->SetName("jacobian");
-  jacobian->SetNumberOfTuples(n);
-  foam->SetName("foam");
-  foam->SetNumberOfTuples(n);
-  depth->SetName("depth");
-  depth->SetNumberOfTuples(n);
-  const bool hasBottom = floor || this->Sea.waterDepth > 0.0;
-  const int blocks = std::min(ny, 32);
-  for (int b = 0; b < blocks && !this->AbortExecute; ++b)
-  {
-    const std::size_t first = static_cast<std::size_t>(ny) * b / blocks * nx;
-    const std::size_t last = static_cast<std::size_t>(ny) * (b + 1) / blocks * nx;
-    ocean->evaluate(xs.data() + first, ys.data() + first, last - first, time, displacement->GetPointer(3 * first),
-                    normals->GetPointer(3 * first), jacobian->GetPointer(first), foam->GetPointer(first),
-                    depth->GetPointer(first));
-    this->UpdateProgress(static_cast<double>(b + 1) / blocks);
-  }
-  if (this->AbortExecute)
-  {
-    return 1;
-  }
+      const OceanParameters p = this->Sea.parameters();
+      if (this->Sea.seaState == CUSTOM && p.waves.empty())
+      {
+        vtkWarningMacro("Sea State is Custom but the wave list is empty: the sea is flat");
+      }
 
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(n);
-  float* xyz = static_cast<float*>(points->GetVoidPointer(0));
-  const float* d = displacement->GetPointer(0);
-  const auto level = static_cast<float>(this->Sea.seaLevel);
-  for (vtkIdType k = 0; k < n; ++k)
-  {
-    xyz[3 * k] = xs[static_cast<std::size_t>(k)] + d[3 * k];
-    xyz[3 * k + 1] = ys[static_cast<std::size_t>(k)] + d[3 * k + 1];
-    xyz[3 * k + 2] = level + d[3 * k + 2];
-  }
-  // Quads in one offsets/connectivity pair (no per-cell insertion).
-  const vtkIdType quads = static_cast<vtkIdType>(nx - 1) * (ny - 1);
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfTuples(quads + 1);
-  connectivity->SetNumberOfTuples(4 * quads);
-  vtkIdType* o = offsets->GetPointer(0);
-  vtkIdType* c = connectivity->GetPointer(0);
-  vtkIdType q = 0;
-  for (int j = 0; j + 1 < ny; ++j)
-  {
-    for (int i = 0; i + 1 < nx; ++i, ++q)
-    {
-      const vtkIdType a = static_cast<vtkIdType>(j) * nx + i;
-      o[q] = 4 * q;
-      c[4 * q] = a;
-      c[4 * q + 1] = a + 1;
-      c[4 * q + 2] = a + 1 + nx;
-      c[4 * q + 3] = a + nx;
-    }
-  }
-  o[quads] = 4 * quads;
-  vtkNew<vtkCellArray> cells;
-  cells->SetData(offsets, connectivity);
-  output->SetPoints(points);
-  output->SetPolys(cells);
-  output->GetPointData()->SetNormals(normals);
-  output->GetPointData()->AddArray(jacobian);
-  output->GetPointData()->AddArray(foam);
-  if (hasBottom)
-  {
-    output->GetPointData()->AddArray(depth);
-  }
-  vtkNew<vtkDoubleArray> timeArray;
-  timeArray->SetName(parafluid::contract::Time);
-  timeArray->InsertNextValue(time);
-  output->GetFieldData()->AddArray(timeArray);
-  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
-  return 1;
+      std::shared_ptr<Bathymetry> floor;
+      vtkDataObject* floorData =
+        this->GetNumberOfInputConnections(1) > 0 ? vtkDataObject::GetData(inputVector[1], 0) : nullptr;
+      if (floorData)
+      {
+        std::string error;
+        floor = parafluid::vtk::heightFieldFrom(floorData, this->Sea.seaLevel, this->Sea.bathymetryResolution, error);
+        if (!floor)
+        {
+          vtkErrorMacro("Bathymetry: " << error);
+          return 0;
+        }
+      }
+      const double region[4] = { this->Origin[0], this->Origin[0] + this->Size[0], this->Origin[1],
+                                 this->Origin[1] + this->Size[1] };
+      std::unique_ptr<GerstnerOcean> ocean;
+      try
+      {
+        ocean = std::make_unique<GerstnerOcean>(p, floor, region);
+      }
+      catch (const std::exception& e)
+      {
+        vtkErrorMacro(<< e.what());
+        return 0;
+      }
+
+      // Rest points, row by row; evaluated a block of rows at a time for progress and abort.
+      const vtkIdType n = static_cast<vtkIdType>(nx) * ny;
+      std::vector<float> xs(static_cast<std::size_t>(n)), ys(static_cast<std::size_t>(n));
+      for (int j = 0; j < ny; ++j)
+      {
+        for (int i = 0; i < nx; ++i)
+        {
+          const std::size_t k = static_cast<std::size_t>(j) * nx + i;
+          xs[k] = static_cast<float>(region[0] + this->Size[0] * i / (nx - 1));
+          ys[k] = static_cast<float>(region[2] + this->Size[1] * j / (ny - 1));
+        }
+      }
+      vtkNew<vtkFloatArray> displacement, normals, jacobian, foam, depth;
+      displacement->SetNumberOfComponents(3);
+      displacement->SetNumberOfTuples(n);
+      normals->SetName("Normals");
+      normals->SetNumberOfComponents(3);
+      normals->SetNumberOfTuples(n);
+      jacobian->SetName("jacobian");
+      jacobian->SetNumberOfTuples(n);
+      foam->SetName("foam");
+      foam->SetNumberOfTuples(n);
+      depth->SetName("depth");
+      depth->SetNumberOfTuples(n);
+      const bool hasBottom = floor || this->Sea.waterDepth > 0.0;
+      const int blocks = std::min(ny, 32);
+      for (int b = 0; b < blocks && !this->AbortExecute; ++b)
+      {
+        const std::size_t first = static_cast<std::size_t>(ny) * b / blocks * nx;
+        const std::size_t last = static_cast<std::size_t>(ny) * (b + 1) / blocks * nx;
+        ocean->evaluate(xs.data() + first, ys.data() + first, last - first, time, displacement->GetPointer(3 * first),
+                        normals->GetPointer(3 * first), jacobian->GetPointer(first), foam->GetPointer(first),
+                        depth->GetPointer(first));
+        this->UpdateProgress(static_cast<double>(b + 1) / blocks);
+      }
+      if (this->AbortExecute)
+      {
+        return 1;
+      }
+
+      vtkNew<vtkPoints> points;
+      points->SetDataTypeToFloat();
+      points->SetNumberOfPoints(n);
+      float* xyz = static_cast<float*>(points->GetVoidPointer(0));
+      const float* d = displacement->GetPointer(0);
+      const auto level = static_cast<float>(this->Sea.seaLevel);
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        xyz[3 * k] = xs[static_cast<std::size_t>(k)] + d[3 * k];
+        xyz[3 * k + 1] = ys[static_cast<std::size_t>(k)] + d[3 * k + 1];
+        xyz[3 * k + 2] = level + d[3 * k + 2];
+      }
+      // Quads in one offsets/connectivity pair (no per-cell insertion).
+      const vtkIdType quads = static_cast<vtkIdType>(nx - 1) * (ny - 1);
+      vtkNew<vtkIdTypeArray> offsets, connectivity;
+      offsets->SetNumberOfTuples(quads + 1);
+      connectivity->SetNumberOfTuples(4 * quads);
+      vtkIdType* o = offsets->GetPointer(0);
+      vtkIdType* c = connectivity->GetPointer(0);
+      vtkIdType q = 0;
+      for (int j = 0; j + 1 < ny; ++j)
+      {
+        for (int i = 0; i + 1 < nx; ++i, ++q)
+        {
+          const vtkIdType a = static_cast<vtkIdType>(j) * nx + i;
+          o[q] = 4 * q;
+          c[4 * q] = a;
+          c[4 * q + 1] = a + 1;
+          c[4 * q + 2] = a + 1 + nx;
+          c[4 * q + 3] = a + nx;
+        }
+      }
+      o[quads] = 4 * quads;
+      vtkNew<vtkCellArray> cells;
+      cells->SetData(offsets, connectivity);
+      output->SetPoints(points);
+      output->SetPolys(cells);
+      output->GetPointData()->SetNormals(normals);
+      output->GetPointData()->AddArray(jacobian);
+      output->GetPointData()->AddArray(foam);
+      if (hasBottom)
+      {
+        output->GetPointData()->AddArray(depth);
+      }
+      vtkNew<vtkDoubleArray> timeArray;
+      timeArray->SetName(parafluid::contract::Time);
+      timeArray->InsertNextValue(time);
+      output->GetFieldData()->AddArray(timeArray);
+      output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
+      return 1;
+    });
 }
 
 void vtkPFGerstnerOcean::PrintSelf(ostream& os, vtkIndent indent)

@@ -244,6 +244,12 @@ bool vtkPFSPHStep::ResolveParameters(vtkFieldData* fd, SPHParameters& p)
   {
     return false;
   }
+  if (!p.adaptiveTimeStep && p.timeStep > this->OutputInterval)
+  {
+    // Fixed steps land exactly on every output time, so none is longer than OutputInterval.
+    vtkWarningMacro(<< "SPH Step: TimeStep (" << p.timeStep << " s) is longer than OutputInterval ("
+                    << this->OutputInterval << " s): each step is " << this->OutputInterval << " s long");
+  }
   const double spacing = parafluid::vtk::fieldValue(fd, contract::ParticleSpacing, 0.0);
   if (!(p.smoothingLength > 0.0f))
   {

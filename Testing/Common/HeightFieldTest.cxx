@@ -4,6 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
 using parafluid::HeightField;
 
 TEST(HeightField, PlaneIsExactAndDepthIsLevelMinusHeight)
@@ -41,4 +46,19 @@ TEST(HeightField, TerrainFromTrianglesKeepsTheHighestSurface)
   const HeightField field = HeightField::fromTriangles(points, triangles, 8, 8, 5.0);
   EXPECT_NEAR(field.heightAt(0.5, 0.5), 3.0, 1e-6);
   EXPECT_NEAR(field.depth(0.25, 0.75), 2.0, 1e-6);
+}
+
+TEST(HeightField, NaNQueriesAnswerNaNAndNaNTerrainsAreRefused)
+{
+  // A NaN query used to pass std::clamp and be cast to a cell index (a read outside the grid);
+  // a terrain with a NaN point used to do the same while it was rasterised.
+  const HeightField field(std::vector<float>(16, 1.0f), 4, 4, 0.0, 0.0, 1.0, 1.0, 2.0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(std::isnan(field.heightAt(nan, 1.0)));
+  EXPECT_TRUE(std::isnan(field.depth(1.0, nan)));
+  double gradient[2];
+  field.depthGradient(nan, nan, gradient);              // must stay inside the grid
+  EXPECT_DOUBLE_EQ(field.heightAt(1e300, -1e300), 1.0); // far away: the edge's height
+  const std::vector<float> points = { 0, 0, 0, 1, 0, 0, 0, std::numeric_limits<float>::quiet_NaN(), 0 };
+  EXPECT_THROW(HeightField::fromTriangles(points, { 0, 1, 2 }, 4, 4, 0.0), std::invalid_argument);
 }

@@ -54,6 +54,13 @@ HeightField HeightField::fromTriangles(const std::vector<float>& points, const s
   double lo[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max() };
   double hi[2] = { std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest() };
   float lowest = std::numeric_limits<float>::max();
+  for (float v : points)
+  {
+    if (!std::isfinite(v))
+    {
+      throw std::invalid_argument("bathymetry: the terrain surface has a NaN or infinite point");
+    }
+  }
   for (std::size_t p = 0; p < points.size(); p += 3)
   {
     for (int a = 0; a < 2; ++a)
@@ -119,8 +126,11 @@ HeightField HeightField::fromTriangles(const std::vector<float>& points, const s
 
 void HeightField::locate(double x, double y, int& i, int& j, double& fx, double& fy) const
 {
-  const double gx = std::clamp((x - this->X0) / this->DX, 0.0, static_cast<double>(this->NX - 1));
-  const double gy = std::clamp((y - this->Y0) / this->DY, 0.0, static_cast<double>(this->NY - 1));
+  // NaN survives std::clamp and its conversion to int is undefined: a NaN coordinate reads the
+  // first cell (heightAt and depth then answer NaN themselves).
+  const double ux = (x - this->X0) / this->DX, uy = (y - this->Y0) / this->DY;
+  const double gx = std::isnan(ux) ? 0.0 : std::clamp(ux, 0.0, static_cast<double>(this->NX - 1));
+  const double gy = std::isnan(uy) ? 0.0 : std::clamp(uy, 0.0, static_cast<double>(this->NY - 1));
   i = std::min(static_cast<int>(gx), this->NX - 2);
   j = std::min(static_cast<int>(gy), this->NY - 2);
   fx = gx - i;
@@ -129,6 +139,10 @@ void HeightField::locate(double x, double y, int& i, int& j, double& fx, double&
 
 double HeightField::heightAt(double x, double y) const
 {
+  if (std::isnan(x) || std::isnan(y))
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
   int i, j;
   double fx, fy;
   this->locate(x, y, i, j, fx, fy);

@@ -1,0 +1,30 @@
+#pragma once
+// A filter's request with its exceptions turned into an error message that names the filter:
+// std::bad_alloc (memory ran out) and the cores' std::invalid_argument never abort ParaView and
+// the user's session with it. (vtkPFParticleAlgorithm does the same for the particle filters.)
+#include "vtkAlgorithm.h"
+#include "vtkSetGet.h"
+
+#include <exception>
+#include <new>
+
+namespace parafluid::vtk
+{
+template<class Request>
+int guardedRequest(vtkAlgorithm* algorithm, const char* label, Request&& request)
+{
+  try
+  {
+    return request();
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorWithObjectMacro(algorithm, << label << ": not enough memory for this output; lower its resolution or size");
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorWithObjectMacro(algorithm, << label << ": " << e.what());
+  }
+  return 0;
+}
+} // namespace parafluid::vtk
