@@ -22,22 +22,6 @@ arrays['velocity'] = v
 particles = ProgrammableSource(Script=pftest.particle_script(SCENE))
 
 
-class Messages:
-    def __init__(self, proxy):
-        self.errors, self.warnings = [], []
-        obj = proxy.GetClientSideObject()
-        obj.AddObserver("ErrorEvent", self.on_error)
-        obj.AddObserver("WarningEvent", self.on_warning)
-
-    @pftest.calldata_type(pftest.VTK_STRING)
-    def on_error(self, _o, _e, text):
-        self.errors.append(text)
-
-    @pftest.calldata_type(pftest.VTK_STRING)
-    def on_warning(self, _o, _e, text):
-        self.warnings.append(text)
-
-
 def finite_output(data, label):
     pftest.check(data is not None and data.GetNumberOfPoints() > 0, "%s gave no output" % label)
     pftest.check(np.all(np.isfinite(pftest.points(data))), "%s output has non-finite points" % label)
@@ -55,7 +39,7 @@ for label, make, what in (
         ("Particle Surface", lambda: ParticleSurfaceMarchingCubes(Input=particles), "position"),
         ("Carpet Surface", lambda: CarpetSurface(Input=particles), "position")):
     proxy = make()
-    messages = Messages(proxy)
+    messages = pftest.Messages(proxy.GetClientSideObject())
     data = pftest.fetch(proxy)
     text = " ".join(messages.warnings)
     pftest.check(not messages.errors, "%s refused: %r" % (label, messages.errors))
@@ -63,14 +47,14 @@ for label, make, what in (
     finite_output(data, label)
 
 sph = SPHStep(Input=particles, DomainBounds=[-1, 1, -1, 1, -1, 1])
-messages = Messages(sph)
+messages = pftest.Messages(sph.GetClientSideObject())
 sph.UpdatePipeline()
 pftest.check(builtins.any("SPH Step" in e and "NaN or infinite" in e for e in messages.errors), "SPH Step: %r" % messages.errors)
 
 # Foam Particles works per piece (no gather) and refuses: a foam class computed beside a NaN
 # neighbour would be a guess.
 foam = FoamParticles(Input=particles)
-messages = Messages(foam)
+messages = pftest.Messages(foam.GetClientSideObject())
 foam.UpdatePipeline()
 pftest.check(builtins.any("Foam Particles" in e and "NaN or infinite" in e for e in messages.errors), "Foam Particles: %r" % messages.errors)
 print("non-finite input: ok")

@@ -78,16 +78,6 @@ def domain_valid(prop, values):
     return None
 
 
-class Messages:
-    def __init__(self, proxy):
-        self.errors = []
-        proxy.GetClientSideObject().AddObserver("ErrorEvent", self.on_error)
-
-    @pftest.calldata_type(pftest.VTK_STRING)
-    def on_error(self, _o, _e, text):
-        self.errors.append(text)
-
-
 def output_finite(data):
     if data is None:
         return True
@@ -124,7 +114,7 @@ for xml_name, make in MAKERS.items():
             values[index] = bad
             cases += 1
             proxy = make()
-            messages = Messages(proxy)
+            messages = pftest.Messages(proxy.GetClientSideObject())
             try:
                 proxy.SetPropertyWithName(label, values if len(values) > 1 else values[0])
             except Exception as exc:  # ParaView refuses it before the filter sees it (NaN to an int)

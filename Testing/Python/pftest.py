@@ -125,6 +125,23 @@ class ErrorCatcher:
         return "\n".join(self.messages)
 
 
+class Messages:
+    """Collects the errors and warnings of a VTK object (a proxy's client-side object)."""
+
+    def __init__(self, obj):
+        self.errors, self.warnings = [], []
+        obj.AddObserver("ErrorEvent", self._on_error)
+        obj.AddObserver("WarningEvent", self._on_warning)
+
+    @calldata_type(VTK_STRING)
+    def _on_error(self, caller, event, data=None):
+        self.errors.append(str(data))
+
+    @calldata_type(VTK_STRING)
+    def _on_warning(self, caller, event, data=None):
+        self.warnings.append(str(data))
+
+
 def check(condition, message):
     if not condition:
         print("FAILED: " + message, file=sys.stderr)

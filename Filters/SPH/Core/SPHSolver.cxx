@@ -177,17 +177,22 @@ double SPHSolver::step(double maxStep)
   return this->Last.timeStep;
 }
 
-double SPHSolver::maxAcceleration() const
+double SPHSolver::largestLength(const std::vector<float>& x, const std::vector<float>& y,
+                                const std::vector<float>& z) const
 {
-  const ParticleState& s = this->State;
-  const auto n = static_cast<std::int64_t>(s.size());
-  float a2 = 0.0f;
-#pragma omp parallel for schedule(static) reduction(max : a2) num_threads(threadCount(this->Parameters))
+  const auto n = static_cast<std::int64_t>(x.size());
+  float l2 = 0.0f;
+#pragma omp parallel for schedule(static) reduction(max : l2) num_threads(threadCount(this->Parameters))
   for (std::int64_t i = 0; i < n; ++i)
   {
-    a2 = std::max(a2, s.ax[i] * s.ax[i] + s.ay[i] * s.ay[i] + s.az[i] * s.az[i]);
+    l2 = std::max(l2, x[i] * x[i] + y[i] * y[i] + z[i] * z[i]);
   }
-  return std::sqrt(static_cast<double>(a2));
+  return std::sqrt(static_cast<double>(l2));
+}
+
+double SPHSolver::maxAcceleration() const
+{
+  return this->largestLength(this->State.ax, this->State.ay, this->State.az);
 }
 
 double SPHSolver::proposedTimeStep() const
@@ -198,19 +203,13 @@ double SPHSolver::proposedTimeStep() const
     return p.timeStep;
   }
   const ParticleState& s = this->State;
-  const auto n = static_cast<std::int64_t>(s.size());
-  float v2 = 0.0f;
-#pragma omp parallel for schedule(static) reduction(max : v2) num_threads(threadCount(p))
-  for (std::int64_t i = 0; i < n; ++i)
-  {
-    v2 = std::max(v2, s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
-  }
+  const double fastest = this->largestLength(s.vx, s.vy, s.vz);
   const double h = p.smoothingLength;
   double dt = p.maxTimeStep;
   // CFL: information (sound for WCSPH, the flow itself for incompressible DFSPH) may cross only a
   // fraction lambda of the kernel radius per step.
   const double c = this->Pressure->signalSpeed(p);
-  const double speed = c + std::sqrt(static_cast<double>(v2));
+  const double speed = c + fastest;
   if (speed > 0.0)
   {
     dt = std::min(dt, p.cflNumber * h / speed);
@@ -323,15 +322,7 @@ void SPHSolver::checkPhysical() const
                              " x RestDensity (a liquid stays within a few percent): the run has blown up; " +
                              this->stabilityAdvice());
   }
-  const ParticleState& s = this->State;
-  const auto n = static_cast<std::int64_t>(s.size());
-  float v2 = 0.0f;
-#pragma omp parallel for schedule(static) reduction(max : v2) num_threads(threadCount(this->Parameters))
-  for (std::int64_t i = 0; i < n; ++i)
-  {
-    v2 = std::max(v2, s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
-  }
-  const double speed = std::sqrt(static_cast<double>(v2));
+  const double speed = this->largestLength(this->State.vx, this->State.vy, this->State.vz);
   if (speed > this->SpeedLimit)
   {
     throw std::runtime_error("SPH stopped at t = " + std::to_string(this->Time) + " s: a particle moves at " +

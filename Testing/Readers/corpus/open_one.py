@@ -11,21 +11,6 @@ from paraview import servermanager
 import pftest
 
 
-class Messages:
-    def __init__(self, obj):
-        self.errors, self.warnings = [], []
-        obj.AddObserver("ErrorEvent", self.on_error)
-        obj.AddObserver("WarningEvent", self.on_warning)
-
-    @pftest.calldata_type(pftest.VTK_STRING)
-    def on_error(self, _obj, _event, text):
-        self.errors.append(text)
-
-    @pftest.calldata_type(pftest.VTK_STRING)
-    def on_warning(self, _obj, _event, text):
-        self.warnings.append(text)
-
-
 def number(v):
     v = float(v)
     return v if math.isfinite(v) else str(v)
@@ -40,7 +25,7 @@ def values(array, limit=8):
 
 def open_file(path, reader_type):
     reader = reader_type()
-    messages = Messages(reader.GetClientSideObject())
+    messages = pftest.Messages(reader.GetClientSideObject())
     reader.FileName = path  # after the observers: RequestInformation's warnings count too
     reader.UpdatePipelineInformation()
     reader.UpdatePipeline()

@@ -91,6 +91,8 @@ private:
   void checkFinite() const;
   double chooseTimeStep(double remaining) const;
   double maxAcceleration() const;
+  /// The largest |(x_i, y_i, z_i)| over the particles (0 for none).
+  double largestLength(const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z) const;
   void kick(float dt);
   void drift(float dt);
   /// The LogLaw wall shear over dt, implicit in the tangential velocity (WallFriction.cxx).
