@@ -171,6 +171,9 @@ int vtkPFScreenSpaceFluidRepresentation::ProcessViewRequest(vtkInformationReques
     if (this->Particles->GetNumberOfPoints() > 0)
     {
       // The spheres reach past the centres; a generous margin keeps them inside the clipping range.
+      // The radius is brought up to date first: the bounds used to lag one update behind a change
+      // of ParticleRadius (a radius made small again kept the huge clipping range of the large one).
+      this->UpdateRadius(this->Particles);
       const double grow = 2.0 * this->GetEffectiveParticleRadius();
       for (int i = 0; i < 3; ++i)
       {
@@ -360,6 +363,11 @@ void vtkPFScreenSpaceFluidRepresentation::SetEnvironmentImage(int face, const ch
 
 void vtkPFScreenSpaceFluidRepresentation::SetParticleRadius(double radius)
 {
+  if (!std::isfinite(radius))
+  {
+    vtkWarningMacro(<< "ParticleRadius = " << radius << " is ignored: it must be a finite number (0: automatic)");
+    return;
+  }
   if (radius != this->ParticleRadius)
   {
     this->ParticleRadius = radius;
