@@ -3,6 +3,7 @@
 #include "ParticleArrays.h"
 #include "ParticleStateArrays.h"
 #include "TriangleBoundaryFromSurface.h"
+#include "parafluid/common/MemoryBudget.h"
 
 #include "parafluid/sph/SPHSolver.h"
 
@@ -301,6 +302,16 @@ bool vtkPFSPHStep::StartSimulation(vtkPointSet* input, vtkPolyData* surface)
   SPHParameters p;
   if (!this->ResolveParameters(input->GetFieldData(), p))
   {
+    return false;
+  }
+  // The solver (85 bytes a particle for WCSPH in the benchmarks, more for DFSPH) and the output's
+  // arrays: 200 bytes a particle, checked before anything is allocated.
+  const std::string memory =
+    parafluid::checkMemoryBudget(200.0 * static_cast<double>(input->GetNumberOfPoints()),
+                                 "simulating " + std::to_string(input->GetNumberOfPoints()) + " particles");
+  if (!memory.empty())
+  {
+    this->ReportError(memory);
     return false;
   }
   std::shared_ptr<const parafluid::TriangleBoundary> boundary;

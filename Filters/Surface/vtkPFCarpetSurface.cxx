@@ -3,6 +3,7 @@
 #include "HeightFieldFromData.h"
 #include "ParticleArrays.h"
 #include "SurfaceMeshOutput.h"
+#include "parafluid/common/MemoryBudget.h"
 
 #include "parafluid/common/HeightField.h"
 #include "parafluid/surface/CarpetSurface.h"
@@ -51,6 +52,13 @@ int vtkPFCarpetSurface::RequestParticles(const Particles& particles, vtkInformat
   check.inRange("FallAcceleration", this->FallAcceleration, 0.0, 1e6, "m/s^2")
     .inRange("MinDepth", this->MinDepth, 0.0, 1e6, "m")
     .inRange("Resolution", this->Resolution, 1, 65536);
+  // The ground raster, the terrain's raster and the carpet's copy: about 16 bytes a cell.
+  const double cells = static_cast<double>(this->Resolution) * this->Resolution;
+  const std::string memory =
+    check.ok()
+      ? parafluid::checkMemoryBudget(16.0 * cells, "a carpet of Resolution " + std::to_string(this->Resolution))
+      : std::string();
+  check.require(memory.empty(), memory + "; lower Resolution");
   if (!this->Accept(check))
   {
     return 0;

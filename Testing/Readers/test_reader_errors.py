@@ -102,3 +102,17 @@ slow_object.AddObserver("WarningEvent", abort_on_warning)
 slow.UpdatePipeline(slow.TimestepValues[-1])
 pftest.check(len(long_run) == 1 and "time steps" in long_run[0] and "Viscosity" in long_run[0], "no long-run warning: %r" % long_run)
 print("long runs: ok")
+
+# The memory budget: a step, a block or a simulation larger than it is refused with the sizes.
+os.environ["PARAFLUID_MEMORY_BUDGET_MB"] = "1"
+big = os.path.join(out, "big.h5part")
+pftest.write_h5(big, """
+g = f.create_group('Step#0'); g['x'] = np.zeros(200000); g['y'] = np.zeros(200000); g['z'] = np.zeros(200000)
+""")
+expect_error(big, ["would take", "PARAFLUID_MEMORY_BUDGET_MB"])
+block_too_big = ParticleBlock(BlockBounds=[0, 1, 0, 1, 0, 1], Spacing=0.01)
+catcher = pftest.ErrorCatcher(block_too_big)
+block_too_big.UpdatePipeline()
+pftest.check("would take" in catcher.text() and "Spacing" in catcher.text(), "block over the budget: %r" % catcher.text())
+del os.environ["PARAFLUID_MEMORY_BUDGET_MB"]
+print("memory budget: ok")

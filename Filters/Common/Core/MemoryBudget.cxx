@@ -53,7 +53,11 @@ std::string checkMemoryBudget(double bytes, const std::string& what)
   if (!(bytes <= budget))
   {
     return what + " would take " + describeBytes(bytes) + ", more than the " + describeBytes(budget) +
-           " one output may use (half of this machine's memory; PARAFLUID_MEMORY_BUDGET_MB sets another limit)";
+           " one output may use (" +
+           (std::getenv("PARAFLUID_MEMORY_BUDGET_MB") ? std::string("PARAFLUID_MEMORY_BUDGET_MB")
+                                                      : std::string("half of this machine's memory; "
+                                                                    "PARAFLUID_MEMORY_BUDGET_MB sets another limit")) +
+           ")";
   }
   return {};
 }
