@@ -5,6 +5,7 @@
 #include "parafluid/h5part/Attributes.h"
 #include "parafluid/h5part/Handle.h"
 
+#include "vtkAlgorithmOutput.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetAttributes.h"
@@ -158,74 +159,99 @@ vtkTypeBool vtkPFH5PartWriter::ProcessRequest(vtkInformation* request, vtkInform
       const double* times = inputInfo->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
       this->InputTimes.assign(times, times + inputInfo->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
     }
-    this->CurrentStep = 0;
     return 1;
   }
   if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
   {
     // A writer is a sink: it asks for this process's piece itself (the whole data when serial).
-    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-    const int pieces = controller ? controller->GetNumberOfProcesses() : 1;
-    const int piece = controller ? controller->GetLocalProcessId() : 0;
-    inputInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), piece);
-    inputInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), pieces);
+    inputInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), parafluid::vtk::processIndex());
+    inputInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), parafluid::vtk::processCount());
     if (this->WriteAllTimeSteps && !this->InputTimes.empty())
     {
-      inputInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), this->InputTimes[this->CurrentStep]);
+      inputInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), this->InputTimes.front());
     }
     return 1;
   }
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
   {
-    vtkDataObject* local = inputInfo->Get(vtkDataObject::DATA_OBJECT());
-    const bool allSteps = this->WriteAllTimeSteps && !this->InputTimes.empty();
+    return this->WriteSteps(inputInfo->Get(vtkDataObject::DATA_OBJECT())) ? 1 : 0;
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+vtkDataObject* vtkPFH5PartWriter::UpdateInputTo(double time)
+{
+  // The input is brought to each further time here, inside this one request, rather than by the
+  // executive's CONTINUE_EXECUTING loop: that loop never ends when the input fails at one of the
+  // times (the writer's REQUEST_DATA is then not called, so nothing clears the flag).
+  vtkAlgorithmOutput* connection = this->GetInputConnection(0, 0);
+  vtkAlgorithm* producer = connection ? connection->GetProducer() : nullptr;
+  if (!producer)
+  {
+    return nullptr;
+  }
+  const int port = connection->GetIndex();
+  vtkNew<vtkInformationVector> requests;
+  requests->SetNumberOfInformationObjects(producer->GetNumberOfOutputPorts());
+  vtkInformation* wanted = requests->GetInformationObject(port);
+  wanted->Set(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP(), time);
+  wanted->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), parafluid::vtk::processIndex());
+  wanted->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), parafluid::vtk::processCount());
+  wanted->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  return producer->Update(port, requests) ? producer->GetOutputDataObject(port) : nullptr;
+}
+
+bool vtkPFH5PartWriter::WriteSteps(vtkDataObject* first)
+{
+  const bool allSteps = this->WriteAllTimeSteps && !this->InputTimes.empty();
+  const std::size_t steps = allSteps ? this->InputTimes.size() : 1;
+  bool ok = true;
+  bool writesHere = true;
+  for (std::size_t k = 0; k < steps && ok; ++k)
+  {
+    vtkDataObject* local = k == 0 ? first : this->UpdateInputTo(this->InputTimes[k]);
     // Under MPI every process holds a piece: process 0 gathers them and writes the one file, so
-    // processes never write (and rename) over each other. Process 0 then tells the others whether
-    // the step was written, so that a failure there (a missing folder, a full disk) stops every
-    // process at the same step instead of leaving the others waiting in the next gather.
-    bool writesHere = true;
+    // processes never write (and rename) over each other. Every verdict (the input's, process 0's
+    // write) is agreed by all processes before the next collective call, so a failure on one of
+    // them (a missing folder, a full disk, an input that fails) stops all at the same step.
+    if (!parafluid::vtk::agreeOnAllProcesses(local != nullptr))
+    {
+      vtkErrorMacro("ParaFluid H5Part Writer: the input failed at time " << this->InputTimes[k]
+                                                                         << "; nothing was written");
+      ok = false;
+      break;
+    }
     vtkSmartPointer<vtkDataObject> input = parafluid::vtk::gatherToFirstProcess(local, writesHere);
-    bool ok = true;
     if (writesHere)
     {
       double time = 0.0;
       if (allSteps)
       {
-        time = this->InputTimes[this->CurrentStep];
+        time = this->InputTimes[k];
       }
-      else if (local && local->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()))
+      else if (local->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()))
       {
         time = local->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP());
       }
       try
       {
-        ok = (this->CurrentStep > 0 || this->BeginFile()) && this->WriteStep(input, this->CurrentStep, time);
+        ok = (k > 0 || this->BeginFile()) && this->WriteStep(input, static_cast<int>(k), time);
       }
       catch (const std::bad_alloc&)
       {
-        vtkErrorMacro("ParaFluid H5Part Writer: not enough memory to write step " << this->CurrentStep);
+        vtkErrorMacro("ParaFluid H5Part Writer: not enough memory to write step " << k);
         ok = false;
       }
     }
-    if (!parafluid::vtk::agreeOnAllProcesses(ok))
-    {
-      this->AbandonFile();
-      this->CurrentStep = 0;
-      request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
-      return 0;
-    }
-    ++this->CurrentStep;
-    if (allSteps && this->CurrentStep < static_cast<int>(this->InputTimes.size()))
-    {
-      request->Set(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING(), 1);
-      this->UpdateProgress(static_cast<double>(this->CurrentStep) / static_cast<double>(this->InputTimes.size()));
-      return 1;
-    }
-    request->Remove(vtkStreamingDemandDrivenPipeline::CONTINUE_EXECUTING());
-    this->CurrentStep = 0;
-    return parafluid::vtk::agreeOnAllProcesses(!writesHere || this->FinishFile()) ? 1 : 0;
+    ok = parafluid::vtk::agreeOnAllProcesses(ok);
+    this->UpdateProgress(static_cast<double>(k + 1) / static_cast<double>(steps));
   }
-  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  if (!ok)
+  {
+    this->AbandonFile();
+    return false;
+  }
+  return parafluid::vtk::agreeOnAllProcesses(!writesHere || this->FinishFile());
 }
 
 bool vtkPFH5PartWriter::BeginFile()

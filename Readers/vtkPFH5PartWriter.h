@@ -50,6 +50,11 @@ private:
   vtkPFH5PartWriter(const vtkPFH5PartWriter&) = delete;
   void operator=(const vtkPFH5PartWriter&) = delete;
 
+  /// Writes the input's current step, or with WriteAllTimeSteps every time step (bringing the input
+  /// to each); false after an error, with nothing written.
+  bool WriteSteps(vtkDataObject* first);
+  /// The input brought to `time` (this process's piece); null when it fails.
+  vtkDataObject* UpdateInputTo(double time);
   bool BeginFile();
   bool WriteStep(vtkDataObject* input, int stepIndex, double time);
   bool FinishFile();
@@ -62,5 +67,4 @@ private:
   struct OpenFile;
   std::unique_ptr<OpenFile> File;
   std::vector<double> InputTimes;
-  int CurrentStep = 0;
 };

@@ -21,6 +21,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numeric>
@@ -162,6 +163,18 @@ inline void setOneVertexPerPoint(vtkPolyData* output, vtkIdType n)
   vertices->SetData(offsets, connectivity);
   output->SetVerts(vertices);
 }
+/// This process's index and the number of processes (0 and 1 in a serial session).
+inline int processIndex()
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  return controller ? controller->GetLocalProcessId() : 0;
+}
+inline int processCount()
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  return controller ? std::max(1, controller->GetNumberOfProcesses()) : 1;
+}
+
 /// Under MPI, true only when `ok` is true on every process (every process must call it, at the
 /// same point): a failure on one process becomes a failure of all, before any of them goes on to
 /// the next collective call. In a serial session, `ok` itself.

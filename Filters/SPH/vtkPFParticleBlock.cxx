@@ -56,6 +56,16 @@ int vtkPFParticleBlock::RequestData(vtkInformation*, vtkInformationVector**, vtk
         vtkErrorMacro("Particle Block: " << check.problem());
         return 0;
       }
+      for (int a = 0; a < 3; ++a)
+      {
+        if (this->BlockBounds[2 * a] < this->DomainBounds[2 * a] ||
+            this->BlockBounds[2 * a + 1] > this->DomainBounds[2 * a + 1])
+        {
+          vtkWarningMacro("Particle Block: BlockBounds reach outside DomainBounds along "
+                          << "xyz"[a] << ": SPH Step reflects those particles inside, onto others");
+          break;
+        }
+      }
       if (count > 1e7)
       {
         vtkWarningMacro("Particle Block: " << count / 1e6

@@ -51,7 +51,7 @@ expect_error(SPHStep(Input=nan, DomainBounds=[-1, 1, -1, 1, -1, 1]), ["SPH Step"
 still_works()
 
 # The writer, all time steps, into a folder that does not exist.
-block = ParticleBlock(BlockBounds=[0, 0.2, 0, 0.2, 0, 0.2], Spacing=0.05)
+block = ParticleBlock(BlockBounds=[0, 0.2, 0, 0.2, 0, 0.2], Spacing=0.05, DomainBounds=[0, 0.4, 0, 0.4, 0, 0.4])
 sph = SPHStep(Input=block, OutputInterval=0.002, NumberOfOutputs=3)
 missing = os.path.join(tempfile.mkdtemp(prefix="parafluid-mpi-"), "no-such-folder", "out.h5part")
 writer = CreateWriter(missing, sph)
@@ -67,4 +67,17 @@ good = os.path.join(tempfile.mkdtemp(prefix="parafluid-mpi-"), "out.h5part")
 SaveData(good, proxy=sph, WriteAllTimeSteps=1)
 copy = ParaFluidH5PartReader(FileName=good)
 pftest.check(len(copy.TimestepValues) == len(sph.TimestepValues), "the write after the error holds %d steps of %d" % (len(copy.TimestepValues), len(sph.TimestepValues)))
+# The writer, all time steps, of an input that fails after the first: a block that reaches outside
+# its domain is folded onto itself and blows up at the second step. The executive's
+# continue-executing loop never ended when the input failed (both processes spun forever).
+folded = ParticleBlock(BlockBounds=[0, 0.2, 0, 0.2, 0, 0.2], Spacing=0.05, DomainBounds=[0, 0.8, 0, 0.1, 0, 0.6])
+failing = SPHStep(Input=folded, OutputInterval=0.002, NumberOfOutputs=3)
+late = os.path.join(tempfile.mkdtemp(prefix="parafluid-mpi-"), "late.h5part")
+writer = CreateWriter(late, failing)
+writer.WriteAllTimeSteps = 1
+catcher = pftest.ErrorCatcher(writer)
+writer.UpdatePipeline()
+pftest.check("input failed" in catcher.text(), "writer of a failing input: %r" % catcher.text())
+pftest.check(not os.path.exists(late), "a partial file was left for a failed write")
+still_works()
 print("MPI error paths: ok")

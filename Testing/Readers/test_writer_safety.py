@@ -102,4 +102,15 @@ bad_level.CompressionLevel = -1
 catcher = pftest.ErrorCatcher(bad_level)
 bad_level.UpdatePipeline()
 pftest.check("CompressionLevel" in catcher.text(), "CompressionLevel -1: %r" % catcher.text())
+# An input that fails at a later time step ends the write with an error and leaves no file (the
+# executive's continue-executing loop used to spin forever).
+folded = ParticleBlock(BlockBounds=[0, 0.2, 0, 0.2, 0, 0.2], Spacing=0.05, DomainBounds=[0, 0.8, 0, 0.1, 0, 0.6])
+failing = SPHStep(Input=folded, OutputInterval=0.002, NumberOfOutputs=3)
+late = os.path.join(out, "late.h5part")
+late_writer = CreateWriter(late, failing)
+late_writer.WriteAllTimeSteps = 1
+catcher = pftest.ErrorCatcher(late_writer)
+late_writer.UpdatePipeline()
+pftest.check("input failed" in catcher.text() and not os.path.exists(late) and temporaries() == [],
+             "writer of an input that fails later: %r" % catcher.text())
 print("writer safety: ok")
