@@ -25,7 +25,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <new>
-#include <unistd.h>
 
 using parafluid::h5::Handle;
 

@@ -3,7 +3,6 @@
 #include "parafluid/h5part/Handle.h"
 
 #include <cmath>
-#include <cstring>
 
 namespace parafluid::h5
 {
@@ -158,7 +157,8 @@ bool readSlice(hid_t group, const std::string& name, ValueType type, std::uint64
 bool readIds(hid_t group, const std::string& name, std::uint64_t offset, std::uint64_t count, std::int64_t* ids,
              std::string& error)
 {
-  if (commonValueType(group, { name }) != ValueType::Float32 && commonValueType(group, { name }) != ValueType::Float64)
+  const ValueType stored = commonValueType(group, { name });
+  if (stored != ValueType::Float32 && stored != ValueType::Float64)
   {
     return readSlice(group, name, ValueType::Int64, offset, count, ids, 1, 0, error);
   }

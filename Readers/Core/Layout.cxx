@@ -224,14 +224,13 @@ std::string checkStorage(hid_t dataset, const std::string& folder)
       const int external = H5Pget_external_count(properties);
       if (external > 0)
       {
-        const std::string folder2 = folder;
         for (int k = 0; k < external; ++k)
         {
           char name[4096] = { 0 };
           off_t offset = 0;
           hsize_t size = 0;
           if (H5Pget_external(properties, static_cast<unsigned>(k), sizeof(name) - 1, name, &offset, &size) < 0 ||
-              !readable(name, folder2))
+              !readable(name, folder))
           {
             return std::string("its external storage file '") + name + "' is missing or unreadable";
           }

@@ -15,6 +15,10 @@ ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
 pftest.check(ranks == 2, "run with 2 MPI ranks (got %d)" % ranks)
 
 
+def all_in(words, text):
+    return builtins.all(w in text for w in words)
+
+
 def expect_error(proxy, words, time=None):
     catcher = pftest.ErrorCatcher(proxy)
     if time is None:
@@ -22,7 +26,7 @@ def expect_error(proxy, words, time=None):
     else:
         proxy.UpdatePipeline(time)
     text = catcher.text()
-    pftest.check(builtins.all(w in text for w in words), "%s: expected %s in the error, got %r" % (proxy.GetXMLLabel(), words, text))
+    pftest.check(all_in(words, text), "%s: expected %s in the error, got %r" % (proxy.GetXMLLabel(), words, text))
 
 
 def still_works():
@@ -50,34 +54,36 @@ nan = ProgrammableSource(Script=pftest.particle_script("P = np.array([[0, 0, 0],
 expect_error(SPHStep(Input=nan, DomainBounds=[-1, 1, -1, 1, -1, 1]), ["SPH Step", "NaN"])
 still_works()
 
+def write_all_steps_fails(source, path, words):
+    """Writing every time step of `source` to `path` ends on both processes with an error holding
+    `words`, and leaves no file."""
+    writer = CreateWriter(path, source)
+    writer.WriteAllTimeSteps = 1
+    catcher = pftest.ErrorCatcher(writer)
+    writer.UpdatePipeline()
+    pftest.check(all_in(words, catcher.text()), "writer to %s: %r" % (path, catcher.text()))
+    pftest.check(not os.path.exists(path), "a file was left at %s by a failed write" % path)
+    Delete(writer)
+    still_works()
+
+
 # The writer, all time steps, into a folder that does not exist.
 block = ParticleBlock(BlockBounds=[0, 0.2, 0, 0.2, 0, 0.2], Spacing=0.05, DomainBounds=[0, 0.4, 0, 0.4, 0, 0.4])
 sph = SPHStep(Input=block, OutputInterval=0.002, NumberOfOutputs=3)
 missing = os.path.join(tempfile.mkdtemp(prefix="parafluid-mpi-"), "no-such-folder", "out.h5part")
-writer = CreateWriter(missing, sph)
-writer.WriteAllTimeSteps = 1
-catcher = pftest.ErrorCatcher(writer)
-writer.UpdatePipeline()
-pftest.check("cannot create" in catcher.text(), "writer to a missing folder: %r" % catcher.text())
-pftest.check(not os.path.exists(missing), "a file appeared in a missing folder")
-still_works()
+write_all_steps_fails(sph, missing, ["cannot create"])
 
 # And a good write after it, with every step.
 good = os.path.join(tempfile.mkdtemp(prefix="parafluid-mpi-"), "out.h5part")
 SaveData(good, proxy=sph, WriteAllTimeSteps=1)
 copy = ParaFluidH5PartReader(FileName=good)
 pftest.check(len(copy.TimestepValues) == len(sph.TimestepValues), "the write after the error holds %d steps of %d" % (len(copy.TimestepValues), len(sph.TimestepValues)))
+
 # The writer, all time steps, of an input that fails after the first: a block that reaches outside
 # its domain is folded onto itself and blows up at the second step. The executive's
 # continue-executing loop never ended when the input failed (both processes spun forever).
 folded = ParticleBlock(BlockBounds=[0, 0.2, 0, 0.2, 0, 0.2], Spacing=0.05, DomainBounds=[0, 0.8, 0, 0.1, 0, 0.6])
 failing = SPHStep(Input=folded, OutputInterval=0.002, NumberOfOutputs=3)
-late = os.path.join(tempfile.mkdtemp(prefix="parafluid-mpi-"), "late.h5part")
-writer = CreateWriter(late, failing)
-writer.WriteAllTimeSteps = 1
-catcher = pftest.ErrorCatcher(writer)
-writer.UpdatePipeline()
-pftest.check("input failed" in catcher.text(), "writer of a failing input: %r" % catcher.text())
-pftest.check(not os.path.exists(late), "a partial file was left for a failed write")
-still_works()
+write_all_steps_fails(failing, os.path.join(tempfile.mkdtemp(prefix="parafluid-mpi-"), "late.h5part"),
+                      ["input failed"])
 print("MPI error paths: ok")

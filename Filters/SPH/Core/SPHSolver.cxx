@@ -280,18 +280,15 @@ void SPHSolver::measureCompression()
   const float* rho = this->State.density.data();
   const float rho0 = this->Parameters.restDensity;
   double total = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : total) num_threads(threadCount(this->Parameters))
+  float highest = 0.0f;
+#pragma omp parallel for schedule(static) reduction(+ : total) reduction(max : highest)                          \
+  num_threads(threadCount(this->Parameters))
   for (std::int64_t i = 0; i < n; ++i)
   {
     total += std::max(rho[i] - rho0, 0.0f);
-  }
-  this->Last.meanCompression = n > 0 ? total / (static_cast<double>(n) * rho0) : 0.0;
-  float highest = 0.0f;
-#pragma omp parallel for schedule(static) reduction(max : highest) num_threads(threadCount(this->Parameters))
-  for (std::int64_t i = 0; i < n; ++i)
-  {
     highest = std::max(highest, rho[i]);
   }
+  this->Last.meanCompression = n > 0 ? total / (static_cast<double>(n) * rho0) : 0.0;
   this->Last.maxDensityRatio = static_cast<double>(highest) / rho0;
 }
 
