@@ -32,12 +32,12 @@ constexpr float kRho0 = 1000.0f;  // [kg/m^3]
 
 const char* name(PressureSolverType s)
 {
-  return s == PressureSolverType::DFSPH ? "DFSPH" : "WCSPH";
+  return s == PressureSolverType::DFSPH ? "DFSPH" : s == PressureSolverType::DeltaSPH ? "DeltaSPH" : "WCSPH";
 }
 
 /// Water with h = 2 spacings; a slab four particles thick in y between free-slip mirror walls,
 /// which makes the flow two-dimensional as in the experiments.
-float gViscosity = 3.5f;                          // [Pa s], --viscosity; Müller's water value, the filter's default
+float gViscosity = 0.0f;                          // [Pa s], --viscosity; Müller's extra viscosity (3.5 in his paper)
 float gDensityTolerance = 0.001f;                 // --tolerance; the filter's default (0.1 %)
 float gGasStiffness = 1000.0f;                    // --stiffness [m^2/s^2], WCSPH's k (c = sqrt(k))
 float gCFLNumber = SPHParameters().cflNumber;     // --cfl; smaller for a time-step convergence study
@@ -251,7 +251,8 @@ int main(int argc, char** argv)
   const std::string dir = argv[1];
   bool quick = false;
   std::string scene = "all";
-  std::vector<PressureSolverType> solvers = { PressureSolverType::WCSPH, PressureSolverType::DFSPH };
+  std::vector<PressureSolverType> solvers = { PressureSolverType::WCSPH, PressureSolverType::DFSPH,
+                                              PressureSolverType::DeltaSPH };
   std::vector<int> resolutions;
   for (int k = 2; k < argc; ++k)
   {
@@ -303,7 +304,7 @@ int main(int argc, char** argv)
     else if (option == "--solver" && k + 1 < argc)
     {
       const std::string v = argv[++k];
-      solvers = { v == "DFSPH" ? PressureSolverType::DFSPH : PressureSolverType::WCSPH };
+      solvers = { v == "DFSPH" ? PressureSolverType::DFSPH : v == "DeltaSPH" ? PressureSolverType::DeltaSPH : PressureSolverType::WCSPH };
     }
     else if (option == "--resolutions" && k + 1 < argc)
     {

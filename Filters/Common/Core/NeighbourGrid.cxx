@@ -50,12 +50,26 @@ void NeighbourGrid::build(const float* x, const float* y, const float* z, std::s
   this->CellSize = cellSize;
   for (int a = 0; a < 3; ++a)
   {
-    this->Origin[a] = lo[a];
+    this->Origin[a] = this->Periodic[a] ? this->PeriodLow[a] : lo[a];
+    if (this->Periodic[a])
+    {
+      lo[a] = this->PeriodLow[a];
+    }
   }
   double cells = 1.0;
   for (int a = 0; a < 3; ++a)
   {
-    const double extent = std::floor((static_cast<double>(hi[a]) - lo[a]) * inverseCell) + 1.0;
+    // A periodic axis has whole cells of at least cellSize over the period (the last takes the
+    // remainder), so that the wrap-around neighbours are the first and last cells.
+    const double extent = this->Periodic[a]
+                            ? std::floor(static_cast<double>(this->PeriodLength[a]) * inverseCell * (1.0 + 1e-6))
+                            : std::floor((static_cast<double>(hi[a]) - lo[a]) * inverseCell) + 1.0;
+    if (this->Periodic[a] && extent < 3.0)
+    {
+      throw std::invalid_argument("neighbour grid: a periodic axis must be at least 3 cells long (axis " +
+                                  std::to_string(a) + ": period " + std::to_string(this->PeriodLength[a]) +
+                                  ", cell " + std::to_string(cellSize) + ")");
+    }
     cells *= extent;
     this->Dims[a] = extent > 2e9 ? std::numeric_limits<int>::max() : static_cast<int>(extent);
   }
@@ -73,9 +87,10 @@ void NeighbourGrid::build(const float* x, const float* y, const float* z, std::s
   this->CellStart.assign(cellCount + 1, 0);
   for (std::size_t i = 0; i < n; ++i)
   {
-    const int ix = std::min(static_cast<int>((x[i] - lo[0]) * inverseCell), this->Dims[0] - 1);
-    const int iy = std::min(static_cast<int>((y[i] - lo[1]) * inverseCell), this->Dims[1] - 1);
-    const int iz = std::min(static_cast<int>((z[i] - lo[2]) * inverseCell), this->Dims[2] - 1);
+    // Clamped into the grid: only a periodic axis can have positions outside (rounding at its ends).
+    const int ix = std::clamp(static_cast<int>((x[i] - lo[0]) * inverseCell), 0, this->Dims[0] - 1);
+    const int iy = std::clamp(static_cast<int>((y[i] - lo[1]) * inverseCell), 0, this->Dims[1] - 1);
+    const int iz = std::clamp(static_cast<int>((z[i] - lo[2]) * inverseCell), 0, this->Dims[2] - 1);
     const auto c = static_cast<std::uint32_t>(this->linearIndex(ix, iy, iz));
     this->ParticleCell[i] = c;
     ++this->CellStart[c + 1];

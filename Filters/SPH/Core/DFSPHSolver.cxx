@@ -62,7 +62,7 @@ void withImages(const float position[3], const SPHParameters& p, F&& f)
 {
   static const float identity[3] = { 1.0f, 1.0f, 1.0f };
   f(position, identity);
-  const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, p.smoothingLength);
+  const WallMirrors mirrors = WallMirrors::around(position, p);
   for (int m = 0; m < mirrors.count; ++m)
   {
     float image[3];

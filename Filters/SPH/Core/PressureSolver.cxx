@@ -1,6 +1,7 @@
 #include "parafluid/sph/PressureSolver.h"
 
 #include "parafluid/sph/DFSPHSolver.h"
+#include "parafluid/sph/DeltaSPHSolver.h"
 #include "parafluid/sph/WCSPHSolver.h"
 
 #include <stdexcept>
@@ -15,6 +16,8 @@ std::unique_ptr<PressureSolver> makePressureSolver(PressureSolverType type)
       return std::make_unique<WCSPHSolver>();
     case PressureSolverType::DFSPH:
       return std::make_unique<DFSPHSolver>();
+    case PressureSolverType::DeltaSPH:
+      return std::make_unique<DeltaSPHSolver>();
   }
   throw std::invalid_argument("SPH: unknown pressure solver");
 }

@@ -1,6 +1,6 @@
-// Müller et al. (2003) forces: poly6 density, the equation of state, spiky pressure gradient,
-// viscosity-kernel Laplacian and colour-field surface tension: the forces both pressure solvers
-// share (WCSPH adds its pressure to the same pair sums).
+// Müller et al. (2003) forces: spiky pressure gradient, viscosity-kernel Laplacian and colour-field
+// surface tension, plus the physical (laminar) viscosity: the forces of Müller's WCSPH, whose
+// pressure joins the same pair sums, and the explicit non-pressure forces of DFSPH.
 #include "parafluid/sph/SPHSolver.h"
 
 #include "parafluid/common/Kernels.h"
@@ -21,6 +21,8 @@ namespace
 struct PairConstants
 {
   float h, h2, minDistance, pressureScale, viscosityScale;
+  float laminarScale; // 10 nu m x the spiky gradient's constant (0: no laminar term)
+  float eta2;         // keeps 1 / r^2 finite in the laminar term
 };
 
 struct PairSums
@@ -44,12 +46,16 @@ enum Channel
 /// Pair sums for a query particle (position q, velocity v, pressure pi) over the candidates:
 ///   pressure:   Σ_j P (pi + pj)/rho_j (h − r)² / r · (q − x_j)
 ///   viscosity:  Σ_j V / rho_j (h − r) (v_j − v)
+///   laminar:    Σ_j L / rho_j ((v − v_j) . T (q − x_j)) / (r² + η²) (h − r)² / r (q − x_j), the
+///               operator of Monaghan (2005) with the spiky gradient; T turns the relative velocity
+///               into that of a no-slip wall image (see accelerationPass), all ones otherwise
 ///   colour field gradient and Laplacian (poly6, without constants).
 /// Each term is compiled in only when its flag is set, so a scene without it does not pay for it.
 /// The viscous sum goes into `force` unless SeparateViscous (no-slip wall images map it back
 /// differently from the pressure sum).
 template<bool Pressure, bool Viscosity, bool Tension, bool SeparateViscous = false>
-PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float pi, const PairConstants& k)
+PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float pi, const PairConstants& k,
+                  const float t[3])
 {
   const std::uint32_t count = c.findHits(q, k.h2);
   const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data();
@@ -78,6 +84,14 @@ PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float 
       }
       if constexpr (Viscosity)
       {
+        // The laminar term points along the pair, like pressure, and maps back like it.
+        const float approach =
+          t[0] * (v[0] - pvx[j]) * dx + t[1] * (v[1] - pvy[j]) * dy + t[2] * (v[2] - pvz[j]) * dz;
+        const float laminar =
+          k.laminarScale * pinv[j] * approach / (r2[j] + k.eta2) * w * w / std::max(dist, k.minDistance);
+        fx += laminar * dx;
+        fy += laminar * dy;
+        fz += laminar * dz;
         const float pair = k.viscosityScale * pinv[j] * w;
         if constexpr (SeparateViscous)
         {
@@ -128,11 +142,19 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
   k.h2 = k.h * k.h;
   // Smallest distance divided by; pairs closer than this push along a direction of zero length.
   k.minDistance = 1e-6f * k.h;
-  // a_i(pressure) = -sum_j m (p_i + p_j) / (2 rho_i rho_j) grad W_spiky, grad W = dW/dr r_ij / r,
-  // dW/dr = -3 c (h - r)^2, so the pair term is +1.5 c m (p_i + p_j)/(rho_i rho_j) (h - r)^2 r_ij / r.
-  k.pressureScale = 1.5f * spiky.coefficient * p.particleMass;
+  // a_i(pressure) = -sum_j m (p_i + p_j) / (rho_i rho_j) grad W_spiky, grad W = dW/dr r_ij / r,
+  // dW/dr = -3 c (h - r)^2, so the pair term is +3 c m (p_i + p_j)/(rho_i rho_j) (h - r)^2 r_ij / r.
+  // Müller's paper halves this ((p_i + p_j) / 2): for a linear pressure field that sum returns
+  // half the gradient, so the seed method held water up with twice the hydrostatic pressure.
+  k.pressureScale = 3.0f * spiky.coefficient * p.particleMass;
   // a_i(viscosity) = mu / rho_i sum_j m (v_j - v_i) / rho_j lap W, lap W = lc (h - r).
   k.viscosityScale = p.viscosity * p.particleMass * viscous.laplacianCoefficient;
+  // a_i(laminar) = 2 (d + 2) nu sum_j m / rho_j (v_ij . x_ij) / (r^2 + 0.01 (h/2)^2) grad W_ij;
+  // explicit here (Müller's WCSPH); DFSPH solves it implicitly (ImplicitViscosity.cxx).
+  // The pass divides every sum by rho_i, so the term carries mu = rho0 nu (Morris et al. 1997).
+  k.laminarScale =
+    Pressure ? -3.0f * spiky.coefficient * 10.0f * p.kinematicViscosity * p.restDensity * p.particleMass : 0.0f;
+  k.eta2 = 0.01f * 0.25f * k.h2;
   // Colour field c = sum_j m / rho_j W_poly6: grad W = -6 c (h² - r²)² r_ij, lap W = -6 c (h² - r²)(3h² - 7r²).
   const float colourScale = -6.0f * poly6.coefficient * p.particleMass;
   const float threshold = p.surfaceThreshold / p.smoothingLength;
@@ -145,24 +167,26 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
       const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
       const float pi = s.pressure[i];
-      PairSums sum = pairSums<Pressure, Viscosity, Tension>(candidates, position, velocity, pi, k);
+      static const float ones[3] = { 1.0f, 1.0f, 1.0f };
+      PairSums sum = pairSums<Pressure, Viscosity, Tension>(candidates, position, velocity, pi, k, ones);
       // Mirror images: the pair term of x_i with R x_j equals R times the term of R x_i with x_j
       // (R is a reflection, its own inverse); scalars are unchanged. An image's velocity is S v_j
       // (S diagonal, +-1): sum w (S v_j - v_i) = S sum w (v_j - S v_i), so the query moves with
       // S v_i and the viscous sum maps back with S.
-      const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, k.h, p.noSlipWalls());
+      const WallMirrors mirrors = WallMirrors::around(position, p, true);
       for (int m = 0; m < mirrors.count; ++m)
       {
-        float image[3], imageVelocity[3];
+        float image[3], imageVelocity[3], t[3];
         for (int a = 0; a < 3; ++a)
         {
           image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
           imageVelocity[a] = mirrors.velocityScale[m][a] * velocity[a];
+          t[a] = mirrors.velocityScale[m][a] * mirrors.scale[m][a];
         }
         // Free-slip images (S = R) keep the one combined sum; no-slip ones sum viscosity apart.
         const PairSums g = mirrors.noSlip(m)
-                             ? pairSums<Pressure, Viscosity, Tension, true>(candidates, image, imageVelocity, pi, k)
-                             : pairSums<Pressure, Viscosity, Tension>(candidates, image, imageVelocity, pi, k);
+                             ? pairSums<Pressure, Viscosity, Tension, true>(candidates, image, imageVelocity, pi, k, t)
+                             : pairSums<Pressure, Viscosity, Tension>(candidates, image, imageVelocity, pi, k, t);
         for (int a = 0; a < 3; ++a)
         {
           sum.force[a] += mirrors.scale[m][a] * g.force[a];
@@ -211,8 +235,9 @@ void SPHSolver::computeAccelerations(bool withPressure)
 {
   ParticleState& s = this->State;
   const SPHParameters& p = this->Parameters;
-  const bool viscosity = p.viscosity > 0.0f;
-  const bool tension = p.surfaceTension > 0.0f;
+  // Müller's viscosity, and (WCSPH) the explicit laminar term; DFSPH's laminar term is implicit.
+  const bool viscosity = p.viscosity > 0.0f || (withPressure && p.kinematicViscosity > 0.0f);
+  const bool tension = p.surfaceTension > 0.0f && p.surfaceTensionModel == SurfaceTensionModel::ColourField;
   const std::size_t n = s.size();
   const int threads = threadCount(p);
   if (!withPressure && !viscosity && !tension)
@@ -225,6 +250,7 @@ void SPHSolver::computeAccelerations(bool withPressure)
       s.ay[i] = p.gravity[1];
       s.az[i] = p.gravity[2];
     }
+    this->addSurfaceTension();
     return;
   }
   this->InverseDensity.resize(n);
@@ -236,5 +262,6 @@ void SPHSolver::computeAccelerations(bool withPressure)
   }
   const Pass pass = withPressure ? choosePass<true>(viscosity, tension) : choosePass<false>(viscosity, tension);
   pass(this->Grid, s, p, inverseDensity);
+  this->addSurfaceTension();
 }
 } // namespace parafluid::sph

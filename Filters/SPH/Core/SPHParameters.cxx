@@ -13,6 +13,46 @@ bool positiveFinite(float v)
 {
   return std::isfinite(v) && v > 0.0f;
 }
+
+/// W(r) and dW/dr of the density kernel of the given support radius.
+struct AnyKernel
+{
+  DensityKernel kind;
+  Poly6Kernel poly6;
+  CubicSplineKernel cubic;
+  WendlandC2Kernel wendland;
+  AnyKernel(DensityKernel kind, float h)
+    : kind(kind)
+    , poly6(h)
+    , cubic(h)
+    , wendland(h)
+  {
+  }
+  double value(float r) const
+  {
+    switch (kind)
+    {
+      case DensityKernel::Poly6:
+        return poly6.valueFromSquared(r * r);
+      case DensityKernel::CubicSpline:
+        return cubic.value(r);
+      default:
+        return wendland.value(r);
+    }
+  }
+  double derivative(float r) const
+  {
+    switch (kind)
+    {
+      case DensityKernel::Poly6:
+        return static_cast<double>(poly6.gradientFactorFromSquared(r * r)) * r;
+      case DensityKernel::CubicSpline:
+        return cubic.radialDerivative(r);
+      default:
+        return wendland.radialDerivative(r);
+    }
+  }
+};
 }
 
 std::string SPHParameters::validate() const
@@ -32,6 +72,26 @@ std::string SPHParameters::validate() const
   if (!std::isfinite(viscosity) || viscosity < 0.0f)
   {
     return "Viscosity must be zero or positive (Pa s), got " + std::to_string(viscosity);
+  }
+  if (!std::isfinite(kinematicViscosity) || kinematicViscosity < 0.0f || kinematicViscosity > 1.0e3f)
+  {
+    return "KinematicViscosity must lie in [0, 1000] m^2/s (water: 1e-6), got " + std::to_string(kinematicViscosity);
+  }
+  if (!std::isfinite(artificialViscosity) || artificialViscosity < 0.0f || artificialViscosity > 10.0f)
+  {
+    return "ArtificialViscosity must lie in [0, 10] (0.01-0.02 is usual), got " + std::to_string(artificialViscosity);
+  }
+  if (!std::isfinite(densityDiffusion) || densityDiffusion < 0.0f || densityDiffusion > 1.0f)
+  {
+    return "DensityDiffusion must lie in [0, 1] (0.1 is usual), got " + std::to_string(densityDiffusion);
+  }
+  if (!std::isfinite(soundSpeed) || soundSpeed < 0.0f || soundSpeed > 1.0e5f)
+  {
+    return "SoundSpeed must lie in [0, 1e5] m/s (0: automatic), got " + std::to_string(soundSpeed);
+  }
+  if (!positiveFinite(viscosityTolerance) || viscosityTolerance >= 1.0f)
+  {
+    return "ViscosityTolerance must lie in (0, 1), got " + std::to_string(viscosityTolerance);
   }
   if (!std::isfinite(surfaceTension) || surfaceTension < 0.0f)
   {
@@ -99,6 +159,15 @@ std::string SPHParameters::validate() const
   {
     return "BoundaryDamping must lie in [0, 1], got " + std::to_string(boundaryDamping);
   }
+  for (int a = 0; a < 3; ++a)
+  {
+    if (periodic[a] && !(domainBounds[2 * a + 1] - domainBounds[2 * a] >= 3.0f * smoothingLength))
+    {
+      return std::string("a periodic axis must be at least 3 smoothing lengths long (axis ") + "xyz"[a] + ": " +
+             std::to_string(domainBounds[2 * a + 1] - domainBounds[2 * a]) + " m, SmoothingLength " +
+             std::to_string(smoothingLength) + " m)";
+    }
+  }
   if (threads < 0)
   {
     return "threads must be 0 (default) or positive";
@@ -129,8 +198,7 @@ float latticeParticleMass(float spacing, float smoothingLength, float restDensit
   {
     throw std::invalid_argument("particle mass: smoothing length is more than 50 particle spacings");
   }
-  const Poly6Kernel poly6(smoothingLength);
-  const CubicSplineKernel cubic(smoothingLength);
+  const AnyKernel w(kernel, smoothingLength);
   const int reach = static_cast<int>(std::ceil(smoothingLength / spacing));
   double sum = 0.0;
   for (int k = -reach; k <= reach; ++k)
@@ -140,8 +208,7 @@ float latticeParticleMass(float spacing, float smoothingLength, float restDensit
       for (int i = -reach; i <= reach; ++i)
       {
         const double r2 = (double(i) * i + double(j) * j + double(k) * k) * double(spacing) * spacing;
-        sum += kernel == DensityKernel::Poly6 ? poly6.valueFromSquared(static_cast<float>(r2))
-                                              : cubic.value(static_cast<float>(std::sqrt(r2)));
+        sum += w.value(static_cast<float>(std::sqrt(r2)));
       }
     }
   }
@@ -166,8 +233,7 @@ float latticeGradientCorrection(float spacing, float smoothingLength, DensityKer
   {
     return 1.0f;
   }
-  const Poly6Kernel poly6(smoothingLength);
-  const CubicSplineKernel cubic(smoothingLength);
+  const AnyKernel w(kernel, smoothingLength);
   const int reach = static_cast<int>(std::ceil(smoothingLength / spacing));
   double sum = 0.0, moment = 0.0;
   for (int k = -reach; k <= reach; ++k)
@@ -178,11 +244,10 @@ float latticeGradientCorrection(float spacing, float smoothingLength, DensityKer
       {
         const double r = std::sqrt(double(i) * i + double(j) * j + double(k) * k) * spacing;
         const auto rf = static_cast<float>(r);
-        sum += kernel == DensityKernel::Poly6 ? poly6.valueFromSquared(rf * rf) : cubic.value(rf);
+        sum += w.value(rf);
         if (r > 0.0)
         {
-          const double dWdr =
-            kernel == DensityKernel::Poly6 ? poly6.gradientFactorFromSquared(rf * rf) * r : cubic.radialDerivative(rf);
+          const double dWdr = w.derivative(rf);
           const double dz = double(k) * spacing;
           moment -= dWdr / r * dz * dz; // -(dW/dz)(z_i - z_j) with z_i - z_j = -dz
         }

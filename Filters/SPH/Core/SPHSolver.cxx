@@ -361,6 +361,13 @@ void SPHSolver::checkCoincident() const
 void SPHSolver::sortByCell()
 {
   ParticleState& s = this->State;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (this->Parameters.periodic[a])
+    {
+      this->Grid.setPeriodic(a, this->Parameters.domainBounds[2 * a], this->Parameters.domainBounds[2 * a + 1]);
+    }
+  }
   this->Grid.build(s.x.data(), s.y.data(), s.z.data(), s.size(), this->Parameters.smoothingLength);
   const auto& order = this->Grid.sortedOrder();
   const int threads = threadCount(this->Parameters);
@@ -408,6 +415,7 @@ void SPHSolver::drift(float dt)
   const float restitution = this->Parameters.wallRestitution;
   const TriangleBoundary* mesh = this->Boundary && this->Boundary->triangleCount() > 0 ? this->Boundary.get() : nullptr;
   const float damping = this->Parameters.boundaryDamping;
+  const std::array<bool, 3> periodic = this->Parameters.periodic;
   // Particles are put back this far off a mesh, so the next step starts on a definite side of it.
   const float offset = 1e-3f * this->Parameters.smoothingLength;
   float* position[3] = { s.x.data(), s.y.data(), s.z.data() };
@@ -426,7 +434,14 @@ void SPHSolver::drift(float dt)
       // its normal velocity reversed and scaled, so walls take energy out instead of adding it.
       // Not clamped onto the wall: a particle on the plane would coincide with its own mirror
       // image, which then could not push it.
-      if (xa < b[2 * a])
+      if (periodic[a])
+      {
+        // Through the face and back in through the opposite one (fmod keeps a far jump inside too).
+        const float length = b[2 * a + 1] - b[2 * a];
+        xa = b[2 * a] + std::fmod(xa - b[2 * a], length);
+        xa = xa < b[2 * a] ? xa + length : (xa >= b[2 * a + 1] ? xa - length : xa);
+      }
+      else if (xa < b[2 * a])
       {
         xa = std::min(b[2 * a] + restitution * (b[2 * a] - xa), b[2 * a + 1]);
         va = va < 0.0f ? -restitution * va : va;
@@ -447,7 +462,7 @@ void SPHSolver::drift(float dt)
       bool moved = false;
       for (int a = 0; a < 3; ++a)
       {
-        clamped[a] = std::clamp(to[a], b[2 * a], b[2 * a + 1]);
+        clamped[a] = periodic[a] ? to[a] : std::clamp(to[a], b[2 * a], b[2 * a + 1]);
         moved = moved || clamped[a] != to[a];
       }
       // Clamping into the box can push a particle back across the mesh where the mesh leaves the
@@ -515,7 +530,7 @@ std::vector<float> SPHSolver::smoothedPressure() const
                                   };
                                   accumulate(position);
                                   const WallMirrors mirrors =
-                                    WallMirrors::around(position, p.domainBounds, p.smoothingLength);
+                                    WallMirrors::around(position, p);
                                   for (int m = 0; m < mirrors.count; ++m)
                                   {
                                     float image[3];

@@ -60,7 +60,7 @@ void WCSPHSolver::computeDensityAndPressure(SPHSolver& sim)
                           float sum = candidates.poly6Sum(position, w.h2); // includes the particle itself (r = 0)
                           // Near walls the mirrored fluid fills the cut-off neighbourhood: |x_i - R x_j| = |R x_i -
                           // x_j|.
-                          const WallMirrors mirrors = WallMirrors::around(position, p.domainBounds, p.smoothingLength);
+                          const WallMirrors mirrors = WallMirrors::around(position, p);
                           for (int m = 0; m < mirrors.count; ++m)
                           {
                             float image[3];

@@ -43,7 +43,7 @@ void SPHSolver::applyWallFriction(float dt)
       const float toHigh = b[2 * a + 1] - position[a][i];
       const int wall = toLow <= toHigh ? 2 * a : 2 * a + 1;
       const float distance = std::min(toLow, toHigh);
-      if (!p.frictionWalls[wall] || distance >= spacing)
+      if (p.periodic[a] || !p.frictionWalls[wall] || distance >= spacing)
       {
         continue;
       }

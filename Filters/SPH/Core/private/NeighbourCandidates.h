@@ -62,6 +62,11 @@ struct CandidateBuffer
   void gather(const NeighbourGrid& grid, int ix, int iy, int iz, const ParticleState& s, float reach,
               const std::array<const float*, kMaxChannels>& sources, int channels)
   {
+    if (grid.anyPeriodic())
+    {
+      this->gatherPeriodic(grid, ix, iy, iz, s, reach, sources, channels);
+      return;
+    }
     std::uint32_t capacity = 0;
     grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) { capacity += e - b; });
     for (auto* a : { &x, &y, &z, &distanceSquared })
@@ -101,6 +106,53 @@ struct CandidateBuffer
                                    ++size;
                                  }
                                });
+  }
+
+  /// gather() across periodic axes: cell by cell, each candidate shifted by the period it was
+  /// reached across, so every pair loop sees the nearest periodic image.
+  void gatherPeriodic(const NeighbourGrid& grid, int ix, int iy, int iz, const ParticleState& s, float reach,
+                      const std::array<const float*, kMaxChannels>& sources, int channels)
+  {
+    const auto& start = grid.cellStart();
+    std::uint32_t capacity = 0;
+    grid.forEachNeighbourCell(ix, iy, iz,
+                              [&](std::size_t c, const float*) { capacity += start[c + 1] - start[c]; });
+    for (auto* a : { &x, &y, &z, &distanceSquared })
+    {
+      a->resize(capacity);
+    }
+    hits.resize(capacity);
+    for (int k = 0; k < channels; ++k)
+    {
+      channel[k].resize(capacity);
+    }
+    float lo[3], hi[3];
+    grid.cellBox(ix, iy, iz, lo, hi);
+    const float reach2 = reach * reach;
+    size = 0;
+    grid.forEachNeighbourCell(ix, iy, iz,
+                              [&](std::size_t c, const float* shift)
+                              {
+                                for (std::uint32_t j = start[c]; j < start[c + 1]; ++j)
+                                {
+                                  const float px = s.x[j] + shift[0], py = s.y[j] + shift[1], pz = s.z[j] + shift[2];
+                                  const float dx = std::max({ lo[0] - px, 0.0f, px - hi[0] });
+                                  const float dy = std::max({ lo[1] - py, 0.0f, py - hi[1] });
+                                  const float dz = std::max({ lo[2] - pz, 0.0f, pz - hi[2] });
+                                  if (dx * dx + dy * dy + dz * dz >= reach2)
+                                  {
+                                    continue;
+                                  }
+                                  x[size] = px;
+                                  y[size] = py;
+                                  z[size] = pz;
+                                  for (int k = 0; k < channels; ++k)
+                                  {
+                                    channel[k][size] = sources[k][j];
+                                  }
+                                  ++size;
+                                }
+                              });
   }
 
   /// Σ_j (h² − r²)³ over candidates inside h of q (the poly6 sum without its constant).

@@ -4,6 +4,7 @@
 // Each kernel keeps its normalisation constants so the hot loops only multiply.
 #include "parafluid/common/MathConstants.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace parafluid
@@ -156,10 +157,58 @@ struct CubicSplineKernel
   float coefficient;
 };
 
-/// Which kernel measures density: Müller's poly6 (WCSPH) or the cubic spline (DFSPH).
+/// Wendland C2 in 3-D (Wendland 1995; Dehnen & Aly 2012), written with the support radius h
+/// (q = r/h): W = 21/(2π h³) (1 − q)⁴ (1 + 4q). Positive Fourier transform, so it does not pair
+/// particles however many neighbours there are; the kernel of modern weakly compressible SPH
+/// (δ-SPH, DualSPHysics).
+struct WendlandC2Kernel
+{
+  explicit WendlandC2Kernel(float h)
+    : h(h)
+    , h2(h * h)
+    , inverseH(1.0f / h)
+    , coefficient(21.0f / (2.0f * kPiF * h * h * h))
+  {
+  }
+  float value(float r) const
+  {
+    const float q = r * inverseH;
+    if (q >= 1.0f)
+    {
+      return 0.0f;
+    }
+    const float d = 1.0f - q;
+    return coefficient * d * d * d * d * (1.0f + 4.0f * q);
+  }
+  /// dW/dr = −20 c q (1 − q)³ / h.
+  float radialDerivative(float r) const
+  {
+    const float q = r * inverseH;
+    if (q >= 1.0f)
+    {
+      return 0.0f;
+    }
+    const float d = 1.0f - q;
+    return -20.0f * coefficient * inverseH * q * d * d * d;
+  }
+  /// (dW/dr) / r = −20 c (1 − q)³ / h²: finite at r = 0, so no division in the pair loops.
+  float gradientFactor(float r) const
+  {
+    const float d = std::max(1.0f - r * inverseH, 0.0f);
+    return -20.0f * coefficient * inverseH * inverseH * d * d * d;
+  }
+  float h;
+  float h2;
+  float inverseH;
+  float coefficient;
+};
+
+/// Which kernel measures density: Müller's poly6 (WCSPH), the cubic spline (DFSPH) or Wendland C2
+/// (δ-SPH).
 enum class DensityKernel
 {
   Poly6,
-  CubicSpline
+  CubicSpline,
+  WendlandC2
 };
 } // namespace parafluid

@@ -1,6 +1,7 @@
 #pragma once
-// Parameters of the SPH solver: Müller et al. (2003) weakly compressible SPH or Bender & Koschier
-// (2015) divergence-free SPH. SI units throughout.
+// Parameters of the SPH solver: δ-SPH (a modern weakly compressible scheme: Tait equation of state,
+// Wendland C2, density diffusion), Bender & Koschier (2015) divergence-free SPH, or Müller et al.
+// (2003) weakly compressible SPH, the seed method. SI units throughout. The defaults are water.
 #include "parafluid/common/Kernels.h"
 
 #include <array>
@@ -10,8 +11,23 @@ namespace parafluid::sph
 {
 enum class PressureSolverType
 {
-  WCSPH, // Müller's equation of state p = k (rho - rho0), explicit
-  DFSPH  // divergence-free SPH: density and divergence solves, incompressible within a tolerance
+  WCSPH,    // Müller's equation of state p = k (rho - rho0), explicit (the seed method)
+  DFSPH,    // divergence-free SPH: density and divergence solves, incompressible within a tolerance
+  DeltaSPH  // Tait equation of state, continuity density with δ-SPH diffusion, Wendland C2, explicit
+};
+
+enum class SurfaceTensionModel
+{
+  ColourField, // Müller et al. 2003: sigma times the colour field's curvature at the surface
+  Akinci       // Akinci, Akinci & Teschner 2013: cohesion between pairs plus curvature from normals
+};
+
+/// How DFSPH's implicit viscosity system is solved (both matrix-free, Jacobi-preconditioned
+/// conjugate gradients; ParaFluidSPHBenchmark measures one against the other).
+enum class ViscositySolver
+{
+  HandWrittenCG,
+  EigenCG
 };
 
 enum class WallFriction
@@ -23,15 +39,26 @@ enum class WallFriction
 
 struct SPHParameters
 {
-  PressureSolverType pressureSolver = PressureSolverType::WCSPH;
+  PressureSolverType pressureSolver = PressureSolverType::DFSPH;
   float smoothingLength = 0.04f; // h [m]: kernel support radius (about 2 particle spacings)
   float restDensity = 1000.0f;   // rho0 [kg/m^3]
   float gasStiffness = 1000.0f;  // k [m^2/s^2] in p = k (rho - rho0); sqrt(k) is the sound speed (WCSPH)
-  // mu [Pa s]: Müller's viscosity coefficient; 3.5 is the paper's water value. It is not water's
-  // physical 1e-3: the term also damps the acoustic noise of a weakly compressible fluid.
-  float viscosity = 3.5f;
-  // sigma [N/m]: surface tension of Müller's colour-field model (water-air: 0.0728); 0 skips it.
+  // nu [m^2/s]: the fluid's kinematic viscosity, the physical (laminar) viscous stress of every
+  // solver (the operator of Monaghan 2005 / Weiler et al. 2018); water at 20 °C: 1.0e-6, honey
+  // about 1e-2. DFSPH solves it implicitly, so a high value does not shorten the step.
+  float kinematicViscosity = 1.0e-6f;
+  // mu [Pa s]: the extra viscosity of Müller's seed method (its paper uses 3.5 for water, 3500
+  // times water's 1e-3: it also damps the acoustic noise of that scheme). 0, the default, skips it.
+  float viscosity = 0.0f;
+  // δ-SPH: Monaghan's artificial viscosity alpha (its only numerical viscosity; 0.01-0.02 in the
+  // δ-SPH literature), the density-diffusion coefficient delta (0.1, Molteni & Colagrossi 2009),
+  // and the speed of sound c0 [m/s] (0: ten times the free-fall speed over the fluid's height).
+  float artificialViscosity = 0.01f;
+  float densityDiffusion = 0.1f;
+  float soundSpeed = 0.0f;
+  // sigma [N/m]: surface tension (water-air: 0.0728); 0 skips it. surfaceTensionModel picks the force.
   float surfaceTension = 0.0f;
+  SurfaceTensionModel surfaceTensionModel = SurfaceTensionModel::Akinci;
   // A particle is on the surface when |grad c| > surfaceThreshold / h (grad c ~ 1/h across a surface).
   float surfaceThreshold = 0.1f;
   float particleMass = 0.0f;                                            // m [kg]; must be set (see latticeParticleMass)
@@ -52,11 +79,16 @@ struct SPHParameters
   std::array<bool, 6> frictionWalls = { true, true, true, true, true, true };
   float wallKinematicViscosity = 1.0e-6f; // nu [m^2/s] for LogLaw; water at 20 °C is 1.0e-6
   float boundaryDamping = 0.5f;           // fraction of the normal velocity lost when bouncing off a boundary mesh
+  // Periodic axes (x, y, z): a particle leaving through one face of the domain comes back through
+  // the opposite one, and neighbours are found across the pair of faces; those faces are no walls.
+  // A periodic axis must be at least three smoothing lengths long.
+  std::array<bool, 3> periodic = { false, false, false };
 
   // Time stepping. With adaptiveTimeStep the step is the smallest of the CFL condition
-  // lambda h / (c + v_max) (c = sqrt(k) for WCSPH, 0 for DFSPH), the viscous condition
-  // h^2 rho0 / (40 mu), the force condition 0.25 sqrt(h / a_max), the capillary condition
-  // sqrt(rho0 h^3 / (2 pi sigma)), and maxTimeStep; else it is timeStep.
+  // lambda h / (c + v_max) (c = sqrt(k) for WCSPH, c0 for δ-SPH, 0 for DFSPH), the viscous
+  // conditions h^2 rho0 / (40 mu) and (explicit solvers) 0.03 h^2 / nu, the force condition
+  // 0.25 sqrt(h / a_max), the capillary condition sqrt(rho0 h^3 / (2 pi sigma)), and maxTimeStep;
+  // else it is timeStep.
   bool adaptiveTimeStep = true;
   float cflNumber = 0.2f;     // lambda, relative to the support radius h (= 0.4 particle spacings)
   float maxTimeStep = 0.005f; // [s]
@@ -68,17 +100,32 @@ struct SPHParameters
   float densityTolerance = 0.001f;
   float divergenceTolerance = 0.001f;
   int maxPressureIterations = 100;
+  // DFSPH's implicit viscosity: CG until the residual is below viscosityTolerance of the right-hand
+  // side, at most maxPressureIterations iterations.
+  float viscosityTolerance = 0.01f;
+  ViscositySolver viscositySolver = ViscositySolver::HandWrittenCG;
 
-  /// Free-surface particles miss neighbours, so their density is below rho0; negative pressure
-  /// would pull them into clumps (tensile instability). Clamping p >= 0 avoids it.
+  /// Müller's WCSPH: free-surface particles miss neighbours, so their summed density is below
+  /// rho0; negative pressure would pull them into clumps (tensile instability). Clamping p >= 0
+  /// avoids it. (δ-SPH keeps negative pressure: its continuity density has no deficit at the
+  /// surface, and Monaghan's tensile correction keeps stretched particles from pairing.)
   bool clampNegativePressure = true;
   int threads = 0; // OpenMP threads; 0 = the OpenMP default
 
   /// The kernel that measures density for the chosen pressure solver.
   DensityKernel densityKernel() const
   {
-    return pressureSolver == PressureSolverType::DFSPH ? DensityKernel::CubicSpline : DensityKernel::Poly6;
+    switch (pressureSolver)
+    {
+      case PressureSolverType::DFSPH:
+        return DensityKernel::CubicSpline;
+      case PressureSolverType::DeltaSPH:
+        return DensityKernel::WendlandC2;
+      default:
+        return DensityKernel::Poly6;
+    }
   }
+  bool anyPeriodic() const { return periodic[0] || periodic[1] || periodic[2]; }
   /// The walls whose images carry the no-slip velocity (all false unless wallFriction is NoSlip).
   std::array<bool, 6> noSlipWalls() const
   {

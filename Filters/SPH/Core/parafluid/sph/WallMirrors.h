@@ -13,6 +13,8 @@
 //
 // No extra neighbour search is needed: for i and j on the same side of a plane,
 // |x_i − R x_j| >= |x_i − x_j|, so every image within h of i belongs to an ordinary neighbour.
+#include "parafluid/sph/SPHParameters.h"
+
 #include <array>
 
 namespace parafluid::sph
@@ -34,9 +36,10 @@ struct WallMirrors
   }
 
   /// The images a particle at `position` needs: one per subset of the walls within h, taking on
-  /// each axis only the nearer wall. noSlip flags the walls xmin, xmax, ymin, ymax, zmin, zmax.
+  /// each axis only the nearer wall. noSlip flags the walls xmin, xmax, ymin, ymax, zmin, zmax;
+  /// a periodic axis has no walls.
   static WallMirrors around(const float position[3], const std::array<float, 6>& bounds, float h,
-                            const std::array<bool, 6>& noSlip = {})
+                            const std::array<bool, 6>& noSlip = {}, const std::array<bool, 3>& periodic = {})
   {
     WallMirrors m;
     int axes[3];
@@ -47,7 +50,7 @@ struct WallMirrors
     {
       const float toLow = position[a] - bounds[2 * a];
       const float toHigh = bounds[2 * a + 1] - position[a];
-      if (toLow < h || toHigh < h)
+      if (!periodic[a] && (toLow < h || toHigh < h))
       {
         axes[walls] = a;
         planes[walls] = toLow <= toHigh ? bounds[2 * a] : bounds[2 * a + 1];
@@ -85,6 +88,14 @@ struct WallMirrors
       ++m.count;
     }
     return m;
+  }
+
+  /// The images of the simulation's box walls (no-slip ones only when withNoSlip: the terms that
+  /// see velocities).
+  static WallMirrors around(const float position[3], const SPHParameters& p, bool withNoSlip = false)
+  {
+    return around(position, p.domainBounds, p.smoothingLength, withNoSlip ? p.noSlipWalls() : std::array<bool, 6>{},
+                  p.periodic);
   }
 };
 } // namespace parafluid::sph

@@ -1,0 +1,356 @@
+// δ-SPH: see DeltaSPHSolver.h for the scheme and its sources.
+#include "parafluid/sph/DeltaSPHSolver.h"
+
+#include "parafluid/common/Kernels.h"
+#include "parafluid/sph/SPHSolver.h"
+#include "parafluid/sph/WallMirrors.h"
+#include "private/NeighbourCandidates.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace parafluid::sph
+{
+using detail::CandidateBuffer;
+using detail::forEachParticleByCell;
+using detail::threadCount;
+
+namespace
+{
+constexpr float kGamma = 7.0f;              // Tait exponent for water (Batchelor 1967; Monaghan 1994)
+constexpr float kTensileCoefficient = 0.2f; // Monaghan (2000): R_i = 0.2 |p_i| / rho_i^2 where p_i < 0
+constexpr float kTensileExponent = 4.0f;    // ... times (W(r) / W(spacing))^4
+
+enum Channel
+{
+  VX,
+  VY,
+  VZ,
+  DENSITY,
+  PRESSURE
+};
+
+struct Constants
+{
+  float h2;        // support radius squared
+  float hSmooth;   // the smoothing length of the δ-SPH literature, half the support radius
+  float eta2;      // 0.01 hSmooth^2: keeps 1 / r^2 finite
+  float mass;
+  float c0, alpha, delta, nu10; // nu10 = 2 (d + 2) nu = 10 nu in 3-D
+  float rho0, inverseC0Squared;
+  float gravity[3];
+  float inverseWSpacing; // 1 / W(particle spacing), for the tensile correction
+  WendlandC2Kernel w;
+  // The discrete gradient of a linear field on the rest lattice is C times the true one (C = 0.98
+  // for Wendland C2 at h = 2 spacings); pressure forces are divided by C so that a resting column
+  // carries exactly its weight (see latticeGradientCorrection).
+  float pressureCorrection;
+};
+
+struct Sums
+{
+  float a[3] = { 0, 0, 0 };
+  float densityRate = 0.0f;
+};
+
+/// (dW/dr) / r of the Wendland kernel, and the kernel itself, at distance r.
+struct WendlandPair
+{
+  float gradient, value;
+  WendlandPair(const WendlandC2Kernel& w, float r)
+  {
+    const float q = r * w.inverseH;
+    const float d = std::max(1.0f - q, 0.0f);
+    const float d3 = d * d * d;
+    gradient = -20.0f * w.coefficient * w.inverseH * w.inverseH * d3;
+    value = w.coefficient * d3 * d * (1.0f + 4.0f * q);
+  }
+};
+
+/// The momentum terms of particle i (position q, velocity vq, density and pressure) against the
+/// candidates: pressure, tensile correction, artificial and laminar viscosity. `t` turns the
+/// laminar term's relative velocity into that of a no-slip wall image (all ones otherwise).
+template<bool Laminar>
+Sums forceTerms(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, float pI, const float t[3],
+                const Constants& k)
+{
+  const std::uint32_t count = c.findHits(q, k.h2);
+  const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
+  const float *vx = c.channel[VX].data(), *vy = c.channel[VY].data(), *vz = c.channel[VZ].data();
+  const float *rho = c.channel[DENSITY].data(), *pressure = c.channel[PRESSURE].data();
+  const std::uint32_t* hits = c.hits.data();
+  const float inverseRhoI = 1.0f / rhoI;
+  const float termI = pI * inverseRhoI * inverseRhoI;
+  const float tensileI = pI < 0.0f ? -kTensileCoefficient * termI : 0.0f;
+  float ax = 0.0f, ay = 0.0f, az = 0.0f;
+#pragma omp simd reduction(+ : ax, ay, az)
+  for (std::uint32_t n = 0; n < count; ++n)
+  {
+    const std::uint32_t j = hits[n];
+    const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
+    const float rr = r2[j];
+    const WendlandPair w(k.w, std::sqrt(rr));
+    const float approach = (vq[0] - vx[j]) * dx + (vq[1] - vy[j]) * dy + (vq[2] - vz[j]) * dz; // v_ij . x_ij
+    const float inverseRhoJ = 1.0f / rho[j];
+    const float termJ = pressure[j] * inverseRhoJ * inverseRhoJ;
+    const float tensileJ = pressure[j] < 0.0f ? -kTensileCoefficient * termJ : 0.0f;
+    const float f = w.value * k.inverseWSpacing;
+    const float f2 = f * f;
+    const float inverseR2 = 1.0f / (rr + k.eta2);
+    // Monaghan's viscosity acts on approaching pairs only.
+    const float mu = std::min(approach, 0.0f) * k.hSmooth * inverseR2;
+    const float artificial = -k.alpha * k.c0 * mu * 2.0f / (rhoI + rho[j]);
+    float scalar = -(k.pressureCorrection * (termI + termJ) + (tensileI + tensileJ) * f2 * f2 + artificial);
+    if constexpr (Laminar)
+    {
+      const float laminarApproach =
+        (vq[0] - t[0] * vx[j]) * dx + (vq[1] - t[1] * vy[j]) * dy + (vq[2] - t[2] * vz[j]) * dz;
+      scalar += k.nu10 * inverseRhoJ * laminarApproach * inverseR2;
+    }
+    scalar *= k.mass * w.gradient;
+    ax += scalar * dx;
+    ay += scalar * dy;
+    az += scalar * dz;
+  }
+  Sums sums;
+  sums.a[0] = ax;
+  sums.a[1] = ay;
+  sums.a[2] = az;
+  return sums;
+}
+
+/// D rho_i / D t: continuity, plus (when `diffuse`: real neighbours only, an image's density is the
+/// particle's own, not that of the depth it is mirrored to) diffusion of the density's departure
+/// from hydrostatic (Fourtakas et al. 2019, linearised: rho_j^H - rho_i^H = rho0 g . (x_j - x_i) /
+/// c0^2 to first order in the compression, which stays about 1 % at c0 = 10 v_max).
+float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, bool diffuse,
+                  const Constants& k)
+{
+  const std::uint32_t count = c.findHits(q, k.h2);
+  const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
+  const float *vx = c.channel[VX].data(), *vy = c.channel[VY].data(), *vz = c.channel[VZ].data();
+  const float* rho = c.channel[DENSITY].data();
+  const std::uint32_t* hits = c.hits.data();
+  const float diffusion = diffuse ? k.delta * k.hSmooth * k.c0 * 2.0f * k.mass : 0.0f;
+  float rate = 0.0f;
+#pragma omp simd reduction(+ : rate)
+  for (std::uint32_t n = 0; n < count; ++n)
+  {
+    const std::uint32_t j = hits[n];
+    const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
+    const float rr = r2[j];
+    const WendlandPair w(k.w, std::sqrt(rr));
+    const float approach = (vq[0] - vx[j]) * dx + (vq[1] - vy[j]) * dy + (vq[2] - vz[j]) * dz;
+    const float hydrostatic =
+      -k.rho0 * (k.gravity[0] * dx + k.gravity[1] * dy + k.gravity[2] * dz) * k.inverseC0Squared;
+    const float psi = (rho[j] - rhoI) - hydrostatic;
+    rate += w.gradient * (k.mass * approach - diffusion * psi / rho[j] * rr / (rr + k.eta2));
+  }
+  return rate;
+}
+
+/// Runs f(query position, query velocity, t, scale, isImage) for the particle and its wall images:
+/// the term of x_i with the image R x_j equals R times the term of R x_i with x_j (R a
+/// reflection); the image moves with the mirrored velocity, or for the laminar term of a no-slip
+/// wall with the reversed one (t = S R, S the image's velocity scale).
+template<class F>
+void withImages(const float position[3], const float velocity[3], const SPHParameters& p, F&& f)
+{
+  static const float ones[3] = { 1.0f, 1.0f, 1.0f };
+  f(position, velocity, ones, ones, false);
+  const WallMirrors mirrors = WallMirrors::around(position, p, true);
+  for (int m = 0; m < mirrors.count; ++m)
+  {
+    float image[3], imageVelocity[3], t[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
+      imageVelocity[a] = mirrors.scale[m][a] * velocity[a];
+      t[a] = mirrors.scale[m][a] * mirrors.velocityScale[m][a];
+    }
+    f(image, imageVelocity, t, mirrors.scale[m], true);
+  }
+}
+
+template<bool Laminar>
+void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const Constants& k)
+{
+  forEachParticleByCell(grid, s, p.smoothingLength, threadCount(p),
+                        { s.vx.data(), s.vy.data(), s.vz.data(), s.density.data(), s.pressure.data() },
+                        [&](CandidateBuffer& c, std::uint32_t i)
+                        {
+                          const float position[3] = { s.x[i], s.y[i], s.z[i] };
+                          const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
+                          float a[3] = { p.gravity[0], p.gravity[1], p.gravity[2] };
+                          withImages(position, velocity, p,
+                                     [&](const float* q, const float* v, const float* t, const float* scale, bool)
+                                     {
+                                       const Sums g = forceTerms<Laminar>(c, q, v, s.density[i], s.pressure[i], t, k);
+                                       for (int d = 0; d < 3; ++d)
+                                       {
+                                         a[d] += scale[d] * g.a[d];
+                                       }
+                                     });
+                          s.ax[i] = a[0];
+                          s.ay[i] = a[1];
+                          s.az[i] = a[2];
+                        });
+}
+} // namespace
+
+double DeltaSPHSolver::automaticSoundSpeed(const SPHParameters& p, const ParticleState& s)
+{
+  if (p.soundSpeed > 0.0f)
+  {
+    return p.soundSpeed;
+  }
+  const double g = std::sqrt(static_cast<double>(p.gravity[0]) * p.gravity[0] +
+                             static_cast<double>(p.gravity[1]) * p.gravity[1] +
+                             static_cast<double>(p.gravity[2]) * p.gravity[2]);
+  double lowest = 0.0, highest = 0.0, fastest = 0.0;
+  bool first = true;
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    // Height along gravity (any direction), and the fastest initial speed.
+    const double along = g > 0.0 ? -(s.x[i] * p.gravity[0] + s.y[i] * p.gravity[1] + s.z[i] * p.gravity[2]) / g : 0.0;
+    lowest = first ? along : std::min(lowest, along);
+    highest = first ? along : std::max(highest, along);
+    first = false;
+    fastest = std::max(fastest, std::sqrt(static_cast<double>(s.vx[i]) * s.vx[i] +
+                                          static_cast<double>(s.vy[i]) * s.vy[i] +
+                                          static_cast<double>(s.vz[i]) * s.vz[i]));
+  }
+  // The column's height counts its top layer of particles too (half a kernel radius).
+  const double height = highest - lowest + 0.5 * p.smoothingLength;
+  const double speed = std::max(std::sqrt(2.0 * g * height), fastest);
+  return 10.0 * std::max(speed, 0.1); // at least 1 m/s, for a scene at rest without gravity
+}
+
+void DeltaSPHSolver::start(SPHSolver& sim)
+{
+  ParticleState& s = sim.State;
+  this->SoundSpeed = automaticSoundSpeed(sim.Parameters, s);
+  // Continuity density starts at rest density: the fluid settles into its hydrostatic compression
+  // in the first acoustic periods (c0 / height of a few per second... hundreds of steps).
+  std::fill(s.density.begin(), s.density.end(), sim.Parameters.restDensity);
+  this->DensityRate.assign(s.size(), 0.0f);
+  this->updatePressure(sim);
+  this->computeAccelerations(sim);
+}
+
+void DeltaSPHSolver::permute(SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
+                             int threads)
+{
+  // Density is state here (it is integrated, not summed), so it moves with its particle.
+  ParticleState& s = sim.State;
+  for (auto* a : { &s.density, &this->DensityRate })
+  {
+    if (a->size() == s.size())
+    {
+      detail::permute(*a, scratch, order, threads);
+    }
+  }
+}
+
+void DeltaSPHSolver::updatePressure(SPHSolver& sim)
+{
+  ParticleState& s = sim.State;
+  const float rho0 = sim.Parameters.restDensity;
+  const auto b = static_cast<float>(this->SoundSpeed * this->SoundSpeed * rho0 / kGamma);
+  const float inverseRho0 = 1.0f / rho0;
+  const auto n = static_cast<std::int64_t>(s.size());
+#pragma omp parallel for simd schedule(static) num_threads(threadCount(sim.Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    const float ratio = s.density[i] * inverseRho0;
+    const float r2 = ratio * ratio;
+    s.pressure[i] = b * (r2 * r2 * r2 * ratio - 1.0f);
+  }
+}
+
+namespace
+{
+Constants constants(const SPHParameters& p, double soundSpeed, float spacing)
+{
+  const WendlandC2Kernel w(p.smoothingLength);
+  return Constants{ w.h2,
+                    0.5f * p.smoothingLength,
+                    0.01f * 0.25f * w.h2,
+                    p.particleMass,
+                    static_cast<float>(soundSpeed),
+                    p.artificialViscosity,
+                    p.densityDiffusion,
+                    10.0f * p.kinematicViscosity,
+                    p.restDensity,
+                    static_cast<float>(1.0 / (soundSpeed * soundSpeed)),
+                    { p.gravity[0], p.gravity[1], p.gravity[2] },
+                    1.0f / w.value(std::min(spacing, 0.99f * p.smoothingLength)),
+                    w,
+                    latticeGradientCorrection(spacing, p.smoothingLength, DensityKernel::WendlandC2) };
+}
+} // namespace
+
+void DeltaSPHSolver::computeAccelerations(SPHSolver& sim)
+{
+  const Constants k = constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing);
+  if (sim.Parameters.kinematicViscosity > 0.0f)
+  {
+    forcePass<true>(sim.Grid, sim.State, sim.Parameters, k);
+  }
+  else
+  {
+    forcePass<false>(sim.Grid, sim.State, sim.Parameters, k);
+  }
+  sim.addSurfaceTension();
+}
+
+void DeltaSPHSolver::advanceDensity(SPHSolver& sim, float dt)
+{
+  ParticleState& s = sim.State;
+  const SPHParameters& p = sim.Parameters;
+  const Constants k = constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing);
+  this->DensityRate.resize(s.size());
+  forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p),
+                        { s.vx.data(), s.vy.data(), s.vz.data(), s.density.data() },
+                        [&](CandidateBuffer& c, std::uint32_t i)
+                        {
+                          const float position[3] = { s.x[i], s.y[i], s.z[i] };
+                          const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
+                          float rate = 0.0f;
+                          withImages(position, velocity, p,
+                                     [&](const float* q, const float* v, const float*, const float*, bool image)
+                                     { rate += densityRate(c, q, v, s.density[i], !image, k); });
+                          this->DensityRate[i] = rate;
+                        });
+  // Written after the pass: the pass reads every neighbour's density of this step.
+  const auto n = static_cast<std::int64_t>(s.size());
+  float* rho = s.density.data();
+  const float* rate = this->DensityRate.data();
+#pragma omp parallel for simd schedule(static) num_threads(threadCount(p))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    rho[i] += dt * rate[i];
+  }
+}
+
+double DeltaSPHSolver::step(SPHSolver& sim, double remaining)
+{
+  // Störmer-Verlet with density as a position-like variable: velocity at the half step moves the
+  // particles and then changes the density, and the new density gives the forces of the second
+  // half-kick. Density and velocity are never updated from each other's old values at once (that
+  // forward-Euler coupling of the acoustic oscillation grows without bound).
+  const double dt = sim.chooseTimeStep(remaining);
+  const auto h = static_cast<float>(dt);
+  sim.kick(0.5f * h);
+  sim.drift(h);
+  sim.sortByCell();
+  this->advanceDensity(sim, h);
+  this->updatePressure(sim);
+  this->computeAccelerations(sim);
+  sim.kick(0.5f * h);
+  sim.applyWallFriction(h);
+  sim.Last.timeStep = dt;
+  sim.Time += dt;
+  return dt;
+}
+} // namespace parafluid::sph

@@ -1,0 +1,46 @@
+#pragma once
+// δ-SPH, a modern weakly compressible scheme (Antuono, Colagrossi & Marrone 2012; as in
+// DualSPHysics, Domínguez et al. 2022):
+//  - density from the continuity equation, D rho_i / D t = sum_j m v_ij . grad W_ij, so a free
+//    surface has no density deficit and needs no pressure clamp;
+//  - density diffusion (Molteni & Colagrossi 2009) with the hydrostatic part removed (Fourtakas
+//    et al. 2019), so a resting column stays hydrostatic instead of diffusing towards uniform
+//    density;
+//  - Tait's equation of state p = B ((rho / rho0)^7 - 1), B = c0^2 rho0 / 7;
+//  - the momentum-conserving pressure gradient -sum_j m (p_i / rho_i^2 + p_j / rho_j^2) grad W_ij;
+//  - Monaghan's (1992) artificial viscosity with a small alpha as the only numerical viscosity, and
+//    the fluid's physical viscosity (the laminar term of SPHParameters::kinematicViscosity);
+//  - negative pressure kept, with Monaghan's (2000) tensile correction against particle pairing;
+//  - the Wendland C2 kernel, and a kick-drift-kick leapfrog in which density moves with position.
+#include "parafluid/common/ParticleState.h"
+#include "parafluid/sph/PressureSolver.h"
+
+namespace parafluid::sph
+{
+class DeltaSPHSolver final : public PressureSolver
+{
+public:
+  void start(SPHSolver& sim) override;
+  double step(SPHSolver& sim, double remaining) override;
+  double signalSpeed(const SPHParameters&) const override { return this->SoundSpeed; }
+  void permute(SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
+               int threads) override;
+  std::size_t bytes() const override { return this->DensityRate.capacity() * sizeof(float); }
+
+  /// c0 [m/s]: SPHParameters::soundSpeed, or when that is 0, ten times the free-fall speed over the
+  /// fluid's height along gravity (Monaghan 1994: density then varies by about 1 %), at least ten
+  /// times the fastest initial speed.
+  static double automaticSoundSpeed(const SPHParameters& p, const ParticleState& s);
+
+private:
+  /// Pressure from density by the equation of state.
+  void updatePressure(SPHSolver& sim);
+  /// Accelerations into State.a*: pressure, viscosities, gravity, surface tension.
+  void computeAccelerations(SPHSolver& sim);
+  /// rho += dt D rho / D t, with the rate from the current positions and velocities.
+  void advanceDensity(SPHSolver& sim, float dt);
+
+  std::vector<float> DensityRate;
+  double SoundSpeed = 0.0;
+};
+} // namespace parafluid::sph
