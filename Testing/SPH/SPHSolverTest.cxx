@@ -22,6 +22,7 @@ constexpr float kSpacing = 0.02f; // [m]
 SPHParameters waterParameters()
 {
   SPHParameters p;
+  p.pressureSolver = PressureSolverType::WCSPH; // Müller's seed method, with its paper's viscosity
   p.smoothingLength = 2.0f * kSpacing;
   p.restDensity = 1000.0f;
   p.gasStiffness = 1000.0f;

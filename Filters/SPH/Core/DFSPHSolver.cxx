@@ -351,6 +351,7 @@ double DFSPHSolver::step(SPHSolver& sim, double remaining)
   const double dt = sim.chooseTimeStep(remaining);
   const auto h = static_cast<float>(dt);
   sim.kick(h);
+  sim.Last.viscosityIterations = this->solveViscosity(sim, h);
   sim.applyWallFriction(h);
   sim.Last.densityIterations = this->solveDensity(sim, h);
   sim.drift(h);

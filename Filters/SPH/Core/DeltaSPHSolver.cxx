@@ -94,7 +94,9 @@ Sums forceTerms(CandidateBuffer& c, const float q[3], const float vq[3], float r
     const float inverseRhoJ = 1.0f / rho[j];
     const float termJ = pressure[j] * inverseRhoJ * inverseRhoJ;
     const float tensileJ = pressure[j] < 0.0f ? -kTensileCoefficient * termJ : 0.0f;
-    const float f = w.value * k.inverseWSpacing;
+    // Capped at 1: Wendland C2 at h = 2 spacings is so peaked that W(0) / W(spacing) = 5.3, and
+    // the uncapped f^4 (800) blows a stretched pair apart instead of holding it at a spacing.
+    const float f = std::min(w.value * k.inverseWSpacing, 1.0f);
     const float f2 = f * f;
     const float inverseR2 = 1.0f / (rr + k.eta2);
     // Monaghan's viscosity acts on approaching pairs only.

@@ -132,8 +132,10 @@ PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float 
 }
 
 template<bool Pressure, bool Viscosity, bool Tension>
-void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const float* inverseDensity)
+void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const float* inverseDensity,
+                      float gradientCorrection)
 {
+  const float gradientCorrectionInverse = 1.0f / gradientCorrection;
   const SpikyKernel spiky(p.smoothingLength);
   const ViscosityKernel viscous(p.smoothingLength);
   const Poly6Kernel poly6(p.smoothingLength);
@@ -146,7 +148,9 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
   // dW/dr = -3 c (h - r)^2, so the pair term is +3 c m (p_i + p_j)/(rho_i rho_j) (h - r)^2 r_ij / r.
   // Müller's paper halves this ((p_i + p_j) / 2): for a linear pressure field that sum returns
   // half the gradient, so the seed method held water up with twice the hydrostatic pressure.
-  k.pressureScale = 3.0f * spiky.coefficient * p.particleMass;
+  // Divided by the lattice correction: the spiky gradient of a linear field on the rest lattice
+  // (h = 2 spacings) is 0.93 times the field's gradient.
+  k.pressureScale = 3.0f * spiky.coefficient * p.particleMass / gradientCorrectionInverse;
   // a_i(viscosity) = mu / rho_i sum_j m (v_j - v_i) / rho_j lap W, lap W = lc (h - r).
   k.viscosityScale = p.viscosity * p.particleMass * viscous.laplacianCoefficient;
   // a_i(laminar) = 2 (d + 2) nu sum_j m / rho_j (v_ij . x_ij) / (r^2 + 0.01 (h/2)^2) grad W_ij;
@@ -219,7 +223,7 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
     });
 }
 
-using Pass = void (*)(const NeighbourGrid&, ParticleState&, const SPHParameters&, const float*);
+using Pass = void (*)(const NeighbourGrid&, ParticleState&, const SPHParameters&, const float*, float);
 template<bool Pressure>
 Pass choosePass(bool viscosity, bool tension)
 {
@@ -261,7 +265,7 @@ void SPHSolver::computeAccelerations(bool withPressure)
     inverseDensity[i] = 1.0f / s.density[i]; // density > 0: every particle counts itself
   }
   const Pass pass = withPressure ? choosePass<true>(viscosity, tension) : choosePass<false>(viscosity, tension);
-  pass(this->Grid, s, p, inverseDensity);
+  pass(this->Grid, s, p, inverseDensity, latticeSpikyGradientCorrection(this->ParticleSpacing, p.smoothingLength));
   this->addSurfaceTension();
 }
 } // namespace parafluid::sph

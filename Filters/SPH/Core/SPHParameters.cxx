@@ -227,6 +227,36 @@ float latticeSpacingForMass(float particleMass, float smoothingLength, float res
   return 0.5f * (lo + hi);
 }
 
+float latticeSpikyGradientCorrection(float spacing, float smoothingLength)
+{
+  if (!positiveFinite(spacing) || !positiveFinite(smoothingLength) || smoothingLength / spacing > 50.0f)
+  {
+    return 1.0f;
+  }
+  // V from the poly6 density of the lattice (what Müller's WCSPH measures), the moment from spiky.
+  const double volume = latticeParticleMass(spacing, smoothingLength, 1.0f, DensityKernel::Poly6);
+  const SpikyKernel spiky(smoothingLength);
+  const int reach = static_cast<int>(std::ceil(smoothingLength / spacing));
+  double moment = 0.0;
+  for (int k = -reach; k <= reach; ++k)
+  {
+    for (int j = -reach; j <= reach; ++j)
+    {
+      for (int i = -reach; i <= reach; ++i)
+      {
+        const double r = std::sqrt(double(i) * i + double(j) * j + double(k) * k) * spacing;
+        if (r > 0.0)
+        {
+          const double dz = double(k) * spacing;
+          moment -= spiky.radialDerivative(static_cast<float>(r)) / r * dz * dz;
+        }
+      }
+    }
+  }
+  const double c = volume * moment;
+  return c > 0.0 ? static_cast<float>(1.0 / c) : 1.0f;
+}
+
 float latticeGradientCorrection(float spacing, float smoothingLength, DensityKernel kernel)
 {
   if (!positiveFinite(spacing) || !positiveFinite(smoothingLength) || smoothingLength / spacing > 50.0f)

@@ -220,6 +220,12 @@ double SPHSolver::proposedTimeStep() const
     // neighbourhood: about 15 / h^2, up to twice that beside a wall's mirror images. Kept at 0.75.
     dt = std::min(dt, h * h * p.restDensity / (40.0 * p.viscosity));
   }
+  if (p.kinematicViscosity > 0.0f && p.pressureSolver != PressureSolverType::DFSPH)
+  {
+    // The explicit laminar term: nu dt / (h/2)^2 <= 0.125 (Morris et al. 1997). DFSPH solves it
+    // implicitly and has no such limit.
+    dt = std::min(dt, 0.03 * h * h / p.kinematicViscosity);
+  }
   const double a = this->maxAcceleration();
   if (a > 0.0) // a particle may not move more than ~h/16 from its acceleration alone
   {
@@ -299,6 +305,13 @@ std::string SPHSolver::stabilityAdvice() const
   {
     return p.adaptiveTimeStep ? "lower CFLNumber or MaxTimeStep, or raise MaxPressureIterations"
                               : "lower TimeStep or turn on AdaptiveTimeStep, or raise MaxPressureIterations";
+  }
+  if (p.pressureSolver == PressureSolverType::DeltaSPH)
+  {
+    return p.adaptiveTimeStep ? "lower CFLNumber or MaxTimeStep, or raise SoundSpeed (a stiffer, less compressible "
+                                "fluid) or ArtificialViscosity"
+                              : "lower TimeStep or turn on AdaptiveTimeStep (the step must stay below the CFL limit of "
+                                "the speed of sound SoundSpeed)";
   }
   return p.adaptiveTimeStep ? "lower CFLNumber or MaxTimeStep, or raise GasStiffness (a stiffer, less compressible "
                               "fluid) or Viscosity"

@@ -2,7 +2,8 @@
 // Divergence-free SPH (Bender & Koschier, "Divergence-Free Smoothed Particle Hydrodynamics",
 // SCA 2015 / TVCG 2017): cubic-spline kernel, a density solve before the position update and a
 // divergence solve after it, both Jacobi iterations on per-particle stiffnesses warm-started from
-// the last step.
+// the last step. The fluid's viscosity is solved implicitly before the density solve (Weiler et
+// al. 2018), so it does not limit the step.
 #include "parafluid/sph/PressureSolver.h"
 
 namespace parafluid::sph
@@ -24,6 +25,9 @@ private:
   int solveDivergence(SPHSolver& sim, float dt);
   /// Sum over neighbours j of m (v_i - v_j) . grad W_ij into DensityRate (D rho / D t).
   void computeDensityRate(SPHSolver& sim);
+  /// Replaces the predicted velocities by the implicit viscous solve (ImplicitViscosity.cxx);
+  /// returns the conjugate-gradient iterations.
+  int solveViscosity(SPHSolver& sim, float dt);
   /// v_i -= dt sum_j m (k_i + k_j) grad W_ij with k = Stiffness.
   void applyPressureImpulse(SPHSolver& sim, float dt);
 

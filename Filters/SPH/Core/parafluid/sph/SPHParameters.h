@@ -155,4 +155,7 @@ float latticeSpacingForMass(float particleMass, float smoothingLength, float res
 /// 1.02 for the cubic spline at h = 2 spacings. Scaling pressure forces by it makes the discrete
 /// gradient of a linear pressure (hydrostatics) exact on the rest lattice.
 float latticeGradientCorrection(float spacing, float smoothingLength, DensityKernel kernel);
+
+/// The same for Müller's pressure force: the spiky gradient with volumes from the poly6 density.
+float latticeSpikyGradientCorrection(float spacing, float smoothingLength);
 } // namespace parafluid::sph

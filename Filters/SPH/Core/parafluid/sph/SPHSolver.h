@@ -60,6 +60,7 @@ public:
     double timeStep = 0.0;
     int densityIterations = 0;    // DFSPH only
     int divergenceIterations = 0; // DFSPH only
+    int viscosityIterations = 0;  // DFSPH only: conjugate-gradient iterations of the implicit viscosity
     /// Mean over all particles of max(rho - rho0, 0) / rho0 after the step (measured, not predicted).
     double meanCompression = 0.0;
     /// Largest density over rho0 after the step.
