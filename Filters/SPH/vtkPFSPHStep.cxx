@@ -54,8 +54,23 @@ vtkPFSPHStep::vtkPFSPHStep()
 
 void vtkPFSPHStep::SetPressureSolver(int solver)
 {
-  const int clamped = std::clamp(solver, 0, 1);
+  const int clamped = std::clamp(solver, 0, 2);
   this->SetParameter(this->Parameters.pressureSolver, static_cast<PressureSolverType>(clamped));
+}
+
+void vtkPFSPHStep::SetSurfaceTensionModel(int model)
+{
+  const int clamped = std::clamp(model, 0, 1);
+  this->SetParameter(this->Parameters.surfaceTensionModel, static_cast<parafluid::sph::SurfaceTensionModel>(clamped));
+}
+
+void vtkPFSPHStep::SetPeriodicAxes(int x, int y, int z)
+{
+  const int axes[3] = { x, y, z };
+  for (int a = 0; a < 3; ++a)
+  {
+    this->SetParameter(this->Parameters.periodic[a], axes[a] != 0);
+  }
 }
 
 void vtkPFSPHStep::SetWallFriction(int friction)

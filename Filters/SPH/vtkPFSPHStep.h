@@ -60,6 +60,26 @@ public:
   /// Surface tension sigma [N/m] (colour-field model); 0 skips the colour-field pass.
   void SetSurfaceTension(double value) { this->SetParameter(this->Parameters.surfaceTension, value); }
   double GetSurfaceTension() const { return this->Parameters.surfaceTension; }
+
+  /// 0: Müller's colour field, 1: Akinci et al. 2013 (the default).
+  void SetSurfaceTensionModel(int model);
+  int GetSurfaceTensionModel() const { return static_cast<int>(this->Parameters.surfaceTensionModel); }
+
+  /// The fluid's kinematic viscosity nu [m^2/s] (water: 1e-6), every solver.
+  void SetKinematicViscosity(double value) { this->SetParameter(this->Parameters.kinematicViscosity, value); }
+  double GetKinematicViscosity() const { return this->Parameters.kinematicViscosity; }
+
+  /// δ-SPH: Monaghan's artificial viscosity alpha, the density diffusion delta, the speed of sound
+  /// c0 [m/s] (0: automatic).
+  void SetArtificialViscosity(double value) { this->SetParameter(this->Parameters.artificialViscosity, value); }
+  double GetArtificialViscosity() const { return this->Parameters.artificialViscosity; }
+  void SetDensityDiffusion(double value) { this->SetParameter(this->Parameters.densityDiffusion, value); }
+  double GetDensityDiffusion() const { return this->Parameters.densityDiffusion; }
+  void SetSoundSpeed(double value) { this->SetParameter(this->Parameters.soundSpeed, value); }
+  double GetSoundSpeed() const { return this->Parameters.soundSpeed; }
+
+  /// Periodic axes x, y, z (0 or 1): the pair of box faces of that axis wrap around.
+  void SetPeriodicAxes(int x, int y, int z);
   /// Choose each step from the CFL, viscous and force conditions (else use TimeStep).
   void SetAdaptiveTimeStep(bool value) { this->SetParameter(this->Parameters.adaptiveTimeStep, value); }
   bool GetAdaptiveTimeStep() const { return this->Parameters.adaptiveTimeStep; }

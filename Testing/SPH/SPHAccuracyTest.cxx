@@ -203,6 +203,7 @@ TEST(SurfaceTension, PullsCornersInwardAndLeavesTheInteriorAlone)
   SPHParameters p = water();
   p.gravity = { 0, 0, 0 };
   p.viscosity = 0.0f;
+  p.surfaceTensionModel = SurfaceTensionModel::ColourField;
   p.domainBounds = { -10, 10, -10, 10, -10, 10 };
   const ParticleState cube = block({ 0, 0.2, 0, 0.2, 0, 0.2 });
   SPHSolver plain(p, cube);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace parafluid::sph
 {
@@ -224,7 +225,13 @@ double DeltaSPHSolver::automaticSoundSpeed(const SPHParameters& p, const Particl
   }
   // The column's height counts its top layer of particles too (half a kernel radius).
   const double height = highest - lowest + 0.5 * p.smoothingLength;
-  const double speed = std::max(std::sqrt(2.0 * g * height), fastest);
+  double speed = std::max(std::sqrt(2.0 * g * height), fastest);
+  if (p.surfaceTension > 0.0f)
+  {
+    // Cohesion holds the fluid under a pressure of about 10 sigma / h (Akinci's force at water's
+    // 0.0728 N/m and h = 1 mm: 800 Pa); the sound speed keeps that pressure's compression at ~1 %.
+    speed = std::max(speed, std::sqrt(10.0 * p.surfaceTension / (p.restDensity * p.smoothingLength)));
+  }
   return 10.0 * std::max(speed, 0.1); // at least 1 m/s, for a scene at rest without gravity
 }
 
@@ -232,12 +239,67 @@ void DeltaSPHSolver::start(SPHSolver& sim)
 {
   ParticleState& s = sim.State;
   this->SoundSpeed = automaticSoundSpeed(sim.Parameters, s);
-  // Continuity density starts at rest density: the fluid settles into its hydrostatic compression
-  // in the first acoustic periods (c0 / height of a few per second... hundreds of steps).
-  std::fill(s.density.begin(), s.density.end(), sim.Parameters.restDensity);
+  // Density is state here: a given one (a prepared initial condition) is kept; otherwise the
+  // fluid starts in hydrostatic equilibrium, so a resting column does not ring acoustically.
+  const bool given = !s.density.empty() && std::all_of(s.density.begin(), s.density.end(),
+                                                       [](float rho) { return std::isfinite(rho) && rho > 0.0f; });
+  if (!given)
+  {
+    this->startHydrostatic(sim);
+  }
   this->DensityRate.assign(s.size(), 0.0f);
   this->updatePressure(sim);
   this->computeAccelerations(sim);
+}
+
+void DeltaSPHSolver::startHydrostatic(SPHSolver& sim)
+{
+  ParticleState& s = sim.State;
+  const SPHParameters& p = sim.Parameters;
+  std::fill(s.density.begin(), s.density.end(), p.restDensity);
+  // Gravity along one axis only (the usual case); otherwise rest density, which settles acoustically.
+  int down = -1;
+  for (int a = 0; a < 3; ++a)
+  {
+    const int b = (a + 1) % 3, c = (a + 2) % 3;
+    if (p.gravity[a] != 0.0f && p.gravity[b] == 0.0f && p.gravity[c] == 0.0f)
+    {
+      down = a;
+    }
+  }
+  if (down < 0 || s.size() == 0 || p.periodic[down])
+  {
+    return; // no gravity, gravity off an axis, or along a periodic axis (a body force without a top)
+  }
+  // Depth of each particle below the top of its column (columns one spacing wide across gravity),
+  // plus half a spacing: the free surface lies half a spacing above the top particle.
+  const int b = (down + 1) % 3, c = (down + 2) % 3;
+  const float* position[3] = { s.x.data(), s.y.data(), s.z.data() };
+  const float sign = p.gravity[down] < 0.0f ? 1.0f : -1.0f; // height grows against gravity
+  const float d = sim.ParticleSpacing;
+  std::unordered_map<std::int64_t, float> top;
+  auto key = [&](std::size_t i)
+  {
+    const auto u = static_cast<std::int64_t>(std::floor(position[b][i] / d));
+    const auto v = static_cast<std::int64_t>(std::floor(position[c][i] / d));
+    return u * 2000003LL + v;
+  };
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    const float height = sign * position[down][i];
+    auto [it, inserted] = top.emplace(key(i), height);
+    if (!inserted)
+    {
+      it->second = std::max(it->second, height);
+    }
+  }
+  const double g = std::fabs(p.gravity[down]);
+  const double bulk = this->SoundSpeed * this->SoundSpeed * p.restDensity / kGamma;
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    const double depth = top[key(i)] - sign * position[down][i] + 0.5 * d;
+    s.density[i] = static_cast<float>(p.restDensity * std::pow(1.0 + p.restDensity * g * depth / bulk, 1.0 / kGamma));
+  }
 }
 
 void DeltaSPHSolver::permute(SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
@@ -282,10 +344,13 @@ Constants constants(const SPHParameters& p, double soundSpeed, float spacing)
                     static_cast<float>(soundSpeed),
                     p.artificialViscosity,
                     p.densityDiffusion,
-                    10.0f * p.kinematicViscosity,
+                    10.0f * p.kinematicViscosity *
+                      latticeLaplacianCorrection(spacing, p.smoothingLength, DensityKernel::WendlandC2),
                     p.restDensity,
                     static_cast<float>(1.0 / (soundSpeed * soundSpeed)),
-                    { p.gravity[0], p.gravity[1], p.gravity[2] },
+                    // Gravity along a periodic axis drives a flow and builds no hydrostatic pressure.
+                    { p.periodic[0] ? 0.0f : p.gravity[0], p.periodic[1] ? 0.0f : p.gravity[1],
+                      p.periodic[2] ? 0.0f : p.gravity[2] },
                     1.0f / w.value(std::min(spacing, 0.99f * p.smoothingLength)),
                     w,
                     latticeGradientCorrection(spacing, p.smoothingLength, DensityKernel::WendlandC2) };

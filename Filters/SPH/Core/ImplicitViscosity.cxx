@@ -37,6 +37,7 @@ struct ViscousOperator
   ParticleState* state = nullptr;
   const SPHParameters* p = nullptr;
   float dt = 0.0f;
+  float laplacianCorrection = 1.0f; // see latticeLaplacianCorrection
   std::vector<float> volume; // V_i = m / rho_i
   std::vector<float> diagonal;
   std::size_t n = 0;
@@ -47,7 +48,7 @@ struct ViscousOperator
   {
     const CubicSplineKernel w(p->smoothingLength);
     const float eta2 = 0.01f * 0.25f * w.h2;
-    const float nu10 = 10.0f * p->kinematicViscosity;
+    const float nu10 = 10.0f * p->kinematicViscosity * laplacianCorrection;
     forEachParticleByCell(
       *grid, *state, p->smoothingLength, threadCount(*p), { x, x + n, x + 2 * n, volume.data() },
       [&](CandidateBuffer& c, std::uint32_t i)
@@ -317,6 +318,7 @@ int DFSPHSolver::solveViscosity(SPHSolver& sim, float dt)
   op.p = &p;
   op.dt = dt;
   op.n = n;
+  op.laplacianCorrection = latticeLaplacianCorrection(sim.ParticleSpacing, p.smoothingLength, DensityKernel::CubicSpline);
   op.volume.resize(n);
   for (std::size_t i = 0; i < n; ++i)
   {

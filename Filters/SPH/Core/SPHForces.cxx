@@ -133,7 +133,7 @@ PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float 
 
 template<bool Pressure, bool Viscosity, bool Tension>
 void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const float* inverseDensity,
-                      float gradientCorrection)
+                      float gradientCorrection, float laplacianCorrection)
 {
   const float gradientCorrectionInverse = 1.0f / gradientCorrection;
   const SpikyKernel spiky(p.smoothingLength);
@@ -156,8 +156,9 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
   // a_i(laminar) = 2 (d + 2) nu sum_j m / rho_j (v_ij . x_ij) / (r^2 + 0.01 (h/2)^2) grad W_ij;
   // explicit here (Müller's WCSPH); DFSPH solves it implicitly (ImplicitViscosity.cxx).
   // The pass divides every sum by rho_i, so the term carries mu = rho0 nu (Morris et al. 1997).
-  k.laminarScale =
-    Pressure ? -3.0f * spiky.coefficient * 10.0f * p.kinematicViscosity * p.restDensity * p.particleMass : 0.0f;
+  k.laminarScale = Pressure ? -3.0f * spiky.coefficient * 10.0f * p.kinematicViscosity * p.restDensity *
+                                p.particleMass * laplacianCorrection
+                            : 0.0f;
   k.eta2 = 0.01f * 0.25f * k.h2;
   // Colour field c = sum_j m / rho_j W_poly6: grad W = -6 c (h² - r²)² r_ij, lap W = -6 c (h² - r²)(3h² - 7r²).
   const float colourScale = -6.0f * poly6.coefficient * p.particleMass;
@@ -223,7 +224,7 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
     });
 }
 
-using Pass = void (*)(const NeighbourGrid&, ParticleState&, const SPHParameters&, const float*, float);
+using Pass = void (*)(const NeighbourGrid&, ParticleState&, const SPHParameters&, const float*, float, float);
 template<bool Pressure>
 Pass choosePass(bool viscosity, bool tension)
 {
@@ -265,7 +266,8 @@ void SPHSolver::computeAccelerations(bool withPressure)
     inverseDensity[i] = 1.0f / s.density[i]; // density > 0: every particle counts itself
   }
   const Pass pass = withPressure ? choosePass<true>(viscosity, tension) : choosePass<false>(viscosity, tension);
-  pass(this->Grid, s, p, inverseDensity, latticeSpikyGradientCorrection(this->ParticleSpacing, p.smoothingLength));
+  pass(this->Grid, s, p, inverseDensity, latticeSpikyGradientCorrection(this->ParticleSpacing, p.smoothingLength),
+       latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, DensityKernel::Poly6, true));
   this->addSurfaceTension();
 }
 } // namespace parafluid::sph

@@ -257,6 +257,42 @@ float latticeSpikyGradientCorrection(float spacing, float smoothingLength)
   return c > 0.0 ? static_cast<float>(1.0 / c) : 1.0f;
 }
 
+float latticeLaplacianCorrection(float spacing, float smoothingLength, DensityKernel kernel, bool spikyGradient)
+{
+  if (!positiveFinite(spacing) || !positiveFinite(smoothingLength) || smoothingLength / spacing > 50.0f)
+  {
+    return 1.0f;
+  }
+  // The operator 10 sum_j V (v_ij . x_ij) / (r^2 + eta^2) grad W_ij applied to the shear flow
+  // v = (z^2 / 2, 0, 0), whose Laplacian is (1, 0, 0), at a particle at the origin of the lattice.
+  const double volume = latticeParticleMass(spacing, smoothingLength, 1.0f, kernel);
+  const AnyKernel w(kernel, smoothingLength);
+  const SpikyKernel spiky(smoothingLength);
+  const double eta2 = 0.01 * 0.25 * double(smoothingLength) * smoothingLength;
+  const int reach = static_cast<int>(std::ceil(smoothingLength / spacing));
+  double laplacian = 0.0;
+  for (int k = -reach; k <= reach; ++k)
+  {
+    for (int j = -reach; j <= reach; ++j)
+    {
+      for (int i = -reach; i <= reach; ++i)
+      {
+        const double r = std::sqrt(double(i) * i + double(j) * j + double(k) * k) * spacing;
+        if (r <= 0.0)
+        {
+          continue;
+        }
+        const auto rf = static_cast<float>(r);
+        const double gradient = (spikyGradient ? spiky.radialDerivative(rf) : w.derivative(rf)) / r;
+        const double dx = -double(i) * spacing, dz = -double(k) * spacing; // x_i - x_j
+        const double relative = -0.5 * dz * dz;                            // v_i - v_j (x component)
+        laplacian += 10.0 * volume * relative * dx / (r * r + eta2) * gradient * dx;
+      }
+    }
+  }
+  return laplacian > 0.0 ? static_cast<float>(1.0 / laplacian) : 1.0f;
+}
+
 float latticeGradientCorrection(float spacing, float smoothingLength, DensityKernel kernel)
 {
   if (!positiveFinite(spacing) || !positiveFinite(smoothingLength) || smoothingLength / spacing > 50.0f)

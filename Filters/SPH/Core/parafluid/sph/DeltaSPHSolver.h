@@ -29,10 +29,12 @@ public:
 
   /// c0 [m/s]: SPHParameters::soundSpeed, or when that is 0, ten times the free-fall speed over the
   /// fluid's height along gravity (Monaghan 1994: density then varies by about 1 %), at least ten
-  /// times the fastest initial speed.
+  /// times the fastest initial speed and (with surface tension) the speed of its cohesive pressure.
   static double automaticSoundSpeed(const SPHParameters& p, const ParticleState& s);
 
 private:
+  /// Density of hydrostatic equilibrium under gravity along an axis (rest density otherwise).
+  void startHydrostatic(SPHSolver& sim);
   /// Pressure from density by the equation of state.
   void updatePressure(SPHSolver& sim);
   /// Accelerations into State.a*: pressure, viscosities, gravity, surface tension.

@@ -19,7 +19,7 @@ enum class PressureSolverType
 enum class SurfaceTensionModel
 {
   ColourField, // Müller et al. 2003: sigma times the colour field's curvature at the surface
-  Akinci       // Akinci, Akinci & Teschner 2013: cohesion between pairs plus curvature from normals
+  Akinci       // Akinci, Akinci & Teschner 2013: cohesion between pairs (SurfaceTension.cxx)
 };
 
 /// How DFSPH's implicit viscosity system is solved (both matrix-free, Jacobi-preconditioned
@@ -155,6 +155,13 @@ float latticeSpacingForMass(float particleMass, float smoothingLength, float res
 /// 1.02 for the cubic spline at h = 2 spacings. Scaling pressure forces by it makes the discrete
 /// gradient of a linear pressure (hydrostatics) exact on the rest lattice.
 float latticeGradientCorrection(float spacing, float smoothingLength, DensityKernel kernel);
+
+/// 1 / C, where C is what the viscous operator 2 (d + 2) sum_j V (v_ij . x_ij) / (r^2 + eta^2)
+/// grad W_ij (Monaghan 2005) returns for a shear flow of unit Laplacian on the rest lattice: the
+/// operator is consistent in the continuum but, with the few neighbours of h = 2 spacings, 0.7 to
+/// 0.9 of the Laplacian; scaling the viscous term by it makes a resolved shear flow decay at the
+/// fluid's viscosity. spikyGradient: the gradient of Müller's spiky kernel (with poly6 volumes).
+float latticeLaplacianCorrection(float spacing, float smoothingLength, DensityKernel kernel, bool spikyGradient = false);
 
 /// The same for Müller's pressure force: the spiky gradient with volumes from the poly6 density.
 float latticeSpikyGradientCorrection(float spacing, float smoothingLength);

@@ -109,8 +109,8 @@ private:
   /// Viscosity, surface tension, gravity and (when withPressure) the equation-of-state pressure
   /// into State.a*; each pass is compiled in only when its coefficient is non-zero (SPHForces.cxx).
   void computeAccelerations(bool withPressure);
-  /// Adds Akinci et al.'s (2013) surface tension to State.a* (SurfaceTension.cxx), when sigma > 0
-  /// and that model is chosen.
+  /// Adds Akinci et al.'s (2013) cohesion to State.a* (SurfaceTension.cxx), when sigma > 0 and
+  /// that model is chosen.
   void addSurfaceTension();
 
   // The pressure solvers advance the simulation through its shared parts (grid, walls, forces,
@@ -127,7 +127,6 @@ private:
   std::vector<std::int64_t> ScratchId;
   std::vector<std::uint32_t> ScratchIndex;
   std::vector<float> InverseDensity;
-  std::vector<float> Normal; // Akinci's surface normals, 3 per particle (SurfaceTension.cxx)
   std::vector<float> PressureImpulse; // sum of p dt over the steps of advance() [Pa s]
   float ParticleSpacing = 0.0f;       // [m] edge of the cube a particle fills at rest density
   std::int64_t Steps = 0;

@@ -1,0 +1,113 @@
+#pragma once
+// Validation scenes of the SPH solvers: each runs one flow with a known answer (an analytic
+// solution or a published experiment) and returns its error, run time and size. Shared by the
+// ParaFluidSPHValidation program (full resolutions, CSV) and the ctest short versions.
+// Nothing here is tuned to the data it is judged against: every scene uses the solver's defaults
+// (water: rho0 1000 kg/m^3, nu 1e-6 m^2/s) unless the flow itself sets a parameter (the Reynolds
+// number of an analytic flow).
+#include "parafluid/common/ParticleState.h"
+#include "parafluid/sph/SPHParameters.h"
+
+#include <array>
+#include <ostream>
+#include <string>
+
+namespace parafluid::validation
+{
+constexpr float kGravity = 9.81f; // [m/s^2]
+constexpr float kRho0 = 1000.0f;  // [kg/m^3]
+
+const char* solverName(sph::PressureSolverType solver);
+
+/// Water of the given solver at h = 2 spacings in `domain`. Müller's WCSPH (the seed method) keeps
+/// its paper's 3.5 Pa s, without which it rings; the others have water's viscosity only.
+sph::SPHParameters water(sph::PressureSolverType solver, float spacing, const std::array<float, 6>& domain);
+
+ParticleState lattice(const std::array<double, 6>& box, double spacing);
+
+struct RunCost
+{
+  long long particles = 0, steps = 0;
+  double seconds = 0.0; // wall-clock
+};
+
+/// A column 0.2 m wide and high, `across` particles wide (a slab 4 particles thick between
+/// free-slip walls), settled 0.4 s, then each particle's output pressure averaged over 0.2 s
+/// against rho0 g depth. profile: rows solver,across,z,pressure,reference.
+struct Hydrostatic
+{
+  RunCost cost;
+  double error = 0.0;       // relative L2 over particles
+  double compression = 0.0; // mean (rho - rho0) / rho0
+};
+Hydrostatic hydrostatic(sph::PressureSolverType solver, int across, std::ostream* profile = nullptr);
+
+/// A tank 0.5 m deep (and as long) left at rest for `duration` seconds.
+struct StillWater
+{
+  RunCost cost;
+  double largestSpeed = 0.0; // over the last second, relative to sqrt(g H)
+  double pressureError = 0.0; // relative L2 of the output pressure against rho0 g depth at the end
+  double closestToWall = 0.0; // smallest distance of a particle to a wall, in spacings
+  double highestDrift = 0.0;  // largest displacement of a particle from its start, in spacings
+};
+StillWater stillWater(sph::PressureSolverType solver, int across, double duration);
+
+/// Martin & Moyce (1952): a column a = 2.25 in wide and 2a high released in a tank 6a long; the
+/// surge front Z = x/a against T = t sqrt(2 g / a), compared up to T = 3, and the residual
+/// column height at the left wall h / 2a against tau = t sqrt(g / a). curves: rows
+/// solver,across,T,Z,height.
+struct DamBreak
+{
+  RunCost cost;
+  double frontMeanError = 0.0, frontMaxError = 0.0;   // relative to the experiment
+  double heightMeanError = 0.0, heightMaxError = 0.0; // relative to the experiment
+  double meanCompression = 0.0;
+};
+DamBreak martinMoyce(sph::PressureSolverType solver, int across, std::ostream* curves = nullptr);
+
+/// Lobovsky et al. (2014), H = 300 mm: a column 600 mm long and 300 mm high in a tank 1610 mm
+/// long; the pressure on the downstream wall at 3 mm above the floor (sensor 1) against
+/// t sqrt(g / H); `across` particles over the column's height. curves: rows solver,across,t*,p*.
+struct Lobovsky
+{
+  RunCost cost;
+  double peakTime = 0.0, peakPressure = 0.0; // first peak, t sqrt(g/H) and p / (rho0 g H)
+  double peakTimeError = 0.0, peakPressureError = 0.0; // relative to the experiment's first peak
+  double frontError = 0.0; // the time the front reaches the wall, relative to the experiment's
+};
+Lobovsky lobovsky(sph::PressureSolverType solver, int across, std::ostream* curves = nullptr);
+
+/// Taylor-Green vortex at Re = U L / nu = 100 in a periodic square of side L = 1 m (a periodic slab
+/// three smoothing lengths thick): kinetic energy against exp(-16 pi^2 nu t / L^2) over one decay
+/// time. curves: rows solver,across,t,energy_ratio,exact.
+struct TaylorGreen
+{
+  RunCost cost;
+  double decayError = 0.0; // largest relative error of E(t)/E(0) over one decay time
+};
+TaylorGreen taylorGreen(sph::PressureSolverType solver, int across, std::ostream* curves = nullptr);
+
+/// Poiseuille flow between no-slip plates H = 0.1 m apart (periodic along the flow), driven by a
+/// body force, nu = 0.01 m^2/s (Re = 0.1); the layer-averaged velocity after t = H^2 / nu against
+/// the parabola. curves: rows solver,across,z,u,exact.
+struct Poiseuille
+{
+  RunCost cost;
+  double profileError = 0.0; // largest |u - exact| over the layers, relative to the peak velocity
+  int viscosityIterations = 0; // DFSPH: mean CG iterations per step
+};
+Poiseuille poiseuille(sph::PressureSolverType solver, int across, std::ostream* curves = nullptr);
+
+/// The first sloshing mode of a tank L = 1 m long with water h = 0.5 m deep, started with the
+/// velocity field of the linear standing wave of amplitude 5 mm; its frequency from the
+/// horizontal centre of mass against omega^2 = g k tanh(k h), k = pi / L. curves: rows
+/// solver,across,t,x_centre.
+struct StandingWave
+{
+  RunCost cost;
+  double frequency = 0.0, exact = 0.0;
+  double frequencyError = 0.0; // relative
+};
+StandingWave standingWave(sph::PressureSolverType solver, int across, std::ostream* curves = nullptr);
+} // namespace parafluid::validation

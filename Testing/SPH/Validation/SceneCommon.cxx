@@ -1,0 +1,40 @@
+#include "SPHScenes.h"
+
+#include "parafluid/common/ParticleLattice.h"
+
+namespace parafluid::validation
+{
+using sph::PressureSolverType;
+
+const char* solverName(PressureSolverType solver)
+{
+  switch (solver)
+  {
+    case PressureSolverType::DFSPH:
+      return "DFSPH";
+    case PressureSolverType::DeltaSPH:
+      return "DeltaSPH";
+    default:
+      return "WCSPH";
+  }
+}
+
+sph::SPHParameters water(PressureSolverType solver, float spacing, const std::array<float, 6>& domain)
+{
+  sph::SPHParameters p;
+  p.pressureSolver = solver;
+  p.smoothingLength = 2.0f * spacing;
+  p.restDensity = kRho0;
+  p.viscosity = solver == PressureSolverType::WCSPH ? 3.5f : 0.0f;
+  p.gravity = { 0.0f, 0.0f, -kGravity };
+  p.domainBounds = domain;
+  p.particleMass = sph::latticeParticleMass(spacing, p.smoothingLength, kRho0, p.densityKernel());
+  return p;
+}
+
+ParticleState lattice(const std::array<double, 6>& box, double spacing)
+{
+  auto l = fillBoxWithLattice(box, spacing);
+  return ParticleState::atRest(std::move(l.x), std::move(l.y), std::move(l.z));
+}
+} // namespace parafluid::validation
