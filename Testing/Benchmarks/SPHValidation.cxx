@@ -191,8 +191,17 @@ int main(int argc, char** argv)
     {
       for (int across : resolutions.empty() ? scene.resolutions : resolutions)
       {
-        const std::string row = scene.run(solver, across, curves);
-        summary << solverName(solver) << "," << across << "," << row << std::endl;
+        try
+        {
+          const std::string row = scene.run(solver, across, curves);
+          summary << solverName(solver) << "," << across << "," << row << std::endl;
+        }
+        catch (const std::exception& e)
+        {
+          // A run that blows up is a result too: recorded, and the others go on.
+          std::printf("%-12s %-8s %3d: stopped: %s\n", name.c_str(), solverName(solver), across, e.what());
+          summary << solverName(solver) << "," << across << ",stopped" << std::endl;
+        }
         std::fflush(stdout);
       }
     }

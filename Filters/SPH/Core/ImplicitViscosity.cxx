@@ -152,7 +152,8 @@ double dot(const std::vector<float>& a, const std::vector<float>& b, int threads
   return sum;
 }
 
-/// Jacobi-preconditioned CG on plain arrays; x holds the start and returns the solution.
+/// Jacobi-preconditioned CG on plain arrays until |r| <= tolerance |b|; x holds the start and
+/// returns the solution.
 int handWrittenCG(const ViscousOperator& op, const std::vector<float>& b, std::vector<float>& x, float tolerance,
                   int maxIterations, int threads)
 {
@@ -325,15 +326,21 @@ int DFSPHSolver::solveViscosity(SPHSolver& sim, float dt)
     op.volume[i] = p.particleMass / s.density[i];
   }
   op.computeDiagonal();
-  // Right-hand side V v*, and v* as the start (the solution differs from it by dt A v).
-  std::vector<float> b(3 * n), x(3 * n);
+  // Solved for the change of velocity dv = v - v*: M dv = V v* - M v*, from dv = 0, so that the
+  // tolerance is relative to what viscosity changes in this step (relative to V v* itself, a small
+  // viscous change would already count as converged before the first iteration).
+  std::vector<float> current(3 * n), product(3 * n), b(3 * n), x(3 * n, 0.0f);
   const float* v[3] = { s.vx.data(), s.vy.data(), s.vz.data() };
+  for (int a = 0; a < 3; ++a)
+  {
+    std::copy(v[a], v[a] + n, current.begin() + static_cast<std::ptrdiff_t>(a * n));
+  }
+  op.apply(current.data(), product.data());
   for (int a = 0; a < 3; ++a)
   {
     for (std::size_t i = 0; i < n; ++i)
     {
-      x[a * n + i] = v[a][i];
-      b[a * n + i] = op.volume[i] * v[a][i];
+      b[a * n + i] = op.volume[i] * v[a][i] - product[a * n + i];
     }
   }
   int iterations = 0;
@@ -359,7 +366,7 @@ int DFSPHSolver::solveViscosity(SPHSolver& sim, float dt)
     float* target = a == 0 ? s.vx.data() : a == 1 ? s.vy.data() : s.vz.data();
     for (std::size_t i = 0; i < n; ++i)
     {
-      target[i] = x[a * n + i];
+      target[i] += x[a * n + i];
     }
   }
   return iterations;

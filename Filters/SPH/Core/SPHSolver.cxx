@@ -222,9 +222,13 @@ double SPHSolver::proposedTimeStep() const
   }
   if (p.kinematicViscosity > 0.0f && p.pressureSolver != PressureSolverType::DFSPH)
   {
-    // The explicit laminar term: nu dt / (h/2)^2 <= 0.125 (Morris et al. 1997). DFSPH solves it
-    // implicitly and has no such limit.
-    dt = std::min(dt, 0.03 * h * h / p.kinematicViscosity);
+    // The explicit laminar term: nu dt / (h/2)^2 <= 0.125 (Morris et al. 1997), with nu scaled by
+    // the operator's lattice correction and halved again beside no-slip walls, whose images double
+    // the term. DFSPH solves it implicitly and has no such limit.
+    const bool spiky = p.pressureSolver == PressureSolverType::WCSPH;
+    const double correction = latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength,
+                                                         spiky ? DensityKernel::Poly6 : p.densityKernel(), spiky);
+    dt = std::min(dt, 0.015 * h * h / (p.kinematicViscosity * correction));
   }
   const double a = this->maxAcceleration();
   if (a > 0.0) // a particle may not move more than ~h/16 from its acceleration alone

@@ -118,7 +118,7 @@ Poiseuille poiseuille(PressureSolverType solver, int across, std::ostream* curve
 
 StandingWave standingWave(PressureSolverType solver, int across, std::ostream* curves)
 {
-  const float L = 1.0f, h = 0.5f, A = 0.005f;
+  const float L = 1.0f, h = 0.5f, A = 0.01f;
   const float d = h / static_cast<float>(across);
   const double k = kPi / L;
   const double omega = std::sqrt(kGravity * k * std::tanh(k * h));
@@ -146,22 +146,45 @@ StandingWave standingWave(PressureSolverType solver, int across, std::ostream* c
   };
   const SceneTimer timer;
   const double interval = 0.005, end = 2.5 * 2.0 * kPi / omega; // two and a half periods
-  std::vector<double> crossings;
-  double previous = centre(), previousTime = 0.0;
+  std::vector<double> times, centres;
   while (s.time() < end - 1e-12)
   {
     r.cost.steps += s.advance(interval);
-    const double c = centre();
+    times.push_back(s.time());
+    centres.push_back(centre());
     if (curves)
     {
-      *curves << solverName(solver) << "," << across << "," << s.time() << "," << c << "\n";
+      *curves << solverName(solver) << "," << across << "," << s.time() << "," << centres.back() << "\n";
     }
-    if ((previous < 0.0) != (c < 0.0) && previousTime > 0.0)
+  }
+  // Zero crossings with hysteresis: a crossing counts only after the signal went beyond a third of
+  // its amplitude on the other side, so particle-scale jitter around zero adds none.
+  double amplitude = 0.0;
+  for (double c : centres)
+  {
+    amplitude = std::max(amplitude, std::fabs(c));
+  }
+  std::vector<double> crossings;
+  int side = 0; // sign of the last excursion beyond the threshold
+  for (std::size_t k = 1; k < centres.size(); ++k)
+  {
+    const double c = centres[k];
+    if (std::fabs(c) > amplitude / 3.0)
     {
-      crossings.push_back(previousTime + (s.time() - previousTime) * previous / (previous - c));
+      const int now = c > 0.0 ? 1 : -1;
+      if (side != 0 && now != side)
+      {
+        // The last sign change before this point is the crossing.
+        std::size_t j = k;
+        while (j > 1 && (centres[j - 1] > 0.0) == (c > 0.0))
+        {
+          --j;
+        }
+        const double a = centres[j - 1], b = centres[j];
+        crossings.push_back(times[j - 1] + (times[j] - times[j - 1]) * a / (a - b));
+      }
+      side = now;
     }
-    previous = c;
-    previousTime = s.time();
   }
   r.cost.seconds = timer.seconds();
   // The centre of mass crosses its rest position twice a period (x_c ~ sin(omega t)).

@@ -100,7 +100,7 @@ struct Poiseuille
 Poiseuille poiseuille(sph::PressureSolverType solver, int across, std::ostream* curves = nullptr);
 
 /// The first sloshing mode of a tank L = 1 m long with water h = 0.5 m deep, started with the
-/// velocity field of the linear standing wave of amplitude 5 mm; its frequency from the
+/// velocity field of the linear standing wave of amplitude 10 mm; its frequency from the
 /// horizontal centre of mass against omega^2 = g k tanh(k h), k = pi / L. curves: rows
 /// solver,across,t,x_centre.
 struct StandingWave
