@@ -1,6 +1,8 @@
-// Time of one WCSPH step on a dam break (water block 1 x 2 x 1 of its height against a wall of a
-// tank 4 wide), 10k and 100k particles, 1 and 2 threads. Reports particle-steps per second, the
-// neighbour count (the work per particle) and the solver's bytes per particle.
+// Time of one SPH step on a dam break (water block 1 x 2 x 1 of its height against a wall of a
+// tank 4 wide), 10k and 100k particles, 1 and 2 threads: Müller's WCSPH, and δ-SPH at h = 2 and 3
+// spacings. Reports particle-steps per second, the neighbour count (the work per particle) and
+// the solver's bytes per particle; then the implicit viscosity's two conjugate-gradient solvers,
+// and simulated seconds per second of the three solvers with adaptive steps.
 #include "parafluid/common/ParticleLattice.h"
 #include "parafluid/sph/SPHSolver.h"
 
@@ -15,7 +17,8 @@ using namespace parafluid;
 using namespace parafluid::sph;
 
 SPHSolver damBreak(std::size_t particles, int threads, PressureSolverType solverKind = PressureSolverType::WCSPH,
-                   float surfaceTension = 0.0f, bool adaptive = false)
+                   float surfaceTension = 0.0f, bool adaptive = false, double kernelRatio = 2.0,
+                   float kinematicViscosity = 1e-6f, ViscositySolver cg = ViscositySolver::HandWrittenCG)
 {
   // Block of a x 2a x a (x, z, y) layers of spacing d: particles = 2 a^3 / d^3.
   const double a = 0.5;
@@ -24,8 +27,14 @@ SPHSolver damBreak(std::size_t particles, int threads, PressureSolverType solver
   p.pressureSolver = solverKind;
   p.surfaceTension = surfaceTension;
   p.adaptiveTimeStep = adaptive;
-  p.smoothingLength = static_cast<float>(2.0 * d);
-  p.timeStep = static_cast<float>(0.2 * p.smoothingLength / 31.6); // CFL 0.2 at c = sqrt(k)
+  p.smoothingLength = static_cast<float>(kernelRatio * d);
+  // Müller's seed method with its paper's viscosity; the others at water's.
+  p.viscosity = solverKind == PressureSolverType::WCSPH ? 3.5f : 0.0f;
+  p.kinematicViscosity = kinematicViscosity;
+  p.viscositySolver = cg;
+  // Fixed steps at CFL 0.2 of each scheme's sound speed (sqrt(k) = 31.6 m/s for Müller's, c0 =
+  // 10 sqrt(2 g 1 m) = 44 m/s for δ-SPH).
+  p.timeStep = static_cast<float>(0.2 * p.smoothingLength / (solverKind == PressureSolverType::DeltaSPH ? 44.3 : 31.6));
   p.particleMass = latticeParticleMass(static_cast<float>(d), p.smoothingLength, p.restDensity, p.densityKernel());
   p.domainBounds = { 0.f, static_cast<float>(4 * a), 0.f, static_cast<float>(a), 0.f, static_cast<float>(3 * a) };
   p.threads = threads;
@@ -59,7 +68,11 @@ double meanNeighbours(const SPHSolver& solver)
 
 void BM_SPHStep(benchmark::State& state)
 {
-  SPHSolver solver = damBreak(static_cast<std::size_t>(state.range(0)), static_cast<int>(state.range(1)));
+  // solver 0: Müller's WCSPH; 2: δ-SPH at h = 2 spacings; 3: δ-SPH at h = 3 spacings.
+  const bool delta = state.range(2) >= 2;
+  SPHSolver solver = damBreak(static_cast<std::size_t>(state.range(0)), static_cast<int>(state.range(1)),
+                              delta ? PressureSolverType::DeltaSPH : PressureSolverType::WCSPH, 0.0f, false,
+                              state.range(2) == 3 ? 3.0 : 2.0);
   for (auto _ : state)
   {
     solver.step();
@@ -72,11 +85,13 @@ void BM_SPHStep(benchmark::State& state)
   state.counters["bytes_per_particle"] = solver.bytesPerParticle();
 }
 BENCHMARK(BM_SPHStep)
-  ->ArgNames({ "particles", "threads" })
-  ->Args({ 10'000, 1 })
-  ->Args({ 10'000, 2 })
-  ->Args({ 100'000, 1 })
-  ->Args({ 100'000, 2 })
+  ->ArgNames({ "particles", "threads", "solver" })
+  ->Args({ 10'000, 1, 0 })
+  ->Args({ 10'000, 2, 0 })
+  ->Args({ 100'000, 1, 0 })
+  ->Args({ 100'000, 2, 0 })
+  ->Args({ 100'000, 2, 2 })
+  ->Args({ 100'000, 2, 3 })
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime()
   ->MinTime(2.0);
@@ -101,11 +116,39 @@ BENCHMARK(BM_SPHStepWithSurfaceTension)
   ->UseRealTime()
   ->MinTime(2.0);
 
-/// Simulated time per wall-clock time: both solvers with adaptive steps advance the same 0.01 s
+/// DFSPH's implicit viscosity step, the hand-written conjugate gradients against Eigen's, at a
+/// viscosity that needs iterations (nu = 1e-2 m^2/s, honey) and at water's.
+void BM_ImplicitViscosity(benchmark::State& state)
+{
+  const auto cg = state.range(1) ? ViscositySolver::EigenCG : ViscositySolver::HandWrittenCG;
+  const float nu = state.range(2) ? 1e-2f : 1e-6f;
+  SPHSolver solver =
+    damBreak(static_cast<std::size_t>(state.range(0)), 2, PressureSolverType::DFSPH, 0.0f, false, 2.0, nu, cg);
+  long long iterations = 0;
+  for (auto _ : state)
+  {
+    solver.step();
+    iterations += solver.lastStep().viscosityIterations;
+  }
+  state.counters["cg_iterations"] = static_cast<double>(iterations) / static_cast<double>(state.iterations());
+  state.counters["particle_steps_per_s"] = benchmark::Counter(
+    static_cast<double>(solver.state().size()) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ImplicitViscosity)
+  ->ArgNames({ "particles", "eigen", "honey" })
+  ->Args({ 100'000, 0, 1 })
+  ->Args({ 100'000, 1, 1 })
+  ->Args({ 100'000, 0, 0 })
+  ->Args({ 100'000, 1, 0 })
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime()
+  ->MinTime(2.0);
+
+/// Simulated time per wall-clock time: the solvers with adaptive steps advance the same 0.01 s
 /// output interval of a dam break (DFSPH takes fewer, dearer steps).
 void BM_AdvanceOutputInterval(benchmark::State& state)
 {
-  const auto kind = state.range(1) ? PressureSolverType::DFSPH : PressureSolverType::WCSPH;
+  const auto kind = static_cast<PressureSolverType>(state.range(1));
   SPHSolver solver = damBreak(static_cast<std::size_t>(state.range(0)), 2, kind, 0.0f, true);
   std::int64_t steps = 0;
   for (auto _ : state)
@@ -118,9 +161,10 @@ void BM_AdvanceOutputInterval(benchmark::State& state)
   state.counters["mean_density_error"] = solver.lastStep().meanCompression;
 }
 BENCHMARK(BM_AdvanceOutputInterval)
-  ->ArgNames({ "particles", "dfsph" })
+  ->ArgNames({ "particles", "solver" })
   ->Args({ 50'000, 0 })
   ->Args({ 50'000, 1 })
+  ->Args({ 50'000, 2 })
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime()
   ->Iterations(5);

@@ -7,7 +7,7 @@
 // given as first argument; plot_validation.py draws them.
 // Usage: ParaFluidSPHValidation <output-directory> [--scene all|hydrostatic|stillwater|dambreak|
 //        lobovsky|taylorgreen|poiseuille|standingwave] [--solver WCSPH|DFSPH|DeltaSPH]
-//        [--resolutions 10,20,40] [--threads n]
+//        [--resolutions 10,20,40] [--kernel-ratio r] (h / spacing of the chosen solvers)
 #include "SPHScenes.h"
 
 #include <cstdio>
@@ -27,7 +27,8 @@ namespace
 {
 const char* const kUsage =
   "usage: ParaFluidSPHValidation <output-directory> [--scene all|hydrostatic|stillwater|dambreak|lobovsky|\n"
-  "         taylorgreen|poiseuille|standingwave] [--solver WCSPH|DFSPH|DeltaSPH] [--resolutions 10,20,40]\n";
+  "         taylorgreen|poiseuille|standingwave] [--solver WCSPH|DFSPH|DeltaSPH] [--resolutions 10,20,40]\n"
+  "         [--kernel-ratio r]\n";
 
 /// One scene: its default resolutions, its CSV header, and a run that prints and returns a CSV row.
 struct Scene
@@ -45,7 +46,8 @@ std::string cost(const RunCost& c)
 std::map<std::string, Scene> scenes()
 {
   std::map<std::string, Scene> all;
-  all["hydrostatic"] = { { 10, 20, 40 }, "relative_l2_error,mean_compression",
+  all["hydrostatic"] = { { 10, 20, 40 },
+                         "relative_l2_error,mean_compression",
                          [](PressureSolverType s, int n, std::ostream& curves)
                          {
                            const Hydrostatic r = hydrostatic(s, n, &curves);
@@ -53,33 +55,36 @@ std::map<std::string, Scene> scenes()
                                        solverName(s), n, r.cost.particles, r.cost.steps, r.cost.seconds, r.error);
                            return cost(r.cost) + "," + std::to_string(r.error) + "," + std::to_string(r.compression);
                          } };
-  all["stillwater"] = { { 10, 20, 40 }, "largest_speed_over_sqrt_gH,pressure_l2_error,closest_to_wall_spacings,"
-                                        "largest_drift_spacings",
+  all["stillwater"] = { { 10, 20, 40 },
+                        "largest_speed_over_sqrt_gH,pressure_l2_error,closest_to_wall_spacings,"
+                        "largest_drift_spacings",
                         [](PressureSolverType s, int n, std::ostream&)
                         {
                           const StillWater r = stillWater(s, n, 10.0);
                           std::printf("still water  %-8s %3d: %7lld particles %7lld steps %8.1f s  speed %.2e sqrt(gH) "
                                       "pressure error %.4f closest to a wall %.2f d drift %.3f d\n",
-                                      solverName(s), n, r.cost.particles, r.cost.steps, r.cost.seconds,
-                                      r.largestSpeed, r.pressureError, r.closestToWall, r.highestDrift);
+                                      solverName(s), n, r.cost.particles, r.cost.steps, r.cost.seconds, r.largestSpeed,
+                                      r.pressureError, r.closestToWall, r.highestDrift);
                           return cost(r.cost) + "," + std::to_string(r.largestSpeed) + "," +
                                  std::to_string(r.pressureError) + "," + std::to_string(r.closestToWall) + "," +
                                  std::to_string(r.highestDrift);
                         } };
-  all["dambreak"] = { { 10, 20, 40 }, "front_mean_error,front_max_error,height_mean_error,height_max_error,"
-                                      "mean_compression",
+  all["dambreak"] = { { 10, 20, 40 },
+                      "front_mean_error,front_max_error,height_mean_error,height_max_error,"
+                      "mean_compression",
                       [](PressureSolverType s, int n, std::ostream& curves)
                       {
                         const DamBreak r = martinMoyce(s, n, &curves);
                         std::printf("dam break    %-8s %3d: %7lld particles %7lld steps %8.1f s  front error mean %.3f "
                                     "max %.3f  height error mean %.3f max %.3f\n",
-                                    solverName(s), n, r.cost.particles, r.cost.steps, r.cost.seconds,
-                                    r.frontMeanError, r.frontMaxError, r.heightMeanError, r.heightMaxError);
+                                    solverName(s), n, r.cost.particles, r.cost.steps, r.cost.seconds, r.frontMeanError,
+                                    r.frontMaxError, r.heightMeanError, r.heightMaxError);
                         return cost(r.cost) + "," + std::to_string(r.frontMeanError) + "," +
                                std::to_string(r.frontMaxError) + "," + std::to_string(r.heightMeanError) + "," +
                                std::to_string(r.heightMaxError) + "," + std::to_string(r.meanCompression);
                       } };
-  all["lobovsky"] = { { 20, 40, 80 }, "peak_time,peak_pressure,peak_time_error,peak_pressure_error,arrival_error",
+  all["lobovsky"] = { { 20, 40, 80 },
+                      "peak_time,peak_pressure,peak_time_error,peak_pressure_error,arrival_error",
                       [](PressureSolverType s, int n, std::ostream& curves)
                       {
                         const Lobovsky r = lobovsky(s, n, &curves);
@@ -87,31 +92,33 @@ std::map<std::string, Scene> scenes()
                                     "%.3f (errors %.3f, %.3f) arrival error %.3f\n",
                                     solverName(s), n, r.cost.particles, r.cost.steps, r.cost.seconds, r.peakPressure,
                                     r.peakTime, r.peakPressureError, r.peakTimeError, r.frontError);
-                        return cost(r.cost) + "," + std::to_string(r.peakTime) + "," +
-                               std::to_string(r.peakPressure) + "," + std::to_string(r.peakTimeError) + "," +
-                               std::to_string(r.peakPressureError) + "," + std::to_string(r.frontError);
+                        return cost(r.cost) + "," + std::to_string(r.peakTime) + "," + std::to_string(r.peakPressure) +
+                               "," + std::to_string(r.peakTimeError) + "," + std::to_string(r.peakPressureError) + "," +
+                               std::to_string(r.frontError);
                       } };
-  all["taylorgreen"] = { { 25, 50, 100 }, "energy_decay_error",
+  all["taylorgreen"] = { { 25, 50, 100 },
+                         "energy_decay_error",
                          [](PressureSolverType s, int n, std::ostream& curves)
                          {
                            const TaylorGreen r = taylorGreen(s, n, &curves);
                            std::printf("Taylor-Green %-8s %3d: %7lld particles %7lld steps %8.1f s  decay error %.4f\n",
-                                       solverName(s), n, r.cost.particles, r.cost.steps, r.cost.seconds,
-                                       r.decayError);
+                                       solverName(s), n, r.cost.particles, r.cost.steps, r.cost.seconds, r.decayError);
                            return cost(r.cost) + "," + std::to_string(r.decayError);
                          } };
-  all["poiseuille"] = { { 10, 20, 40 }, "profile_error,viscosity_iterations",
+  all["poiseuille"] = { { 10, 20, 40 },
+                        "profile_error,viscosity_iterations",
                         [](PressureSolverType s, int n, std::ostream& curves)
                         {
                           const Poiseuille r = poiseuille(s, n, &curves);
                           std::printf("Poiseuille   %-8s %3d: %7lld particles %7lld steps %8.1f s  profile error %.4f "
                                       "(CG iterations %d)\n",
-                                      solverName(s), n, r.cost.particles, r.cost.steps, r.cost.seconds,
-                                      r.profileError, r.viscosityIterations);
+                                      solverName(s), n, r.cost.particles, r.cost.steps, r.cost.seconds, r.profileError,
+                                      r.viscosityIterations);
                           return cost(r.cost) + "," + std::to_string(r.profileError) + "," +
                                  std::to_string(r.viscosityIterations);
                         } };
-  all["standingwave"] = { { 10, 20, 40 }, "frequency,exact,frequency_error",
+  all["standingwave"] = { { 10, 20, 40 },
+                          "frequency,exact,frequency_error",
                           [](PressureSolverType s, int n, std::ostream& curves)
                           {
                             const StandingWave r = standingWave(s, n, &curves);
@@ -138,10 +145,15 @@ int main(int argc, char** argv)
   std::vector<PressureSolverType> solvers = { PressureSolverType::WCSPH, PressureSolverType::DFSPH,
                                               PressureSolverType::DeltaSPH };
   std::vector<int> resolutions;
+  float ratio = 0.0f;
   for (int k = 2; k < argc; ++k)
   {
     const std::string option = argv[k];
-    if (option == "--scene" && k + 1 < argc)
+    if (option == "--kernel-ratio" && k + 1 < argc)
+    {
+      ratio = std::stof(argv[++k]);
+    }
+    else if (option == "--scene" && k + 1 < argc)
     {
       chosen = argv[++k];
     }
@@ -153,7 +165,7 @@ int main(int argc, char** argv)
         std::cerr << "--solver takes WCSPH, DFSPH or DeltaSPH\n";
         return 2;
       }
-      solvers = { v == "DFSPH" ? PressureSolverType::DFSPH
+      solvers = { v == "DFSPH"      ? PressureSolverType::DFSPH
                   : v == "DeltaSPH" ? PressureSolverType::DeltaSPH
                                     : PressureSolverType::WCSPH };
     }
@@ -172,6 +184,13 @@ int main(int argc, char** argv)
       return 2;
     }
   }
+  if (ratio > 0.0f)
+  {
+    for (PressureSolverType solver : solvers)
+    {
+      setKernelRatio(solver, ratio);
+    }
+  }
   const auto all = scenes();
   if (chosen != "all" && all.count(chosen) == 0)
   {
@@ -187,9 +206,11 @@ int main(int argc, char** argv)
     std::ofstream summary(dir + "/" + name + ".csv");
     std::ofstream curves(dir + "/" + name + "_curves.csv");
     summary << "solver,particles_across,particles,steps,wall_s," << scene.header << "\n";
-    for (PressureSolverType solver : solvers)
+    // Coarse to fine, every solver at each resolution before the next: a run cut short by a time
+    // limit still compares the solvers.
+    for (int across : resolutions.empty() ? scene.resolutions : resolutions)
     {
-      for (int across : resolutions.empty() ? scene.resolutions : resolutions)
+      for (PressureSolverType solver : solvers)
       {
         try
         {

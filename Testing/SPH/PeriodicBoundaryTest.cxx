@@ -66,7 +66,8 @@ TEST(PeriodicBoundary, EveryParticleOfAPeriodicLatticeHasTheSameDensityAndNoForc
 {
   // Without walls or edges every particle has a full neighbourhood: the density is uniform and
   // the net force zero, for each solver (walls or a missing wrap would show at the faces).
-  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
+  for (PressureSolverType solver :
+       { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
   {
     SPHParameters p = periodicBox(solver);
     SPHSolver s(p, fill(p.domainBounds));

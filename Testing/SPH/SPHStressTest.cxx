@@ -171,7 +171,8 @@ ParticleState smallBlock()
 
 TEST(SPHStress, HundredTimesTooLargeFixedStepStopsWithAClearError)
 {
-  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
+  for (PressureSolverType solver :
+       { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
   {
     SPHParameters p = water(solver);
     p.adaptiveTimeStep = false;
@@ -230,7 +231,8 @@ TEST(SPHStress, DFSPHRefusesKernelsWiderThanItsSolveConvergesFor)
 
 TEST(SPHStress, ZeroViscositySkipsThePassAndStaysBounded)
 {
-  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
+  for (PressureSolverType solver :
+       { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
   {
     SPHParameters p = water(solver);
     p.viscosity = 0.0f;
@@ -249,7 +251,8 @@ TEST(SPHStress, WallFrictionAtExtremesOnlyTakesEnergyAndNeverBlowsUp)
   // The small block (10 x 5 x 15 particles) collapses onto walls that stick: no-slip under a
   // viscosity of 200 Pa s, and the law of the wall for a fluid a million times more viscous than
   // water. Friction only takes energy out, whatever its strength.
-  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
+  for (PressureSolverType solver :
+       { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
   {
     const char* name = solverName(solver);
     for (WallFriction friction : { WallFriction::FreeSlip, WallFriction::NoSlip, WallFriction::LogLaw })
@@ -284,7 +287,8 @@ TEST(SPHStress, WallFrictionAtExtremesOnlyTakesEnergyAndNeverBlowsUp)
 
 TEST(SPHStress, ParticlesOnTopOfEachOtherAreRefusedByName)
 {
-  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
+  for (PressureSolverType solver :
+       { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
   {
     ParticleState s = smallBlock();
     for (std::size_t i = 1; i < s.size(); i += 2) // every other particle onto its neighbour
@@ -303,7 +307,8 @@ TEST(SPHStress, ParticlesOnTopOfEachOtherAreRefusedByName)
 
 TEST(SPHStress, ASingleParticleFallsFreelyAndZeroParticlesAreFine)
 {
-  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
+  for (PressureSolverType solver :
+       { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
   {
     SPHParameters p = water(solver);
     SPHSolver one(p, ParticleState::atRest({ 0.3f }, { 0.05f }, { 0.35f }));
@@ -325,7 +330,8 @@ TEST(SPHStress, FastButPhysicalRunsAreNotMistakenForBlowUps)
 {
   // A block thrown at 5 m/s stays under the scene's speed limit (10 x (free fall + 5 m/s) + 1),
   // and its density stays near rest: the plausibility checks leave it alone.
-  for (PressureSolverType solver : { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
+  for (PressureSolverType solver :
+       { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
   {
     ParticleState s = smallBlock();
     std::fill(s.vx.begin(), s.vx.end(), 5.0f);

@@ -67,8 +67,8 @@ void NeighbourGrid::build(const float* x, const float* y, const float* z, std::s
     if (this->Periodic[a] && extent < 3.0)
     {
       throw std::invalid_argument("neighbour grid: a periodic axis must be at least 3 cells long (axis " +
-                                  std::to_string(a) + ": period " + std::to_string(this->PeriodLength[a]) +
-                                  ", cell " + std::to_string(cellSize) + ")");
+                                  std::to_string(a) + ": period " + std::to_string(this->PeriodLength[a]) + ", cell " +
+                                  std::to_string(cellSize) + ")");
     }
     cells *= extent;
     this->Dims[a] = extent > 2e9 ? std::numeric_limits<int>::max() : static_cast<int>(extent);

@@ -33,9 +33,9 @@ enum Channel
 
 struct Constants
 {
-  float h2;        // support radius squared
-  float hSmooth;   // the smoothing length of the δ-SPH literature, half the support radius
-  float eta2;      // 0.01 hSmooth^2: keeps 1 / r^2 finite
+  float h2;      // support radius squared
+  float hSmooth; // the smoothing length of the δ-SPH literature, half the support radius
+  float eta2;    // 0.01 hSmooth^2: keeps 1 / r^2 finite
   float mass;
   float c0, alpha, delta, nu10; // nu10 = 2 (d + 2) nu = 10 nu in 3-D
   float rho0, inverseC0Squared;
@@ -126,8 +126,7 @@ Sums forceTerms(CandidateBuffer& c, const float q[3], const float vq[3], float r
 /// particle's own, not that of the depth it is mirrored to) diffusion of the density's departure
 /// from hydrostatic (Fourtakas et al. 2019, linearised: rho_j^H - rho_i^H = rho0 g . (x_j - x_i) /
 /// c0^2 to first order in the compression, which stays about 1 % at c0 = 10 v_max).
-float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, bool diffuse,
-                  const Constants& k)
+float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, bool diffuse, const Constants& k)
 {
   const std::uint32_t count = c.findHits(q, k.h2);
   const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
@@ -207,9 +206,9 @@ double DeltaSPHSolver::automaticSoundSpeed(const SPHParameters& p, const Particl
   {
     return p.soundSpeed;
   }
-  const double g = std::sqrt(static_cast<double>(p.gravity[0]) * p.gravity[0] +
-                             static_cast<double>(p.gravity[1]) * p.gravity[1] +
-                             static_cast<double>(p.gravity[2]) * p.gravity[2]);
+  const double g =
+    std::sqrt(static_cast<double>(p.gravity[0]) * p.gravity[0] + static_cast<double>(p.gravity[1]) * p.gravity[1] +
+              static_cast<double>(p.gravity[2]) * p.gravity[2]);
   double lowest = 0.0, highest = 0.0, fastest = 0.0;
   bool first = true;
   for (std::size_t i = 0; i < s.size(); ++i)
@@ -219,9 +218,9 @@ double DeltaSPHSolver::automaticSoundSpeed(const SPHParameters& p, const Particl
     lowest = first ? along : std::min(lowest, along);
     highest = first ? along : std::max(highest, along);
     first = false;
-    fastest = std::max(fastest, std::sqrt(static_cast<double>(s.vx[i]) * s.vx[i] +
-                                          static_cast<double>(s.vy[i]) * s.vy[i] +
-                                          static_cast<double>(s.vz[i]) * s.vz[i]));
+    fastest =
+      std::max(fastest, std::sqrt(static_cast<double>(s.vx[i]) * s.vx[i] + static_cast<double>(s.vy[i]) * s.vy[i] +
+                                  static_cast<double>(s.vz[i]) * s.vz[i]));
   }
   // The column's height counts its top layer of particles too (half a kernel radius).
   const double height = highest - lowest + 0.5 * p.smoothingLength;
@@ -337,23 +336,23 @@ namespace
 Constants constants(const SPHParameters& p, double soundSpeed, float spacing)
 {
   const WendlandC2Kernel w(p.smoothingLength);
-  return Constants{ w.h2,
-                    0.5f * p.smoothingLength,
-                    0.01f * 0.25f * w.h2,
-                    p.particleMass,
-                    static_cast<float>(soundSpeed),
-                    p.artificialViscosity,
-                    p.densityDiffusion,
-                    10.0f * p.kinematicViscosity *
-                      latticeLaplacianCorrection(spacing, p.smoothingLength, DensityKernel::WendlandC2),
-                    p.restDensity,
-                    static_cast<float>(1.0 / (soundSpeed * soundSpeed)),
-                    // Gravity along a periodic axis drives a flow and builds no hydrostatic pressure.
-                    { p.periodic[0] ? 0.0f : p.gravity[0], p.periodic[1] ? 0.0f : p.gravity[1],
-                      p.periodic[2] ? 0.0f : p.gravity[2] },
-                    1.0f / w.value(std::min(spacing, 0.99f * p.smoothingLength)),
-                    w,
-                    latticeGradientCorrection(spacing, p.smoothingLength, DensityKernel::WendlandC2) };
+  return Constants{
+    w.h2,
+    0.5f * p.smoothingLength,
+    0.01f * 0.25f * w.h2,
+    p.particleMass,
+    static_cast<float>(soundSpeed),
+    p.artificialViscosity,
+    p.densityDiffusion,
+    10.0f * p.kinematicViscosity * latticeLaplacianCorrection(spacing, p.smoothingLength, DensityKernel::WendlandC2),
+    p.restDensity,
+    static_cast<float>(1.0 / (soundSpeed * soundSpeed)),
+    // Gravity along a periodic axis drives a flow and builds no hydrostatic pressure.
+    { p.periodic[0] ? 0.0f : p.gravity[0], p.periodic[1] ? 0.0f : p.gravity[1], p.periodic[2] ? 0.0f : p.gravity[2] },
+    1.0f / w.value(std::min(spacing, 0.99f * p.smoothingLength)),
+    w,
+    latticeGradientCorrection(spacing, p.smoothingLength, DensityKernel::WendlandC2)
+  };
 }
 } // namespace
 

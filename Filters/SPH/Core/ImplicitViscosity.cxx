@@ -38,7 +38,7 @@ struct ViscousOperator
   const SPHParameters* p = nullptr;
   float dt = 0.0f;
   float laplacianCorrection = 1.0f; // see latticeLaplacianCorrection
-  std::vector<float> volume; // V_i = m / rho_i
+  std::vector<float> volume;        // V_i = m / rho_i
   std::vector<float> diagonal;
   std::size_t n = 0;
 
@@ -76,7 +76,8 @@ struct ViscousOperator
             const float outer = -6.0f * w.coefficient * w.inverseH * d * d / std::max(r, 1e-30f);
             const float gradient = qr <= 0.5f ? inner : outer;
             const float coefficient = nu10 * vj[j] * gradient / (r2[j] + eta2);
-            const float approach = (vq[0] - t[0] * ux[j]) * dx + (vq[1] - t[1] * uy[j]) * dy + (vq[2] - t[2] * uz[j]) * dz;
+            const float approach =
+              (vq[0] - t[0] * ux[j]) * dx + (vq[1] - t[1] * uy[j]) * dy + (vq[2] - t[2] * uz[j]) * dz;
             sx += coefficient * approach * dx;
             sy += coefficient * approach * dy;
             sz += coefficient * approach * dz;
@@ -319,7 +320,8 @@ int DFSPHSolver::solveViscosity(SPHSolver& sim, float dt)
   op.p = &p;
   op.dt = dt;
   op.n = n;
-  op.laplacianCorrection = latticeLaplacianCorrection(sim.ParticleSpacing, p.smoothingLength, DensityKernel::CubicSpline);
+  op.laplacianCorrection =
+    latticeLaplacianCorrection(sim.ParticleSpacing, p.smoothingLength, DensityKernel::CubicSpline);
   op.volume.resize(n);
   for (std::size_t i = 0; i < n; ++i)
   {

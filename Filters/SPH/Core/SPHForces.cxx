@@ -85,8 +85,7 @@ PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float 
       if constexpr (Viscosity)
       {
         // The laminar term points along the pair, like pressure, and maps back like it.
-        const float approach =
-          t[0] * (v[0] - pvx[j]) * dx + t[1] * (v[1] - pvy[j]) * dy + t[2] * (v[2] - pvz[j]) * dz;
+        const float approach = t[0] * (v[0] - pvx[j]) * dx + t[1] * (v[1] - pvy[j]) * dy + t[2] * (v[2] - pvz[j]) * dz;
         const float laminar =
           k.laminarScale * pinv[j] * approach / (r2[j] + k.eta2) * w * w / std::max(dist, k.minDistance);
         fx += laminar * dx;

@@ -546,8 +546,7 @@ std::vector<float> SPHSolver::smoothedPressure() const
                                     weights += b;
                                   };
                                   accumulate(position);
-                                  const WallMirrors mirrors =
-                                    WallMirrors::around(position, p);
+                                  const WallMirrors mirrors = WallMirrors::around(position, p);
                                   for (int m = 0; m < mirrors.count; ++m)
                                   {
                                     float image[3];

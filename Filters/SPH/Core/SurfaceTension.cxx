@@ -71,32 +71,31 @@ void SPHSolver::addSurfaceTension()
   const auto gamma = static_cast<float>(8.0 * p.surfaceTension / (kPi * rho0 * rho0 * cohesionMoment(h)));
   const float* rho = s.density.data();
   // Forces between real particles only: an image across a wall is not fluid that pulls.
-  forEachParticleByCell(
-    this->Grid, s, h, threadCount(p), { s.density.data() },
-    [&](CandidateBuffer& c, std::uint32_t i)
-    {
-      const float q[3] = { s.x[i], s.y[i], s.z[i] };
-      const std::uint32_t count = c.findHits(q, h * h);
-      float a[3] = { 0.0f, 0.0f, 0.0f };
-      for (std::uint32_t k = 0; k < count; ++k)
-      {
-        const std::uint32_t j = c.hits[k];
-        const float r = std::sqrt(c.distanceSquared[j]);
-        if (r <= 0.0f)
-        {
-          continue;
-        }
-        const float weight = 2.0f * rho0 / (rho[i] + c.channel[0][j]);
-        const float pull = gamma * m * cohesion(r, h) / r;
-        for (int d = 0; d < 3; ++d)
-        {
-          const float x = q[d] - (d == 0 ? c.x[j] : d == 1 ? c.y[j] : c.z[j]);
-          a[d] -= weight * pull * x;
-        }
-      }
-      s.ax[i] += a[0];
-      s.ay[i] += a[1];
-      s.az[i] += a[2];
-    });
+  forEachParticleByCell(this->Grid, s, h, threadCount(p), { s.density.data() },
+                        [&](CandidateBuffer& c, std::uint32_t i)
+                        {
+                          const float q[3] = { s.x[i], s.y[i], s.z[i] };
+                          const std::uint32_t count = c.findHits(q, h * h);
+                          float a[3] = { 0.0f, 0.0f, 0.0f };
+                          for (std::uint32_t k = 0; k < count; ++k)
+                          {
+                            const std::uint32_t j = c.hits[k];
+                            const float r = std::sqrt(c.distanceSquared[j]);
+                            if (r <= 0.0f)
+                            {
+                              continue;
+                            }
+                            const float weight = 2.0f * rho0 / (rho[i] + c.channel[0][j]);
+                            const float pull = gamma * m * cohesion(r, h) / r;
+                            for (int d = 0; d < 3; ++d)
+                            {
+                              const float x = q[d] - (d == 0 ? c.x[j] : d == 1 ? c.y[j] : c.z[j]);
+                              a[d] -= weight * pull * x;
+                            }
+                          }
+                          s.ax[i] += a[0];
+                          s.ay[i] += a[1];
+                          s.az[i] += a[2];
+                        });
 }
 } // namespace parafluid::sph

@@ -98,8 +98,8 @@ DamBreak martinMoyce(PressureSolverType solver, int across, std::ostream* curves
     {
       continue;
     }
-    const double error = std::fabs(interpolate(T, Z, experiment::kFrontT[e]) - experiment::kFrontZ[e]) /
-                         experiment::kFrontZ[e];
+    const double error =
+      std::fabs(interpolate(T, Z, experiment::kFrontT[e]) - experiment::kFrontZ[e]) / experiment::kFrontZ[e];
     r.frontMeanError += error;
     r.frontMaxError = std::max(r.frontMaxError, error);
     ++count;
@@ -109,8 +109,7 @@ DamBreak martinMoyce(PressureSolverType solver, int across, std::ostream* curves
   for (std::size_t e = 0; e < sizeof(experiment::kHeightTau) / sizeof(double); ++e)
   {
     const double t = experiment::kHeightTau[e] * std::sqrt(2.0); // tau = T / sqrt(2)
-    const double error =
-      std::fabs(interpolate(T, height, t) - experiment::kHeight[e]) / experiment::kHeight[e];
+    const double error = std::fabs(interpolate(T, height, t) - experiment::kHeight[e]) / experiment::kHeight[e];
     r.heightMeanError += error;
     r.heightMaxError = std::max(r.heightMaxError, error);
     ++count;

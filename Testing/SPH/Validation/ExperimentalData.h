@@ -27,8 +27,8 @@ constexpr double kHeight[] = { 0.89, 0.78, 0.67, 0.56 };
 constexpr double kLobovskyArrival = 2.427;
 constexpr double kLobovskyPeakTime = 2.450;
 constexpr double kLobovskyPeakPressure = 2.843;
-constexpr double kLobovskyT[] = { 2.066, 2.232, 2.382, 2.427, 2.435, 2.450, 2.498, 2.564, 2.630, 2.675, 2.758,
-                                  2.829, 2.924, 3.089, 3.170, 3.255, 3.420, 3.585, 3.751, 3.916 };
-constexpr double kLobovskyP[] = { 0.012, 0.015, 0.004, 0.173, 1.973, 2.843, 2.040, 1.953, 1.725, 1.551, 1.335,
-                                  1.202, 1.062, 0.883, 0.832, 0.775, 0.718, 0.689, 0.707, 0.644 };
+constexpr double kLobovskyT[] = { 2.066, 2.232, 2.382, 2.427, 2.435, 2.450, 2.498, 2.564, 2.630, 2.675,
+                                  2.758, 2.829, 2.924, 3.089, 3.170, 3.255, 3.420, 3.585, 3.751, 3.916 };
+constexpr double kLobovskyP[] = { 0.012, 0.015, 0.004, 0.173, 1.973, 2.843, 2.040, 1.953, 1.725, 1.551,
+                                  1.335, 1.202, 1.062, 0.883, 0.832, 0.775, 0.718, 0.689, 0.707, 0.644 };
 } // namespace parafluid::validation::experiment

@@ -88,12 +88,12 @@ StillWater stillWater(PressureSolverType solver, int across, double duration)
     const auto& st = s.state();
     for (std::size_t i = 0; i < st.size(); ++i)
     {
-      closest = std::min({ closest, static_cast<double>(st.x[i]), static_cast<double>(length - st.x[i]),
-                           static_cast<double>(st.z[i]) });
+      closest = std::min(
+        { closest, static_cast<double>(st.x[i]), static_cast<double>(length - st.x[i]), static_cast<double>(st.z[i]) });
       if (s.time() > duration - 1.0 - 1e-9)
       {
-        const double speed = std::sqrt(double(st.vx[i]) * st.vx[i] + double(st.vy[i]) * st.vy[i] +
-                                       double(st.vz[i]) * st.vz[i]);
+        const double speed =
+          std::sqrt(double(st.vx[i]) * st.vx[i] + double(st.vy[i]) * st.vy[i] + double(st.vz[i]) * st.vz[i]);
         r.largestSpeed = std::max(r.largestSpeed, speed / reference);
       }
     }

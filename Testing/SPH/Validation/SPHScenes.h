@@ -19,7 +19,12 @@ constexpr float kRho0 = 1000.0f;  // [kg/m^3]
 
 const char* solverName(sph::PressureSolverType solver);
 
-/// Water of the given solver at h = 2 spacings in `domain`. Müller's WCSPH (the seed method) keeps
+/// The kernel support radius in particle spacings the scenes give a solver (2, 2 and 3 for WCSPH,
+/// DFSPH and δ-SPH unless set).
+void setKernelRatio(sph::PressureSolverType solver, float ratio);
+float kernelRatio(sph::PressureSolverType solver);
+
+/// Water of the given solver at h = kernelRatio spacings in `domain`. Müller's WCSPH (the seed method) keeps
 /// its paper's 3.5 Pa s, without which it rings; the others have water's viscosity only.
 sph::SPHParameters water(sph::PressureSolverType solver, float spacing, const std::array<float, 6>& domain);
 
@@ -46,7 +51,7 @@ Hydrostatic hydrostatic(sph::PressureSolverType solver, int across, std::ostream
 struct StillWater
 {
   RunCost cost;
-  double largestSpeed = 0.0; // over the last second, relative to sqrt(g H)
+  double largestSpeed = 0.0;  // over the last second, relative to sqrt(g H)
   double pressureError = 0.0; // relative L2 of the output pressure against rho0 g depth at the end
   double closestToWall = 0.0; // smallest distance of a particle to a wall, in spacings
   double highestDrift = 0.0;  // largest displacement of a particle from its start, in spacings
@@ -72,7 +77,7 @@ DamBreak martinMoyce(sph::PressureSolverType solver, int across, std::ostream* c
 struct Lobovsky
 {
   RunCost cost;
-  double peakTime = 0.0, peakPressure = 0.0; // first peak, t sqrt(g/H) and p / (rho0 g H)
+  double peakTime = 0.0, peakPressure = 0.0;           // first peak, t sqrt(g/H) and p / (rho0 g H)
   double peakTimeError = 0.0, peakPressureError = 0.0; // relative to the experiment's first peak
   double frontError = 0.0; // the time the front reaches the wall, relative to the experiment's
 };
@@ -94,7 +99,7 @@ TaylorGreen taylorGreen(sph::PressureSolverType solver, int across, std::ostream
 struct Poiseuille
 {
   RunCost cost;
-  double profileError = 0.0; // largest |u - exact| over the layers, relative to the peak velocity
+  double profileError = 0.0;   // largest |u - exact| over the layers, relative to the peak velocity
   int viscosityIterations = 0; // DFSPH: mean CG iterations per step
 };
 Poiseuille poiseuille(sph::PressureSolverType solver, int across, std::ostream* curves = nullptr);

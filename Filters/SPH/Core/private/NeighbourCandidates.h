@@ -115,8 +115,7 @@ struct CandidateBuffer
   {
     const auto& start = grid.cellStart();
     std::uint32_t capacity = 0;
-    grid.forEachNeighbourCell(ix, iy, iz,
-                              [&](std::size_t c, const float*) { capacity += start[c + 1] - start[c]; });
+    grid.forEachNeighbourCell(ix, iy, iz, [&](std::size_t c, const float*) { capacity += start[c + 1] - start[c]; });
     for (auto* a : { &x, &y, &z, &distanceSquared })
     {
       a->resize(capacity);

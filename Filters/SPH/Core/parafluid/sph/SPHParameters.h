@@ -11,9 +11,9 @@ namespace parafluid::sph
 {
 enum class PressureSolverType
 {
-  WCSPH,    // Müller's equation of state p = k (rho - rho0), explicit (the seed method)
-  DFSPH,    // divergence-free SPH: density and divergence solves, incompressible within a tolerance
-  DeltaSPH  // Tait equation of state, continuity density with δ-SPH diffusion, Wendland C2, explicit
+  WCSPH,   // Müller's equation of state p = k (rho - rho0), explicit (the seed method)
+  DFSPH,   // divergence-free SPH: density and divergence solves, incompressible within a tolerance
+  DeltaSPH // Tait equation of state, continuity density with δ-SPH diffusion, Wendland C2, explicit
 };
 
 enum class SurfaceTensionModel
@@ -161,7 +161,8 @@ float latticeGradientCorrection(float spacing, float smoothingLength, DensityKer
 /// operator is consistent in the continuum but, with the few neighbours of h = 2 spacings, 0.7 to
 /// 0.9 of the Laplacian; scaling the viscous term by it makes a resolved shear flow decay at the
 /// fluid's viscosity. spikyGradient: the gradient of Müller's spiky kernel (with poly6 volumes).
-float latticeLaplacianCorrection(float spacing, float smoothingLength, DensityKernel kernel, bool spikyGradient = false);
+float latticeLaplacianCorrection(float spacing, float smoothingLength, DensityKernel kernel,
+                                 bool spikyGradient = false);
 
 /// The same for Müller's pressure force: the spiky gradient with volumes from the poly6 density.
 float latticeSpikyGradientCorrection(float spacing, float smoothingLength);
