@@ -1,1 +1,81 @@
+// Short versions of the validation scenes (Testing/SPH/Validation; the full runs, at three
+// resolutions, are ParaFluidSPHValidation's): each at its coarsest resolution, checked against
+// what that resolution reaches, so a regression of the physics fails here. The targets of the
+// issue and how far each solver gets are in Testing/Benchmarks/README.md.
 #include "SPHScenes.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+namespace
+{
+using namespace parafluid;
+using namespace parafluid::validation;
+using sph::PressureSolverType;
+
+TEST(SPHValidation, HydrostaticPressureForEverySolver)
+{
+  // Müller's seed method used to hold water up with twice the hydrostatic pressure (113 % error):
+  // its symmetrised force returned half the gradient.
+  const struct
+  {
+    PressureSolverType solver;
+    int across;
+    double bound;
+  } cases[] = { { PressureSolverType::DeltaSPH, 20, 0.015 },
+                { PressureSolverType::WCSPH, 20, 0.02 },
+                { PressureSolverType::DFSPH, 10, 0.03 } };
+  for (const auto& c : cases)
+  {
+    const Hydrostatic r = hydrostatic(c.solver, c.across);
+    std::printf("%s at %d across: relative L2 error %.4f\n", solverName(c.solver), c.across, r.error);
+    EXPECT_LT(r.error, c.bound) << solverName(c.solver);
+  }
+}
+
+TEST(SPHValidation, DeltaSPHStillWaterStaysStillAndHydrostatic)
+{
+  const StillWater r = stillWater(PressureSolverType::DeltaSPH, 10, 2.0);
+  std::printf("still water: largest speed %.2e sqrt(gH), pressure error %.4f, drift %.3f spacings\n", r.largestSpeed,
+              r.pressureError, r.highestDrift);
+  EXPECT_LT(r.largestSpeed, 0.01);
+  EXPECT_LT(r.pressureError, 0.05);
+  EXPECT_LT(r.highestDrift, 1.0);
+  EXPECT_GT(r.closestToWall, 0.0);
+}
+
+TEST(SPHValidation, DeltaSPHDamBreakAgainstMartinAndMoyce)
+{
+  const DamBreak r = martinMoyce(PressureSolverType::DeltaSPH, 10);
+  std::printf("dam break: front error mean %.3f max %.3f, column height error mean %.3f max %.3f\n",
+              r.frontMeanError, r.frontMaxError, r.heightMeanError, r.heightMaxError);
+  EXPECT_LT(r.frontMeanError, 0.15);
+  EXPECT_LT(r.heightMeanError, 0.12);
+}
+
+TEST(SPHValidation, DeltaSPHImpactOnTheWallArrivesWhenLobovskysDid)
+{
+  const Lobovsky r = lobovsky(PressureSolverType::DeltaSPH, 20);
+  std::printf("Lobovsky: arrival error %.4f, first peak %.2f at t* %.3f (experiment %.2f at 2.450)\n", r.frontError,
+              r.peakPressure, r.peakTime, 2.843);
+  EXPECT_LT(r.frontError, 0.02);
+  EXPECT_LT(r.peakTimeError, 0.05);
+}
+
+TEST(SPHValidation, StandingWaveFrequency)
+{
+  const StandingWave r = standingWave(PressureSolverType::DeltaSPH, 10);
+  std::printf("standing wave: omega %.4f, exact %.4f\n", r.frequency, r.exact);
+  EXPECT_LT(r.frequencyError, 0.03);
+}
+
+TEST(SPHValidation, DFSPHPoiseuilleProfile)
+{
+  const Poiseuille r = poiseuille(PressureSolverType::DFSPH, 10);
+  std::printf("Poiseuille (DFSPH, implicit viscosity): largest error %.4f of the peak, %d CG iterations a step\n",
+              r.profileError, r.viscosityIterations);
+  EXPECT_LT(r.profileError, 0.08);
+  EXPECT_GT(r.viscosityIterations, 0);
+}
+} // namespace

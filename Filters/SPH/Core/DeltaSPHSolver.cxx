@@ -399,6 +399,92 @@ void DeltaSPHSolver::advanceDensity(SPHSolver& sim, float dt)
   }
 }
 
+void DeltaSPHSolver::shiftParticles(SPHSolver& sim, float dt)
+{
+  // Particle shifting (Lind et al. 2012, with the diffusion coefficient of Skillen et al. 2013):
+  // each interior particle moves down the gradient of particle concentration,
+  //   dr_i = -D grad C_i, D = 0.5 h |v_i| dt, grad C_i = sum_j V_j (1 + 0.2 (W_ij / W(dp))^4) grad W_ij,
+  // which keeps the distribution uniform where the flow stretches it (the vortices of a Taylor-Green
+  // flow, a splash's rarefaction) without a force. Free-surface particles (kernel sum below 0.9,
+  // their neighbourhood cut) are not shifted: their concentration gradient points out of the
+  // fluid. A particle at rest is not shifted either, so still water stays still.
+  ParticleState& s = sim.State;
+  const SPHParameters& p = sim.Parameters;
+  const std::size_t n = s.size();
+  this->Shift.assign(3 * n, 0.0f);
+  const WendlandC2Kernel w(p.smoothingLength);
+  const float volume = p.particleMass / p.restDensity;
+  const float inverseWSpacing = 1.0f / w.value(std::min(sim.ParticleSpacing, 0.99f * p.smoothingLength));
+  const float limit = 0.2f * sim.ParticleSpacing;
+  forEachParticleByCell(
+    sim.Grid, s, p.smoothingLength, threadCount(p), {},
+    [&](CandidateBuffer& c, std::uint32_t i)
+    {
+      const float position[3] = { s.x[i], s.y[i], s.z[i] };
+      const float speed = std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+      if (speed == 0.0f)
+      {
+        return;
+      }
+      float sum = 0.0f, g[3] = { 0.0f, 0.0f, 0.0f };
+      withImages(position, position, p,
+                 [&](const float* q, const float*, const float*, const float* scale, bool)
+                 {
+                   const std::uint32_t count = c.findHits(q, w.h2);
+                   float ws = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f;
+                   for (std::uint32_t k = 0; k < count; ++k)
+                   {
+                     const std::uint32_t j = c.hits[k];
+                     const WendlandPair pair(w, std::sqrt(c.distanceSquared[j]));
+                     const float f = pair.value * inverseWSpacing;
+                     const float weight = pair.gradient * (1.0f + 0.2f * f * f * f * f);
+                     ws += pair.value;
+                     gx += weight * (q[0] - c.x[j]);
+                     gy += weight * (q[1] - c.y[j]);
+                     gz += weight * (q[2] - c.z[j]);
+                   }
+                   sum += ws;
+                   g[0] += scale[0] * gx;
+                   g[1] += scale[1] * gy;
+                   g[2] += scale[2] * gz;
+                 });
+      if (volume * sum < 0.9f)
+      {
+        return;
+      }
+      const float diffusion = 0.5f * p.smoothingLength * speed * dt * volume;
+      float shift[3] = { -diffusion * g[0], -diffusion * g[1], -diffusion * g[2] };
+      const float length = std::sqrt(shift[0] * shift[0] + shift[1] * shift[1] + shift[2] * shift[2]);
+      const float scale = length > limit ? limit / length : 1.0f;
+      for (int a = 0; a < 3; ++a)
+      {
+        this->Shift[3 * i + a] = scale * shift[a];
+      }
+    });
+  // Applied after the pass (it reads every neighbour's position), through the walls' rules.
+  const auto count = static_cast<std::int64_t>(n);
+  const auto& b = p.domainBounds;
+#pragma omp parallel for schedule(static) num_threads(threadCount(p))
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    float* position[3] = { &s.x[i], &s.y[i], &s.z[i] };
+    for (int a = 0; a < 3; ++a)
+    {
+      float x = *position[a] + this->Shift[3 * i + a];
+      if (p.periodic[a])
+      {
+        const float length = b[2 * a + 1] - b[2 * a];
+        x = x < b[2 * a] ? x + length : (x >= b[2 * a + 1] ? x - length : x);
+      }
+      else
+      {
+        x = std::clamp(x, b[2 * a] + 0.01f * sim.ParticleSpacing, b[2 * a + 1] - 0.01f * sim.ParticleSpacing);
+      }
+      *position[a] = x;
+    }
+  }
+}
+
 double DeltaSPHSolver::step(SPHSolver& sim, double remaining)
 {
   // Störmer-Verlet with density as a position-like variable: velocity at the half step moves the
@@ -410,6 +496,10 @@ double DeltaSPHSolver::step(SPHSolver& sim, double remaining)
   sim.kick(0.5f * h);
   sim.drift(h);
   sim.sortByCell();
+  if (sim.Parameters.particleShifting)
+  {
+    this->shiftParticles(sim, h);
+  }
   this->advanceDensity(sim, h);
   this->updatePressure(sim);
   this->computeAccelerations(sim);

@@ -18,7 +18,8 @@ TaylorGreen taylorGreen(PressureSolverType solver, int across, std::ostream* cur
 {
   const float L = 1.0f, U = 1.0f, nu = 0.01f; // Re = U L / nu = 100
   const float d = L / static_cast<float>(across);
-  const float thickness = 6.0f * d; // three smoothing lengths: the least a periodic axis may be
+  // Three smoothing lengths: the least a periodic axis may be.
+  const float thickness = std::ceil(3.0f * kernelRatio(solver)) * d;
   sph::SPHParameters p = water(solver, d, { 0.0f, L, 0.0f, thickness, 0.0f, L });
   p.gravity = { 0.0f, 0.0f, 0.0f };
   p.periodic = { true, true, true };
@@ -65,7 +66,7 @@ Poiseuille poiseuille(PressureSolverType solver, int across, std::ostream* curve
 {
   const float H = 0.1f, nu = 0.01f, peak = 0.01f; // Re = peak H / nu = 0.1
   const float d = H / static_cast<float>(across);
-  const float length = 12.0f * d, thickness = 6.0f * d;
+  const float thickness = std::ceil(3.0f * kernelRatio(solver)) * d, length = 2.0f * thickness;
   sph::SPHParameters p = water(solver, d, { 0.0f, length, 0.0f, thickness, 0.0f, H });
   const float force = 8.0f * nu * peak / (H * H); // u(z) = force / (2 nu) z (H - z)
   p.gravity = { force, 0.0f, 0.0f };

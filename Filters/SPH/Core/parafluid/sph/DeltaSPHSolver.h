@@ -10,7 +10,8 @@
 //  - the momentum-conserving pressure gradient -sum_j m (p_i / rho_i^2 + p_j / rho_j^2) grad W_ij;
 //  - Monaghan's (1992) artificial viscosity with a small alpha as the only numerical viscosity, and
 //    the fluid's physical viscosity (the laminar term of SPHParameters::kinematicViscosity);
-//  - negative pressure kept, with Monaghan's (2000) tensile correction against particle pairing;
+//  - negative pressure kept, with Monaghan's (2000) tensile correction against particle pairing
+//    and particle shifting (Lind et al. 2012) against the voids of stretched flow;
 //  - the Wendland C2 kernel, and a kick-drift-kick leapfrog in which density moves with position.
 #include "parafluid/common/ParticleState.h"
 #include "parafluid/sph/PressureSolver.h"
@@ -39,10 +40,13 @@ private:
   void updatePressure(SPHSolver& sim);
   /// Accelerations into State.a*: pressure, viscosities, gravity, surface tension.
   void computeAccelerations(SPHSolver& sim);
+  /// Moves interior particles down their concentration gradient (DeltaSPHSolver.cxx).
+  void shiftParticles(SPHSolver& sim, float dt);
   /// rho += dt D rho / D t, with the rate from the current positions and velocities.
   void advanceDensity(SPHSolver& sim, float dt);
 
   std::vector<float> DensityRate;
+  std::vector<float> Shift; // 3 per particle
   double SoundSpeed = 0.0;
 };
 } // namespace parafluid::sph

@@ -39,7 +39,7 @@ enum class WallFriction
 
 struct SPHParameters
 {
-  PressureSolverType pressureSolver = PressureSolverType::DFSPH;
+  PressureSolverType pressureSolver = PressureSolverType::DeltaSPH;
   float smoothingLength = 0.04f; // h [m]: kernel support radius (about 2 particle spacings)
   float restDensity = 1000.0f;   // rho0 [kg/m^3]
   float gasStiffness = 1000.0f;  // k [m^2/s^2] in p = k (rho - rho0); sqrt(k) is the sound speed (WCSPH)
@@ -56,6 +56,7 @@ struct SPHParameters
   float artificialViscosity = 0.01f;
   float densityDiffusion = 0.1f;
   float soundSpeed = 0.0f;
+  bool particleShifting = true; // δ-SPH: shift interior particles towards uniform spacing
   // sigma [N/m]: surface tension (water-air: 0.0728); 0 skips it. surfaceTensionModel picks the force.
   float surfaceTension = 0.0f;
   SurfaceTensionModel surfaceTensionModel = SurfaceTensionModel::Akinci;
