@@ -416,51 +416,51 @@ void DeltaSPHSolver::shiftParticles(SPHSolver& sim, float dt)
   const float volume = p.particleMass / p.restDensity;
   const float inverseWSpacing = 1.0f / w.value(std::min(sim.ParticleSpacing, 0.99f * p.smoothingLength));
   const float limit = 0.2f * sim.ParticleSpacing;
-  forEachParticleByCell(
-    sim.Grid, s, p.smoothingLength, threadCount(p), {},
-    [&](CandidateBuffer& c, std::uint32_t i)
-    {
-      const float position[3] = { s.x[i], s.y[i], s.z[i] };
-      const float speed = std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
-      if (speed == 0.0f)
-      {
-        return;
-      }
-      float sum = 0.0f, g[3] = { 0.0f, 0.0f, 0.0f };
-      withImages(position, position, p,
-                 [&](const float* q, const float*, const float*, const float* scale, bool)
-                 {
-                   const std::uint32_t count = c.findHits(q, w.h2);
-                   float ws = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f;
-                   for (std::uint32_t k = 0; k < count; ++k)
-                   {
-                     const std::uint32_t j = c.hits[k];
-                     const WendlandPair pair(w, std::sqrt(c.distanceSquared[j]));
-                     const float f = pair.value * inverseWSpacing;
-                     const float weight = pair.gradient * (1.0f + 0.2f * f * f * f * f);
-                     ws += pair.value;
-                     gx += weight * (q[0] - c.x[j]);
-                     gy += weight * (q[1] - c.y[j]);
-                     gz += weight * (q[2] - c.z[j]);
-                   }
-                   sum += ws;
-                   g[0] += scale[0] * gx;
-                   g[1] += scale[1] * gy;
-                   g[2] += scale[2] * gz;
-                 });
-      if (volume * sum < 0.9f)
-      {
-        return;
-      }
-      const float diffusion = 0.5f * p.smoothingLength * speed * dt * volume;
-      float shift[3] = { -diffusion * g[0], -diffusion * g[1], -diffusion * g[2] };
-      const float length = std::sqrt(shift[0] * shift[0] + shift[1] * shift[1] + shift[2] * shift[2]);
-      const float scale = length > limit ? limit / length : 1.0f;
-      for (int a = 0; a < 3; ++a)
-      {
-        this->Shift[3 * i + a] = scale * shift[a];
-      }
-    });
+  forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p), {},
+                        [&](CandidateBuffer& c, std::uint32_t i)
+                        {
+                          const float position[3] = { s.x[i], s.y[i], s.z[i] };
+                          const float speed = std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+                          if (speed == 0.0f)
+                          {
+                            return;
+                          }
+                          float sum = 0.0f, g[3] = { 0.0f, 0.0f, 0.0f };
+                          withImages(position, position, p,
+                                     [&](const float* q, const float*, const float*, const float* scale, bool)
+                                     {
+                                       const std::uint32_t count = c.findHits(q, w.h2);
+                                       float ws = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f;
+                                       for (std::uint32_t k = 0; k < count; ++k)
+                                       {
+                                         const std::uint32_t j = c.hits[k];
+                                         const WendlandPair pair(w, std::sqrt(c.distanceSquared[j]));
+                                         const float f = pair.value * inverseWSpacing;
+                                         const float weight = pair.gradient * (1.0f + 0.2f * f * f * f * f);
+                                         ws += pair.value;
+                                         gx += weight * (q[0] - c.x[j]);
+                                         gy += weight * (q[1] - c.y[j]);
+                                         gz += weight * (q[2] - c.z[j]);
+                                       }
+                                       sum += ws;
+                                       g[0] += scale[0] * gx;
+                                       g[1] += scale[1] * gy;
+                                       g[2] += scale[2] * gz;
+                                     });
+                          if (volume * sum < 0.9f)
+                          {
+                            return;
+                          }
+                          const float diffusion = 0.5f * p.smoothingLength * speed * dt * volume;
+                          float shift[3] = { -diffusion * g[0], -diffusion * g[1], -diffusion * g[2] };
+                          const float length =
+                            std::sqrt(shift[0] * shift[0] + shift[1] * shift[1] + shift[2] * shift[2]);
+                          const float scale = length > limit ? limit / length : 1.0f;
+                          for (int a = 0; a < 3; ++a)
+                          {
+                            this->Shift[3 * i + a] = scale * shift[a];
+                          }
+                        });
   // Applied after the pass (it reads every neighbour's position), through the walls' rules.
   const auto count = static_cast<std::int64_t>(n);
   const auto& b = p.domainBounds;

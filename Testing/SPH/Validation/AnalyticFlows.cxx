@@ -40,6 +40,7 @@ TaylorGreen taylorGreen(PressureSolverType solver, int across, std::ostream* cur
     state.density[i] = static_cast<float>(kRho0 * std::pow(1.0 + pressure / bulk, 1.0 / 7.0));
   }
   p.soundSpeed = static_cast<float>(c0);
+  p.particleShifting = true; // the vortex stretches the particle distribution (see SPHParameters.h)
   SPHSolver s(p, std::move(state));
   TaylorGreen r;
   r.cost.particles = static_cast<long long>(s.state().size());
