@@ -87,7 +87,7 @@ print("reader errors: ok")
 
 # A run that needs millions of steps (Viscosity 1e6 Pa s shrinks the explicit viscous step) is
 # announced before it starts, and can be aborted from the warning on.
-slow = SPHStep(Input=ParticleBlock(), Viscosity=1e6, NumberOfOutputs=1)
+slow = SPHStep(Input=ParticleBlock(), PressureSolver="WCSPH (Müller)", Viscosity=1e6, NumberOfOutputs=1)
 slow_object = slow.GetClientSideObject()
 long_run = []
 

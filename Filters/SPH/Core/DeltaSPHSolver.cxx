@@ -336,30 +336,31 @@ namespace
 Constants constants(const SPHParameters& p, double soundSpeed, float spacing)
 {
   const WendlandC2Kernel w(p.smoothingLength);
-  return Constants{
-    w.h2,
-    0.5f * p.smoothingLength,
-    0.01f * 0.25f * w.h2,
-    p.particleMass,
-    static_cast<float>(soundSpeed),
-    p.artificialViscosity,
-    p.densityDiffusion,
-    10.0f * p.kinematicViscosity * latticeLaplacianCorrection(spacing, p.smoothingLength, DensityKernel::WendlandC2),
-    p.restDensity,
-    static_cast<float>(1.0 / (soundSpeed * soundSpeed)),
-    // Gravity along a periodic axis drives a flow and builds no hydrostatic pressure.
-    { p.periodic[0] ? 0.0f : p.gravity[0], p.periodic[1] ? 0.0f : p.gravity[1], p.periodic[2] ? 0.0f : p.gravity[2] },
-    1.0f / w.value(std::min(spacing, 0.99f * p.smoothingLength)),
-    w,
-    latticeGradientCorrection(spacing, p.smoothingLength, DensityKernel::WendlandC2)
-  };
+  return Constants{ w.h2,
+                    0.5f * p.smoothingLength,
+                    0.01f * 0.25f * w.h2,
+                    p.particleMass,
+                    static_cast<float>(soundSpeed),
+                    p.artificialViscosity,
+                    p.densityDiffusion,
+                    // Müller's extra viscosity, when set, joins the physical one here.
+                    10.0f * (p.kinematicViscosity + p.viscosity / p.restDensity) *
+                      latticeLaplacianCorrection(spacing, p.smoothingLength, DensityKernel::WendlandC2),
+                    p.restDensity,
+                    static_cast<float>(1.0 / (soundSpeed * soundSpeed)),
+                    // Gravity along a periodic axis drives a flow and builds no hydrostatic pressure.
+                    { p.periodic[0] ? 0.0f : p.gravity[0], p.periodic[1] ? 0.0f : p.gravity[1],
+                      p.periodic[2] ? 0.0f : p.gravity[2] },
+                    1.0f / w.value(std::min(spacing, 0.99f * p.smoothingLength)),
+                    w,
+                    latticeGradientCorrection(spacing, p.smoothingLength, DensityKernel::WendlandC2) };
 }
 } // namespace
 
 void DeltaSPHSolver::computeAccelerations(SPHSolver& sim)
 {
   const Constants k = constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing);
-  if (sim.Parameters.kinematicViscosity > 0.0f)
+  if (sim.Parameters.kinematicViscosity > 0.0f || sim.Parameters.viscosity > 0.0f)
   {
     forcePass<true>(sim.Grid, sim.State, sim.Parameters, k);
   }

@@ -214,13 +214,16 @@ double SPHSolver::proposedTimeStep() const
   {
     dt = std::min(dt, p.cflNumber * h / speed);
   }
-  if (p.viscosity > 0.0f)
+  if (p.viscosity > 0.0f && p.pressureSolver != PressureSolverType::DeltaSPH)
   {
     // Explicit diffusion is stable for dt nu S < 1, S the sum of Müller's Laplacian weights over a
     // neighbourhood: about 15 / h^2, up to twice that beside a wall's mirror images. Kept at 0.75.
     dt = std::min(dt, h * h * p.restDensity / (40.0 * p.viscosity));
   }
-  if (p.kinematicViscosity > 0.0f && p.pressureSolver != PressureSolverType::DFSPH)
+  // δ-SPH folds Müller's extra viscosity into its laminar term.
+  const double nu =
+    p.kinematicViscosity + (p.pressureSolver == PressureSolverType::DeltaSPH ? p.viscosity / p.restDensity : 0.0);
+  if (nu > 0.0 && p.pressureSolver != PressureSolverType::DFSPH)
   {
     // The explicit laminar term: nu dt / (h/2)^2 <= 0.125 (Morris et al. 1997), with nu scaled by
     // the operator's lattice correction and halved again beside no-slip walls, whose images double
@@ -228,7 +231,7 @@ double SPHSolver::proposedTimeStep() const
     const bool spiky = p.pressureSolver == PressureSolverType::WCSPH;
     const double correction = latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength,
                                                          spiky ? DensityKernel::Poly6 : p.densityKernel(), spiky);
-    dt = std::min(dt, 0.015 * h * h / (p.kinematicViscosity * correction));
+    dt = std::min(dt, 0.015 * h * h / (nu * correction));
   }
   const double a = this->maxAcceleration();
   if (a > 0.0) // a particle may not move more than ~h/16 from its acceleration alone

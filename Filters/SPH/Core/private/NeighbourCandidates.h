@@ -58,64 +58,23 @@ struct CandidateBuffer
 
   /// Copies the particles of the 27 cells around (ix, iy, iz) that lie within `reach` of that
   /// cell's box (the others cannot be within reach of any particle in the cell: this drops about
-  /// a quarter of them), with the values sources[k][j] into channel[k].
+  /// a quarter of them), with the values sources[k][j] into channel[k]. Across a periodic axis
+  /// each candidate is shifted by the period it was reached across, so every pair loop sees the
+  /// nearest periodic image.
   void gather(const NeighbourGrid& grid, int ix, int iy, int iz, const ParticleState& s, float reach,
               const std::array<const float*, kMaxChannels>& sources, int channels)
   {
-    if (grid.anyPeriodic())
-    {
-      this->gatherPeriodic(grid, ix, iy, iz, s, reach, sources, channels);
-      return;
-    }
-    std::uint32_t capacity = 0;
-    grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) { capacity += e - b; });
-    for (auto* a : { &x, &y, &z, &distanceSquared })
-    {
-      a->resize(capacity);
-    }
-    hits.resize(capacity);
-    for (int k = 0; k < channels; ++k)
-    {
-      channel[k].resize(capacity);
-    }
-    const float cell = grid.cellSize();
-    const float lo[3] = { grid.origin()[0] + ix * cell, grid.origin()[1] + iy * cell, grid.origin()[2] + iz * cell };
-    const float hi[3] = { lo[0] + cell, lo[1] + cell, lo[2] + cell };
-    const float reach2 = reach * reach;
-    size = 0;
-    grid.forEachNeighbourRange(ix, iy, iz,
-                               [&](std::uint32_t b, std::uint32_t e)
-                               {
-                                 for (std::uint32_t j = b; j < e; ++j)
-                                 {
-                                   const float px = s.x[j], py = s.y[j], pz = s.z[j];
-                                   const float dx = std::max({ lo[0] - px, 0.0f, px - hi[0] });
-                                   const float dy = std::max({ lo[1] - py, 0.0f, py - hi[1] });
-                                   const float dz = std::max({ lo[2] - pz, 0.0f, pz - hi[2] });
-                                   if (dx * dx + dy * dy + dz * dz >= reach2)
-                                   {
-                                     continue;
-                                   }
-                                   x[size] = px;
-                                   y[size] = py;
-                                   z[size] = pz;
-                                   for (int k = 0; k < channels; ++k)
-                                   {
-                                     channel[k][size] = sources[k][j];
-                                   }
-                                   ++size;
-                                 }
-                               });
-  }
-
-  /// gather() across periodic axes: cell by cell, each candidate shifted by the period it was
-  /// reached across, so every pair loop sees the nearest periodic image.
-  void gatherPeriodic(const NeighbourGrid& grid, int ix, int iy, int iz, const ParticleState& s, float reach,
-                      const std::array<const float*, kMaxChannels>& sources, int channels)
-  {
+    const bool periodic = grid.anyPeriodic();
     const auto& start = grid.cellStart();
     std::uint32_t capacity = 0;
-    grid.forEachNeighbourCell(ix, iy, iz, [&](std::size_t c, const float*) { capacity += start[c + 1] - start[c]; });
+    if (periodic)
+    {
+      grid.forEachNeighbourCell(ix, iy, iz, [&](std::size_t c, const float*) { capacity += start[c + 1] - start[c]; });
+    }
+    else
+    {
+      grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) { capacity += e - b; });
+    }
     for (auto* a : { &x, &y, &z, &distanceSquared })
     {
       a->resize(capacity);
@@ -129,29 +88,38 @@ struct CandidateBuffer
     grid.cellBox(ix, iy, iz, lo, hi);
     const float reach2 = reach * reach;
     size = 0;
-    grid.forEachNeighbourCell(ix, iy, iz,
-                              [&](std::size_t c, const float* shift)
-                              {
-                                for (std::uint32_t j = start[c]; j < start[c + 1]; ++j)
-                                {
-                                  const float px = s.x[j] + shift[0], py = s.y[j] + shift[1], pz = s.z[j] + shift[2];
-                                  const float dx = std::max({ lo[0] - px, 0.0f, px - hi[0] });
-                                  const float dy = std::max({ lo[1] - py, 0.0f, py - hi[1] });
-                                  const float dz = std::max({ lo[2] - pz, 0.0f, pz - hi[2] });
-                                  if (dx * dx + dy * dy + dz * dz >= reach2)
-                                  {
-                                    continue;
-                                  }
-                                  x[size] = px;
-                                  y[size] = py;
-                                  z[size] = pz;
-                                  for (int k = 0; k < channels; ++k)
-                                  {
-                                    channel[k][size] = sources[k][j];
-                                  }
-                                  ++size;
-                                }
-                              });
+    auto append = [&](std::uint32_t b, std::uint32_t e, const float shift[3])
+    {
+      for (std::uint32_t j = b; j < e; ++j)
+      {
+        const float px = s.x[j] + shift[0], py = s.y[j] + shift[1], pz = s.z[j] + shift[2];
+        const float dx = std::max({ lo[0] - px, 0.0f, px - hi[0] });
+        const float dy = std::max({ lo[1] - py, 0.0f, py - hi[1] });
+        const float dz = std::max({ lo[2] - pz, 0.0f, pz - hi[2] });
+        if (dx * dx + dy * dy + dz * dz >= reach2)
+        {
+          continue;
+        }
+        x[size] = px;
+        y[size] = py;
+        z[size] = pz;
+        for (int k = 0; k < channels; ++k)
+        {
+          channel[k][size] = sources[k][j];
+        }
+        ++size;
+      }
+    };
+    if (periodic)
+    {
+      grid.forEachNeighbourCell(ix, iy, iz,
+                                [&](std::size_t c, const float* shift) { append(start[c], start[c + 1], shift); });
+    }
+    else
+    {
+      static const float none[3] = { 0.0f, 0.0f, 0.0f };
+      grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) { append(b, e, none); });
+    }
   }
 
   /// Σ_j (h² − r²)³ over candidates inside h of q (the poly6 sum without its constant).
