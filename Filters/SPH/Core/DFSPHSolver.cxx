@@ -66,10 +66,7 @@ void withImages(const float position[3], const SPHParameters& p, F&& f)
   for (int m = 0; m < mirrors.count; ++m)
   {
     float image[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
-    }
+    mirrors.image(m, position, image);
     f(image, mirrors.scale[m]);
   }
 }

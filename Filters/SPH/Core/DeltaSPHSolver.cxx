@@ -5,6 +5,7 @@
 #include "parafluid/sph/SPHSolver.h"
 #include "parafluid/sph/WallMirrors.h"
 #include "private/NeighbourCandidates.h"
+#include "private/WallImages.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +15,7 @@ namespace parafluid::sph
 {
 using detail::CandidateBuffer;
 using detail::forEachParticleByCell;
+using detail::forEachWallImage;
 using detail::threadCount;
 
 namespace
@@ -151,29 +153,6 @@ float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float
   return rate;
 }
 
-/// Runs f(query position, query velocity, t, scale, isImage) for the particle and its wall images:
-/// the term of x_i with the image R x_j equals R times the term of R x_i with x_j (R a
-/// reflection); the image moves with the mirrored velocity, or for the laminar term of a no-slip
-/// wall with the reversed one (t = S R, S the image's velocity scale).
-template<class F>
-void withImages(const float position[3], const float velocity[3], const SPHParameters& p, F&& f)
-{
-  static const float ones[3] = { 1.0f, 1.0f, 1.0f };
-  f(position, velocity, ones, ones, false);
-  const WallMirrors mirrors = WallMirrors::around(position, p, true);
-  for (int m = 0; m < mirrors.count; ++m)
-  {
-    float image[3], imageVelocity[3], t[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
-      imageVelocity[a] = mirrors.scale[m][a] * velocity[a];
-      t[a] = mirrors.scale[m][a] * mirrors.velocityScale[m][a];
-    }
-    f(image, imageVelocity, t, mirrors.scale[m], true);
-  }
-}
-
 template<bool Laminar>
 void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const Constants& k)
 {
@@ -184,15 +163,16 @@ void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters&
                           const float position[3] = { s.x[i], s.y[i], s.z[i] };
                           const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
                           float a[3] = { p.gravity[0], p.gravity[1], p.gravity[2] };
-                          withImages(position, velocity, p,
-                                     [&](const float* q, const float* v, const float* t, const float* scale, bool)
-                                     {
-                                       const Sums g = forceTerms<Laminar>(c, q, v, s.density[i], s.pressure[i], t, k);
-                                       for (int d = 0; d < 3; ++d)
-                                       {
-                                         a[d] += scale[d] * g.a[d];
-                                       }
-                                     });
+                          forEachWallImage(position, velocity, p,
+                                           [&](const float* q, const float* v, const float* t, const float* scale, bool)
+                                           {
+                                             const Sums g =
+                                               forceTerms<Laminar>(c, q, v, s.density[i], s.pressure[i], t, k);
+                                             for (int d = 0; d < 3; ++d)
+                                             {
+                                               a[d] += scale[d] * g.a[d];
+                                             }
+                                           });
                           s.ax[i] = a[0];
                           s.ay[i] = a[1];
                           s.az[i] = a[2];
@@ -238,6 +218,8 @@ void DeltaSPHSolver::start(SPHSolver& sim)
 {
   ParticleState& s = sim.State;
   this->SoundSpeed = automaticSoundSpeed(sim.Parameters, s);
+  this->PressureCorrection =
+    latticeGradientCorrection(sim.ParticleSpacing, sim.Parameters.smoothingLength, DensityKernel::WendlandC2);
   // Density is state here: a given one (a prepared initial condition) is kept; otherwise the
   // fluid starts in hydrostatic equilibrium, so a resting column does not ring acoustically.
   const bool given = !s.density.empty() && std::all_of(s.density.begin(), s.density.end(),
@@ -333,7 +315,8 @@ void DeltaSPHSolver::updatePressure(SPHSolver& sim)
 
 namespace
 {
-Constants constants(const SPHParameters& p, double soundSpeed, float spacing)
+Constants constants(const SPHParameters& p, double soundSpeed, float spacing, float laplacianCorrection,
+                    float pressureCorrection)
 {
   const WendlandC2Kernel w(p.smoothingLength);
   return Constants{ w.h2,
@@ -344,8 +327,7 @@ Constants constants(const SPHParameters& p, double soundSpeed, float spacing)
                     p.artificialViscosity,
                     p.densityDiffusion,
                     // Müller's extra viscosity, when set, joins the physical one here.
-                    10.0f * (p.kinematicViscosity + p.viscosity / p.restDensity) *
-                      latticeLaplacianCorrection(spacing, p.smoothingLength, DensityKernel::WendlandC2),
+                    10.0f * (p.kinematicViscosity + p.viscosity / p.restDensity) * laplacianCorrection,
                     p.restDensity,
                     static_cast<float>(1.0 / (soundSpeed * soundSpeed)),
                     // Gravity along a periodic axis drives a flow and builds no hydrostatic pressure.
@@ -353,13 +335,14 @@ Constants constants(const SPHParameters& p, double soundSpeed, float spacing)
                       p.periodic[2] ? 0.0f : p.gravity[2] },
                     1.0f / w.value(std::min(spacing, 0.99f * p.smoothingLength)),
                     w,
-                    latticeGradientCorrection(spacing, p.smoothingLength, DensityKernel::WendlandC2) };
+                    pressureCorrection };
 }
 } // namespace
 
 void DeltaSPHSolver::computeAccelerations(SPHSolver& sim)
 {
-  const Constants k = constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing);
+  const Constants k =
+    constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing, sim.LaplacianCorrection, this->PressureCorrection);
   if (sim.Parameters.kinematicViscosity > 0.0f || sim.Parameters.viscosity > 0.0f)
   {
     forcePass<true>(sim.Grid, sim.State, sim.Parameters, k);
@@ -375,7 +358,8 @@ void DeltaSPHSolver::advanceDensity(SPHSolver& sim, float dt)
 {
   ParticleState& s = sim.State;
   const SPHParameters& p = sim.Parameters;
-  const Constants k = constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing);
+  const Constants k =
+    constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing, sim.LaplacianCorrection, this->PressureCorrection);
   this->DensityRate.resize(s.size());
   forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p),
                         { s.vx.data(), s.vy.data(), s.vz.data(), s.density.data() },
@@ -384,9 +368,9 @@ void DeltaSPHSolver::advanceDensity(SPHSolver& sim, float dt)
                           const float position[3] = { s.x[i], s.y[i], s.z[i] };
                           const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
                           float rate = 0.0f;
-                          withImages(position, velocity, p,
-                                     [&](const float* q, const float* v, const float*, const float*, bool image)
-                                     { rate += densityRate(c, q, v, s.density[i], !image, k); });
+                          forEachWallImage(position, velocity, p,
+                                           [&](const float* q, const float* v, const float*, const float*, bool image)
+                                           { rate += densityRate(c, q, v, s.density[i], !image, k); });
                           this->DensityRate[i] = rate;
                         });
   // Written after the pass: the pass reads every neighbour's density of this step.
@@ -427,27 +411,27 @@ void DeltaSPHSolver::shiftParticles(SPHSolver& sim, float dt)
                             return;
                           }
                           float sum = 0.0f, g[3] = { 0.0f, 0.0f, 0.0f };
-                          withImages(position, position, p,
-                                     [&](const float* q, const float*, const float*, const float* scale, bool)
-                                     {
-                                       const std::uint32_t count = c.findHits(q, w.h2);
-                                       float ws = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f;
-                                       for (std::uint32_t k = 0; k < count; ++k)
-                                       {
-                                         const std::uint32_t j = c.hits[k];
-                                         const WendlandPair pair(w, std::sqrt(c.distanceSquared[j]));
-                                         const float f = pair.value * inverseWSpacing;
-                                         const float weight = pair.gradient * (1.0f + 0.2f * f * f * f * f);
-                                         ws += pair.value;
-                                         gx += weight * (q[0] - c.x[j]);
-                                         gy += weight * (q[1] - c.y[j]);
-                                         gz += weight * (q[2] - c.z[j]);
-                                       }
-                                       sum += ws;
-                                       g[0] += scale[0] * gx;
-                                       g[1] += scale[1] * gy;
-                                       g[2] += scale[2] * gz;
-                                     });
+                          forEachWallImage(position, position, p,
+                                           [&](const float* q, const float*, const float*, const float* scale, bool)
+                                           {
+                                             const std::uint32_t count = c.findHits(q, w.h2);
+                                             float ws = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f;
+                                             for (std::uint32_t k = 0; k < count; ++k)
+                                             {
+                                               const std::uint32_t j = c.hits[k];
+                                               const WendlandPair pair(w, std::sqrt(c.distanceSquared[j]));
+                                               const float f = pair.value * inverseWSpacing;
+                                               const float weight = pair.gradient * (1.0f + 0.2f * f * f * f * f);
+                                               ws += pair.value;
+                                               gx += weight * (q[0] - c.x[j]);
+                                               gy += weight * (q[1] - c.y[j]);
+                                               gz += weight * (q[2] - c.z[j]);
+                                             }
+                                             sum += ws;
+                                             g[0] += scale[0] * gx;
+                                             g[1] += scale[1] * gy;
+                                             g[2] += scale[2] * gz;
+                                           });
                           if (volume * sum < 0.9f)
                           {
                             return;

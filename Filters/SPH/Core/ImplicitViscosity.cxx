@@ -17,6 +17,7 @@
 #include "parafluid/sph/SPHSolver.h"
 #include "parafluid/sph/WallMirrors.h"
 #include "private/NeighbourCandidates.h"
+#include "private/WallImages.h"
 
 #include <Eigen/Core>
 #include <Eigen/IterativeLinearSolvers>
@@ -32,7 +33,6 @@ namespace detail
 /// x components, then all y, then all z (so each component is a channel of the neighbour pass).
 struct ViscousOperator
 {
-  SPHSolver* sim = nullptr;
   const NeighbourGrid* grid = nullptr;
   ParticleState* state = nullptr;
   const SPHParameters* p = nullptr;
@@ -92,20 +92,9 @@ struct ViscousOperator
           diag[1] += dy2;
           diag[2] += dz2;
         };
-        static const float ones[3] = { 1.0f, 1.0f, 1.0f };
-        add(position, value, ones, ones);
-        const WallMirrors mirrors = WallMirrors::around(position, *p, true);
-        for (int m = 0; m < mirrors.count; ++m)
-        {
-          float image[3], imageValue[3], t[3];
-          for (int a = 0; a < 3; ++a)
-          {
-            image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
-            imageValue[a] = mirrors.scale[m][a] * value[a];
-            t[a] = mirrors.scale[m][a] * mirrors.velocityScale[m][a];
-          }
-          add(image, imageValue, t, mirrors.scale[m]);
-        }
+        forEachWallImage(position, value, *p,
+                         [&](const float* q, const float* vq, const float* t, const float* scale, bool)
+                         { add(q, vq, t, scale); });
         visit(i, value, sum, diag);
       });
   }
@@ -314,14 +303,12 @@ int DFSPHSolver::solveViscosity(SPHSolver& sim, float dt)
   }
   const int threads = detail::threadCount(p);
   detail::ViscousOperator op;
-  op.sim = &sim;
   op.grid = &sim.Grid;
   op.state = &s;
   op.p = &p;
   op.dt = dt;
   op.n = n;
-  op.laplacianCorrection =
-    latticeLaplacianCorrection(sim.ParticleSpacing, p.smoothingLength, DensityKernel::CubicSpline);
+  op.laplacianCorrection = sim.LaplacianCorrection;
   op.volume.resize(n);
   for (std::size_t i = 0; i < n; ++i)
   {

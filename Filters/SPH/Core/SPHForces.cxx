@@ -181,9 +181,9 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
       for (int m = 0; m < mirrors.count; ++m)
       {
         float image[3], imageVelocity[3], t[3];
+        mirrors.image(m, position, image);
         for (int a = 0; a < 3; ++a)
         {
-          image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
           imageVelocity[a] = mirrors.velocityScale[m][a] * velocity[a];
           t[a] = mirrors.velocityScale[m][a] * mirrors.scale[m][a];
         }
@@ -265,8 +265,7 @@ void SPHSolver::computeAccelerations(bool withPressure)
     inverseDensity[i] = 1.0f / s.density[i]; // density > 0: every particle counts itself
   }
   const Pass pass = withPressure ? choosePass<true>(viscosity, tension) : choosePass<false>(viscosity, tension);
-  pass(this->Grid, s, p, inverseDensity, latticeSpikyGradientCorrection(this->ParticleSpacing, p.smoothingLength),
-       latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, DensityKernel::Poly6, true));
+  pass(this->Grid, s, p, inverseDensity, this->SpikyGradientCorrection, this->LaplacianCorrection);
   this->addSurfaceTension();
 }
 } // namespace parafluid::sph

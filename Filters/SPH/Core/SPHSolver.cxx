@@ -94,6 +94,10 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial,
   this->sortByCell();
   const SPHParameters& p = this->Parameters;
   this->ParticleSpacing = latticeSpacingForMass(p.particleMass, p.smoothingLength, p.restDensity, p.densityKernel());
+  const bool spiky = p.pressureSolver == PressureSolverType::WCSPH; // Müller's viscous term uses spiky's gradient
+  this->LaplacianCorrection = latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength,
+                                                         spiky ? DensityKernel::Poly6 : p.densityKernel(), spiky);
+  this->SpikyGradientCorrection = latticeSpikyGradientCorrection(this->ParticleSpacing, p.smoothingLength);
   this->Pressure = makePressureSolver(p.pressureSolver);
   this->Pressure->start(*this);
   this->measureCompression();
@@ -228,10 +232,7 @@ double SPHSolver::proposedTimeStep() const
     // The explicit laminar term: nu dt / (h/2)^2 <= 0.125 (Morris et al. 1997), with nu scaled by
     // the operator's lattice correction and halved again beside no-slip walls, whose images double
     // the term. DFSPH solves it implicitly and has no such limit.
-    const bool spiky = p.pressureSolver == PressureSolverType::WCSPH;
-    const double correction = latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength,
-                                                         spiky ? DensityKernel::Poly6 : p.densityKernel(), spiky);
-    dt = std::min(dt, 0.015 * h * h / (nu * correction));
+    dt = std::min(dt, 0.015 * h * h / (nu * this->LaplacianCorrection));
   }
   const double a = this->maxAcceleration();
   if (a > 0.0) // a particle may not move more than ~h/16 from its acceleration alone
@@ -553,10 +554,7 @@ std::vector<float> SPHSolver::smoothedPressure() const
                                   for (int m = 0; m < mirrors.count; ++m)
                                   {
                                     float image[3];
-                                    for (int a = 0; a < 3; ++a)
-                                    {
-                                      image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
-                                    }
+                                    mirrors.image(m, position, image);
                                     accumulate(image);
                                   }
                                   smoothed[i] = weights > 0.0f ? weighted / weights : s.pressure[i];

@@ -64,10 +64,7 @@ void WCSPHSolver::computeDensityAndPressure(SPHSolver& sim)
                           for (int m = 0; m < mirrors.count; ++m)
                           {
                             float image[3];
-                            for (int a = 0; a < 3; ++a)
-                            {
-                              image[a] = mirrors.scale[m][a] * position[a] + mirrors.offset[m][a];
-                            }
+                            mirrors.image(m, position, image);
                             sum += candidates.poly6Sum(image, w.h2);
                           }
                           const float rho = densityScale * sum;

@@ -48,5 +48,6 @@ private:
   std::vector<float> DensityRate;
   std::vector<float> Shift; // 3 per particle
   double SoundSpeed = 0.0;
+  float PressureCorrection = 1.0f; // pressure forces, see latticeGradientCorrection
 };
 } // namespace parafluid::sph

@@ -129,6 +129,10 @@ private:
   std::vector<float> InverseDensity;
   std::vector<float> PressureImpulse; // sum of p dt over the steps of advance() [Pa s]
   float ParticleSpacing = 0.0f;       // [m] edge of the cube a particle fills at rest density
+  // Lattice corrections of the chosen solver's viscous operator and of Müller's spiky pressure
+  // gradient (SPHParameters.h), fixed for a run.
+  float LaplacianCorrection = 1.0f;
+  float SpikyGradientCorrection = 1.0f;
   std::int64_t Steps = 0;
   double Time = 0.0;
   double SpeedLimit = 0.0; // [m/s], see speedLimit()

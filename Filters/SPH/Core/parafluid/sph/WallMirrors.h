@@ -28,6 +28,15 @@ struct WallMirrors
   float offset[7][3];
   float velocityScale[7][3];
 
+  /// The position of image k of point p.
+  void image(int k, const float p[3], float out[3]) const
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      out[a] = scale[k][a] * p[a] + offset[k][a];
+    }
+  }
+
   /// Whether image k crosses a no-slip wall (its velocity is not simply mirrored).
   bool noSlip(int k) const
   {
