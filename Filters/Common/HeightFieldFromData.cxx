@@ -1,5 +1,7 @@
 #include "HeightFieldFromData.h"
 
+#include "HeightImage.h"
+
 #include "parafluid/common/HeightField.h"
 
 #include "vtkCellArray.h"
@@ -23,32 +25,13 @@ std::shared_ptr<HeightField> heightFieldFrom(vtkDataObject* data, double seaLeve
   {
     if (auto* image = vtkImageData::SafeDownCast(data))
     {
-      int dims[3];
-      image->GetDimensions(dims);
-      if (dims[2] != 1)
+      HeightImage heights;
+      if (!readHeightImage(image, "", heights, error))
       {
-        error = "the image must be 2D (one layer of points in z), got " + std::to_string(dims[2]) + " layers";
         return nullptr;
       }
-      vtkDataArray* scalars = image->GetPointData()->GetScalars();
-      if (!scalars)
-      {
-        scalars = image->GetPointData()->GetNumberOfArrays() > 0 ? image->GetPointData()->GetArray(0) : nullptr;
-      }
-      if (!scalars)
-      {
-        error = "the image has no point array to read the floor elevation from";
-        return nullptr;
-      }
-      std::vector<float> elevation(static_cast<std::size_t>(scalars->GetNumberOfTuples()));
-      for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
-      {
-        elevation[static_cast<std::size_t>(i)] = static_cast<float>(scalars->GetComponent(i, 0));
-      }
-      const double* origin = image->GetOrigin();
-      const double* spacing = image->GetSpacing();
-      return std::make_shared<HeightField>(std::move(elevation), dims[0], dims[1], origin[0], origin[1], spacing[0],
-                                           spacing[1], seaLevel);
+      return std::make_shared<HeightField>(std::move(heights.heights), heights.nx, heights.ny, heights.origin[0],
+                                           heights.origin[1], heights.spacing[0], heights.spacing[1], seaLevel);
     }
     if (auto* surface = vtkPolyData::SafeDownCast(data))
     {

@@ -1,7 +1,7 @@
 #pragma once
-// A height field from a VTK data object: a 2D vtkImageData whose first point scalar array is the
-// elevation [m], or a surface vtkPolyData (a terrain) rasterised onto a grid. The ocean's sea
-// floor and the carpet surface's terrain both come through here.
+// A height field from a VTK data object: a 2D vtkImageData whose elevation [m] is read as
+// HeightImage.h says (`elevation`, else the scalars, else the first point or cell array), or a surface vtkPolyData (a
+// terrain) rasterised onto a grid. The ocean's sea floor and the carpet surface's terrain both come through here.
 #include "ParaFluidFiltersCommonModule.h"
 
 #include <memory>

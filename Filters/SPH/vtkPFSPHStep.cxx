@@ -3,7 +3,10 @@
 #include "ParticleArrays.h"
 #include "ParticleStateArrays.h"
 #include "TriangleBoundaryFromSurface.h"
+
+#include "HeightImage.h"
 #include "parafluid/common/MemoryBudget.h"
+#include "vtkImageData.h"
 
 #include "parafluid/sph/SPHSolver.h"
 
@@ -118,6 +121,7 @@ int vtkPFSPHStep::FillInputPortInformation(int port, vtkInformation* info)
   if (port == 1)
   {
     info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
     return 1;
   }
@@ -184,13 +188,26 @@ int vtkPFSPHStep::RequestParticles(const Particles& particles, vtkInformationVec
     return 0;
   }
   const long long target = this->RequestedOutputIndex(outInfo);
-  vtkPolyData* boundary = vtkPolyData::GetData(inputVector[1]);
+  // The Boundary: a surface, or a terrain's 2-D height image (made into its warped surface).
+  vtkDataObject* boundaryData = vtkDataObject::GetData(inputVector[1]);
+  vtkSmartPointer<vtkPolyData> boundary = vtkPolyData::SafeDownCast(boundaryData);
+  if (auto* image = vtkImageData::SafeDownCast(boundaryData))
+  {
+    parafluid::vtk::HeightImage heights;
+    std::string problem;
+    if (!parafluid::vtk::readHeightImage(image, "", heights, problem))
+    {
+      this->ReportError("Boundary: " + problem);
+      return 0;
+    }
+    boundary = parafluid::vtk::heightSurface(heights.heights, heights.nx, heights.ny, heights.origin, heights.spacing);
+  }
 
   // Moving forward under the same inputs and properties continues the cached simulation. The
   // gathered copy is new on every update; the local input's own MTime says whether it changed.
   Cache& cache = *this->Cached;
   const vtkMTimeType inputTime = particles.Local->GetMTime();
-  const vtkMTimeType boundaryTime = boundary ? boundary->GetMTime() : 0;
+  const vtkMTimeType boundaryTime = boundaryData ? boundaryData->GetMTime() : 0;
   const bool reusable = cache.Solver && cache.InputTime == inputTime && cache.BoundaryTime == boundaryTime &&
                         cache.FilterTime == this->GetMTime() && cache.OutputIndex <= target;
   if (!reusable)

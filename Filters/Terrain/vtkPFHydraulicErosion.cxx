@@ -1,0 +1,109 @@
+#include "vtkPFHydraulicErosion.h"
+
+#include "HeightImage.h"
+#include "ParameterCheck.h"
+
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+vtkStandardNewMacro(vtkPFHydraulicErosion);
+
+vtkPFHydraulicErosion::vtkPFHydraulicErosion()
+{
+  this->SetNumberOfInputPorts(1);
+}
+
+int vtkPFHydraulicErosion::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  return 1;
+}
+
+bool vtkPFHydraulicErosion::TerrainGeometry(vtkInformationVector** inputVector, int dims[2], double origin[2],
+                                            double spacing[2])
+{
+  vtkInformation* in = inputVector[0]->GetInformationObject(0);
+  if (!in || !in->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    return false;
+  }
+  int extent[6];
+  in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
+  double o[3] = { 0, 0, 0 }, s[3] = { 1, 1, 1 };
+  if (in->Has(vtkDataObject::ORIGIN()))
+  {
+    in->Get(vtkDataObject::ORIGIN(), o);
+  }
+  if (in->Has(vtkDataObject::SPACING()))
+  {
+    in->Get(vtkDataObject::SPACING(), s);
+  }
+  for (int a = 0; a < 2; ++a)
+  {
+    dims[a] = extent[2 * a + 1] - extent[2 * a] + 1;
+    spacing[a] = s[a];
+    origin[a] = o[a] + extent[2 * a] * s[a];
+  }
+  return true;
+}
+
+bool vtkPFHydraulicErosion::ComputeTerrain(vtkInformationVector** inputVector, parafluid::terrain::ElevationGrid& grid,
+                                           NamedArrays& arrays)
+{
+  using namespace parafluid::terrain;
+  parafluid::vtk::ParameterCheck check;
+  check.inRange("Iterations", this->Iterations, 0, 1e7);
+  const std::string problem = this->Method == 0 ? this->Droplets.problem() : this->Pipes.problem();
+  check.require(problem.empty(), problem);
+  if (!check.ok())
+  {
+    vtkErrorMacro("Hydraulic Erosion: " << check.problem());
+    return false;
+  }
+  vtkImageData* input = vtkImageData::GetData(inputVector[0], 0);
+  parafluid::vtk::HeightImage heights;
+  std::string error;
+  if (!parafluid::vtk::readHeightImage(input, "", heights, error))
+  {
+    vtkErrorMacro("Hydraulic Erosion: the input terrain: " << error);
+    return false;
+  }
+  grid.nx = heights.nx, grid.ny = heights.ny;
+  grid.x0 = heights.origin[0], grid.y0 = heights.origin[1];
+  grid.dx = heights.spacing[0], grid.dy = heights.spacing[1];
+  grid.elevation = std::move(heights.heights);
+  const std::string gridProblem = grid.problem();
+  if (!gridProblem.empty())
+  {
+    vtkErrorMacro("Hydraulic Erosion: the input terrain: " << gridProblem);
+    return false;
+  }
+  ErosionMaps maps;
+  if (this->Method == 0)
+  {
+    this->Budget = erodeWithDroplets(this->Droplets, grid, maps, [this](double f) { return this->Progress(f); });
+  }
+  else
+  {
+    PipeErosion pipes(grid, this->Pipes);
+    for (int k = 0; k < this->Iterations; ++k)
+    {
+      pipes.step();
+      if (k % 16 == 15 && !this->Progress(static_cast<double>(k + 1) / this->Iterations))
+      {
+        break;
+      }
+    }
+    grid.elevation = pipes.elevation();
+    maps = pipes.maps();
+    this->Budget = pipes.budget();
+    arrays.emplace_back("water_depth", pipes.water());
+  }
+  arrays.emplace_back("water_flow", std::move(maps.waterFlow));
+  arrays.emplace_back("sediment_deposited", std::move(maps.sedimentDeposited));
+  arrays.emplace_back("eroded_depth", std::move(maps.erodedDepth));
+  return true;
+}
