@@ -53,7 +53,7 @@ bool readHeightImage(vtkImageData* image, const std::string& arrayName, HeightIm
   image->GetDimensions(dims);
   if (dims[2] != 1)
   {
-    error = "the image must be 2-D (one layer of points in z), got " + std::to_string(dims[2]) + " layers";
+    error = "the image must be 2D (one layer of points in z), got " + std::to_string(dims[2]) + " layers";
     return false;
   }
   const double* origin = image->GetOrigin();

@@ -52,37 +52,22 @@ public:
   static float floorFast(float x)
   {
     const float t = static_cast<float>(static_cast<int>(x));
-    return t > x ? t - 1.0f : t;
+    return t - static_cast<float>(t > x); // no branch: keeps row loops vectorisable
   }
   /// g . (x, y) for the gradient picked by the low 3 bits of h: the four diagonals (+-1, +-1)
   /// and the four axes (+-sqrt 2, 0), (0, +-sqrt 2), all of length sqrt 2.
   static float gradient2(int h, float x, float y)
   {
-    constexpr float r2 = 1.41421356f;
-    switch (h & 7)
-    {
-      case 0:
-        return x + y;
-      case 1:
-        return -x + y;
-      case 2:
-        return x - y;
-      case 3:
-        return -x - y;
-      case 4:
-        return r2 * x;
-      case 5:
-        return -r2 * x;
-      case 6:
-        return r2 * y;
-      default:
-        return -r2 * y;
-    }
+    // A table, not a switch: the gradient index is random, and a branch on it mispredicts half
+    // the time (a switch made the noise 4x slower).
+    static constexpr float gx[8] = { 1.0f, -1.0f, 1.0f, -1.0f, 1.41421356f, -1.41421356f, 0.0f, 0.0f };
+    static constexpr float gy[8] = { 1.0f, 1.0f, -1.0f, -1.0f, 0.0f, 0.0f, 1.41421356f, -1.41421356f };
+    return gx[h & 7] * x + gy[h & 7] * y;
   }
 
 private:
   int hash(int i) const { return this->Permutation[static_cast<unsigned>(i) & 511u]; }
-  std::array<std::uint8_t, 512> Permutation{};
+  std::array<std::int32_t, 512> Permutation{}; // int32, not bytes: AVX2 gathers 32-bit lanes
 };
 
 /// SplitMix64: a 64-bit hash / stream step (Steele, Lea & Flood 2014) used for every random
