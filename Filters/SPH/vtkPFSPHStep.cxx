@@ -200,6 +200,15 @@ int vtkPFSPHStep::RequestParticles(const Particles& particles, vtkInformationVec
       this->ReportError("Boundary: " + problem);
       return 0;
     }
+    const auto bad =
+      std::find_if(heights.heights.begin(), heights.heights.end(), [](float h) { return !std::isfinite(h); });
+    if (bad != heights.heights.end())
+    {
+      this->ReportError("Boundary: the height image's '" + heights.arrayName + "' is not finite at sample " +
+                        std::to_string(bad - heights.heights.begin()) +
+                        " (fill no-data with Terrain From Image first)");
+      return 0;
+    }
     boundary = parafluid::vtk::heightSurface(heights.heights, heights.nx, heights.ny, heights.origin, heights.spacing);
   }
 

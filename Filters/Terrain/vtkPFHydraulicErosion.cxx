@@ -56,8 +56,10 @@ bool vtkPFHydraulicErosion::ComputeTerrain(vtkInformationVector** inputVector, p
   using namespace parafluid::terrain;
   parafluid::vtk::ParameterCheck check;
   check.inRange("Iterations", this->Iterations, 0, 1e7);
-  const std::string problem = this->Method == 0 ? this->Droplets.problem() : this->Pipes.problem();
-  check.require(problem.empty(), problem);
+  // Both methods' settings are checked, the unused one too: a value outside its range is refused
+  // by name whichever method is on (switching methods later must not meet it unannounced).
+  const std::string dropletProblem = this->Droplets.problem(), pipeProblem = this->Pipes.problem();
+  check.require(dropletProblem.empty(), dropletProblem).require(pipeProblem.empty(), pipeProblem);
   if (!check.ok())
   {
     vtkErrorMacro("Hydraulic Erosion: " << check.problem());

@@ -1,8 +1,13 @@
-// Peer comparison of the terrain noise (issue 22): FastNoise Lite (Auburn, MIT; header fetched by
-// fastnoise_peer.sh, not part of the build) against ParaFluid's fractalRow, same process, same
-// grid (1024^2), same 8 octaves of 2-D Perlin fBm (lacunarity 2, gain 0.5), rows split over
-// OpenMP threads the same way. Prints samples/s of both, and single-octave Perlin samples/s.
+// Peer comparison of the terrain noise (issue 22): FastNoise Lite (Auburn, MIT; one header) and,
+// when built with PARAFLUID_WITH_FASTNOISE2, FastNoise2 (Auburn, MIT; SIMD, run-time dispatch)
+// against ParaFluid's fractalRow: same process, same grid (1024^2), same 8 octaves of 2-D Perlin
+// fBm (lacunarity 2, gain 0.5), rows split over OpenMP threads the same way. Prints samples/s of
+// each, and single-octave Perlin samples/s. The peers are fetched and built by
+// fastnoise_peer.sh, outside the CMake build.
 #include "FastNoiseLite.h"
+#ifdef PARAFLUID_WITH_FASTNOISE2
+#include <FastNoise/FastNoise.h>
+#endif
 #include "parafluid/terrain/FractalNoise.h"
 
 #include <omp.h>
@@ -67,6 +72,27 @@ int main(int argc, char** argv)
     std::printf("%d octave(s), %d thread(s), 1024^2: ParaFluid %.1f M samples/s, FastNoise Lite %.1f M samples/s "
                 "(ratio %.2f)\n",
                 octaves, threads, ours / 1e6, theirs / 1e6, ours / theirs);
+#ifdef PARAFLUID_WITH_FASTNOISE2
+    auto perlin = FastNoise::New<FastNoise::Perlin>();
+    FastNoise::SmartNode<FastNoise::Generator> generator = perlin;
+    if (octaves > 1)
+    {
+      auto fbm = FastNoise::New<FastNoise::FractalFBm>();
+      fbm->SetSource(perlin);
+      fbm->SetOctaveCount(octaves);
+      fbm->SetGain(0.5f);
+      fbm->SetLacunarity(2.0f);
+      generator = fbm;
+    }
+    const double simd = samplesPerSecond(n,
+                                         [&](int j, float* row) {
+                                           generator->GenUniformGrid2D(row, 0.0f, static_cast<float>(j) / 512.0f, n, 1,
+                                                                       1.0f / 512.0f, 1.0f / 512.0f, 1337);
+                                         });
+    std::printf("%d octave(s), %d thread(s), 1024^2: FastNoise2 (SIMD) %.1f M samples/s (ParaFluid / FastNoise2 "
+                "%.2f)\n",
+                octaves, threads, simd / 1e6, ours / simd);
+#endif
   }
   return 0;
 }

@@ -21,6 +21,7 @@ BAD = [float("nan"), float("inf"), float("-inf"), 0.0, -1.0, 1e30]
 
 block = ParticleBlock(BlockBounds=[0, 0.1, 0, 0.1, 0, 0.1], Spacing=0.025, DomainBounds=[0, 0.2, 0, 0.2, 0, 0.2])
 terrain = Plane(Origin=[-1, -1, -0.5], Point1=[1, -1, -0.5], Point2=[-1, 1, -0.5])
+small_terrain = ProceduralTerrain(Resolution=[17, 17], Extent=[100, 100])
 MAKERS = {
     "ParticleBlock": lambda: ParticleBlock(BlockBounds=[0, 0.1, 0, 0.1, 0, 0.1], Spacing=0.025,
                                            DomainBounds=[0, 0.2, 0, 0.2, 0, 0.2]),
@@ -30,6 +31,9 @@ MAKERS = {
     "FluidFlowLines": lambda: FluidFlowLines(Input=block),
     "FoamParticles": lambda: FoamParticles(Input=block),
     "GerstnerOcean": lambda: GerstnerOcean(Resolution=[16, 16], BathymetryResolution=16),
+    "ProceduralTerrain": lambda: ProceduralTerrain(Resolution=[17, 17]),
+    "TerrainFromImage": lambda: TerrainFromImage(Input=small_terrain),
+    "HydraulicErosion": lambda: HydraulicErosion(Input=small_terrain, Drops=200, Iterations=20),
 }
 # (proxy, property) -> function(values) -> True when the values are valid (must run), False when
 # they must be refused. Properties not listed follow their XML domain.
@@ -44,6 +48,9 @@ SPECIAL = {
     ("SPHStep", "DomainBounds"): lambda b: all(v == 0 for v in b) or (
         bounds_valid(b) and all(b[2 * a] < b[2 * a + 1] for a in range(3))),
     ("SPHStep", "Gravity"): lambda g: all(math.isfinite(v) and abs(v) < 1e6 for v in g),
+    # terrain: an origin anywhere a float can place it; NoDataValue any number (NaN is no-data anyway)
+    ("ProceduralTerrain", "Origin"): lambda o: all(math.isfinite(v) and abs(v) <= 1e9 for v in o),
+    ("TerrainFromImage", "NoDataValue"): lambda v: True,
     ("GerstnerOcean", "Origin"): lambda o: all(math.isfinite(v) and abs(v) < 1e12 for v in o),
     ("GerstnerOcean", "SeaLevel"): lambda v: math.isfinite(v[0]) and abs(v[0]) < 1e12,
     ("GerstnerOcean", "WindDirection"): lambda v: math.isfinite(v[0]) and abs(v[0]) < 1e12,

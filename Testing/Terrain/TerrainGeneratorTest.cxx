@@ -103,13 +103,18 @@ TEST(TerrainGenerator, WarpingMovesTheTerrainAndRowsMatchPointSamples)
     difference += std::fabs(a.elevation[k] - b.elevation[k]);
   }
   EXPECT_GT(difference / a.size(), 1.0);
-  // The row evaluation (octave by octave) gives fractal() point by point.
+  // The row evaluation (octave by octave, 8 points at a time) gives fractal() point by point.
   const PerlinNoise noise(plain.seed);
-  std::vector<float> row(64);
-  fractalRow(noise, plain.fractal, 3.7f, 0.05f, 1.3f, 64, row.data());
-  for (int i = 0; i < 64; ++i)
+  for (const FractalType type : { FractalType::FBm, FractalType::Turbulence, FractalType::Ridged })
   {
-    EXPECT_NEAR(row[static_cast<std::size_t>(i)], fractal(noise, plain.fractal, 3.7f + 0.05f * i, 1.3f), 1e-5f);
+    FractalSettings settings = plain.fractal;
+    settings.type = type;
+    std::vector<float> row(67);
+    fractalRow(noise, settings, 3.7f, 0.05f, 1.3f, 67, row.data());
+    for (int i = 0; i < 67; ++i)
+    {
+      EXPECT_NEAR(row[static_cast<std::size_t>(i)], fractal(noise, settings, 3.7f + 0.05f * i, 1.3f), 1e-5f);
+    }
   }
 }
 

@@ -145,6 +145,23 @@ all_nan = TerrainFromImage(Input=nan_image)
 catcher = pftest.ErrorCatcher(all_nan)
 all_nan.UpdatePipeline()
 check("no-data" in catcher.text() and "'h'" in catcher.text(), "all-NaN image refused by name: %r" % catcher.text())
+# A height image with a NaN: erosion and SPH Step's Boundary refuse it by name (Terrain From Image
+# is the way to fill it).
+holed = ProgrammableSource(OutputDataSetType="vtkImageData")
+holed.Script = nan_image.Script.replace("np.full(64, np.nan, dtype=np.float32)",
+                                        "np.where(np.arange(64) == 9, np.nan, 1.0).astype(np.float32)")
+holed.ScriptRequestInformation = nan_image.ScriptRequestInformation
+erode_nan = HydraulicErosion(Input=holed, Drops=10)
+catcher = pftest.ErrorCatcher(erode_nan)
+erode_nan.UpdatePipeline()
+check("not finite" in catcher.text() and "NoDataValue" in catcher.text(), "NaN terrain refused: %r" % catcher.text())
+filled = pftest.point_array(fetch_port(TerrainFromImage(Input=holed), 0), "elevation")
+check(np.all(filled == 1.0), "the NaN filled from its neighbours")
+water_block = ParticleBlock(Spacing=0.5, BlockBounds=[1, 3, 1, 3, 2, 3], DomainBounds=[0, 7, 0, 7, -1, 5])
+nan_boundary = SPHStep(Input=water_block, Boundary=holed, NumberOfOutputs=1)
+catcher = pftest.ErrorCatcher(nan_boundary)
+nan_boundary.UpdatePipeline(nan_boundary.TimestepValues[-1])
+check("Boundary" in catcher.text(), "SPH Step names its Boundary for a NaN height: %r" % catcher.text())
 huge = ProceduralTerrain(Octaves=24, Lacunarity=16)
 catcher = pftest.ErrorCatcher(huge)
 huge.UpdatePipeline()

@@ -70,16 +70,21 @@ struct DropEvent
 };
 
 /// Erosion brush: the nodes within `radius` of a centre, weighted by radius - distance.
+/// Away from the edges (reach nodes or more) the whole brush is inside the grid: its nodes are
+/// fixed offsets in the array and its normalised weights fixed too.
 struct Brush
 {
   std::vector<int> di, dj;
   std::vector<float> weight;
-  explicit Brush(float radius)
+  int reach = 0;
+  std::vector<std::ptrdiff_t> offset; // dj * nx + di
+  std::vector<float> share;           // weight / sum of weights
+  Brush(float radius, int nx)
   {
-    const int r = static_cast<int>(std::ceil(radius));
-    for (int b = -r; b <= r; ++b)
+    reach = static_cast<int>(std::ceil(radius));
+    for (int b = -reach; b <= reach; ++b)
     {
-      for (int a = -r; a <= r; ++a)
+      for (int a = -reach; a <= reach; ++a)
       {
         const float d = std::sqrt(static_cast<float>(a * a + b * b));
         if (d < radius)
@@ -87,6 +92,16 @@ struct Brush
           di.push_back(a), dj.push_back(b), weight.push_back(radius - d);
         }
       }
+    }
+    float total = 0.0f;
+    for (const float w : weight)
+    {
+      total += w;
+    }
+    for (std::size_t k = 0; k < weight.size(); ++k)
+    {
+      offset.push_back(static_cast<std::ptrdiff_t>(dj[k]) * nx + di[k]);
+      share.push_back(weight[k] / total);
     }
   }
 };
@@ -204,7 +219,7 @@ SedimentBudget erodeWithDroplets(const DropletSettings& s, ElevationGrid& grid, 
     h[k] = static_cast<float>(grid.elevation[k] / unit);
   }
   std::vector<float> erodedUnits(n, 0.0f), depositedUnits(n, 0.0f);
-  const Brush brush(s.radius);
+  const Brush brush(s.radius, nx);
   const std::uint64_t key = splitMix64(s.seed ^ 0x64726f70ull);
   const auto batch = static_cast<long long>(s.batchSize);
   std::vector<DropEvent> events(static_cast<std::size_t>(batch) * static_cast<std::size_t>(s.maxSteps));
@@ -260,6 +275,25 @@ SedimentBudget erodeWithDroplets(const DropletSettings& s, ElevationGrid& grid, 
           // The brush at the node nearest the drop, renormalised over the nodes inside the grid.
           const int ci = static_cast<int>(e->i) + (e->fx >= 0.5f ? 1 : 0);
           const int cj = static_cast<int>(e->j) + (e->fy >= 0.5f ? 1 : 0);
+          const float amount = std::min(-e->amount, std::max(-rise, 0.0f));
+          if (!(amount > 0.0f))
+          {
+            continue;
+          }
+          sediment += amount;
+          budget.eroded += amount;
+          if (ci >= brush.reach && ci < nx - brush.reach && cj >= brush.reach && cj < ny - brush.reach)
+          {
+            float* centre = h.data() + static_cast<std::size_t>(cj) * nx + ci;
+            float* taken = erodedUnits.data() + static_cast<std::size_t>(cj) * nx + ci;
+            for (std::size_t b = 0; b < brush.share.size(); ++b)
+            {
+              const float part = amount * brush.share[b];
+              centre[brush.offset[b]] -= part;
+              taken[brush.offset[b]] += part;
+            }
+            continue;
+          }
           float total = 0.0f;
           for (std::size_t b = 0; b < brush.weight.size(); ++b)
           {
@@ -267,12 +301,6 @@ SedimentBudget erodeWithDroplets(const DropletSettings& s, ElevationGrid& grid, 
             brushWeights[b] = (a >= 0 && a < nx && c >= 0 && c < ny) ? brush.weight[b] : 0.0f;
             total += brushWeights[b];
           }
-          const float amount = std::min(-e->amount, std::max(-rise, 0.0f));
-          if (!(amount > 0.0f))
-          {
-            continue;
-          }
-          sediment += amount;
           for (std::size_t b = 0; b < brush.weight.size(); ++b)
           {
             if (brushWeights[b] > 0.0f)
@@ -283,7 +311,6 @@ SedimentBudget erodeWithDroplets(const DropletSettings& s, ElevationGrid& grid, 
               erodedUnits[node] += taken;
             }
           }
-          budget.eroded += amount;
         }
       }
       budget.carried += sediment;

@@ -1,6 +1,8 @@
 #include "parafluid/terrain/FractalNoise.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace parafluid::terrain
 {
@@ -70,18 +72,45 @@ float fractal(const PerlinNoise& noise, const FractalSettings& s, float x, float
   return sum * normalisation(s);
 }
 
-void fractalRow(const PerlinNoise& noise, const FractalSettings& s, float x0, float dx, float y, int n, float* out)
+void fractalPoints(const PerlinNoise& noise, const FractalSettings& s, const float* x, const float* y, int n,
+                   float* out)
 {
+  // Per-thread scratch: rows are evaluated by many threads, each reusing its own buffers.
+  thread_local std::vector<float> xo, yo, raw, weight;
+  xo.resize(static_cast<std::size_t>(n)), yo.resize(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i)
   {
     out[i] = 0.0f;
   }
   if (s.type == FractalType::Ridged)
   {
-    // The weight chains octave to octave per sample: sample by sample.
+    // |noise| of each octave over all points, then the ridge and the weight that chains one
+    // octave to the next, point by point (the same arithmetic as fractal()).
+    weight.assign(static_cast<std::size_t>(n), 1.0f);
+    float amplitude = 1.0f, frequency = 1.0f;
+    for (int o = 0; o < s.octaves; ++o)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        xo[static_cast<std::size_t>(i)] = x[i] * frequency + kOctaveShiftX * o;
+        yo[static_cast<std::size_t>(i)] = y[i] * frequency + kOctaveShiftY * o;
+      }
+      raw.assign(static_cast<std::size_t>(n), 0.0f);
+      noise.accumulate(xo.data(), yo.data(), n, 1.0f, true, raw.data());
+      for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i)
+      {
+        float signal = s.ridgeOffset - raw[i];
+        signal *= signal * weight[i];
+        weight[i] = std::min(1.0f, std::max(0.0f, signal * s.ridgeGain));
+        out[i] += amplitude * signal;
+      }
+      amplitude *= s.persistence;
+      frequency *= s.lacunarity;
+    }
+    const float scale = normalisation(s);
     for (int i = 0; i < n; ++i)
     {
-      out[i] = fractal(noise, s, x0 + dx * static_cast<float>(i), y);
+      out[i] *= scale;
     }
     return;
   }
@@ -89,24 +118,26 @@ void fractalRow(const PerlinNoise& noise, const FractalSettings& s, float x0, fl
   float amplitude = normalisation(s), frequency = 1.0f;
   for (int o = 0; o < s.octaves; ++o)
   {
-    const float yo = y * frequency + kOctaveShiftY * o, xo = kOctaveShiftX * o;
-    // Two loops rather than a test inside one: a branch in the loop stops vectorisation.
-    if (absolute)
+    for (int i = 0; i < n; ++i)
     {
-      for (int i = 0; i < n; ++i)
-      {
-        out[i] += amplitude * std::fabs(noise.noise((x0 + dx * static_cast<float>(i)) * frequency + xo, yo));
-      }
+      xo[static_cast<std::size_t>(i)] = x[i] * frequency + kOctaveShiftX * o;
+      yo[static_cast<std::size_t>(i)] = y[i] * frequency + kOctaveShiftY * o;
     }
-    else
-    {
-      for (int i = 0; i < n; ++i)
-      {
-        out[i] += amplitude * noise.noise((x0 + dx * static_cast<float>(i)) * frequency + xo, yo);
-      }
-    }
+    noise.accumulate(xo.data(), yo.data(), n, amplitude, absolute, out);
     amplitude *= s.persistence;
     frequency *= s.lacunarity;
   }
+}
+
+void fractalRow(const PerlinNoise& noise, const FractalSettings& s, float x0, float dx, float y, int n, float* out)
+{
+  thread_local std::vector<float> xs, ys;
+  xs.resize(static_cast<std::size_t>(n));
+  ys.assign(static_cast<std::size_t>(n), y);
+  for (int i = 0; i < n; ++i)
+  {
+    xs[static_cast<std::size_t>(i)] = x0 + dx * static_cast<float>(i);
+  }
+  fractalPoints(noise, s, xs.data(), ys.data(), n, out);
 }
 } // namespace parafluid::terrain

@@ -33,6 +33,11 @@ std::string PipeSettings::problem() const
   return {};
 }
 
+// Layout: every field has a ring of ghost cells around the grid (row stride nx + 2), so a cell's
+// four neighbours are always inside the array and the loops below have no branches on the grid's
+// edges (they vectorise). Ghost cells are never written: their water, sediment and fluxes stay 0,
+// so nothing flows in from outside; flows out through an edge and the edge's tilt are masked
+// with selects on the index.
 PipeErosion::PipeErosion(const ElevationGrid& terrain, const PipeSettings& settings)
   : Settings(settings)
   , NX(terrain.nx)
@@ -49,13 +54,30 @@ PipeErosion::PipeErosion(const ElevationGrid& terrain, const PipeSettings& setti
   {
     throw std::invalid_argument(problem);
   }
-  const std::size_t n = terrain.size();
-  this->B = terrain.elevation;
-  for (auto* field : { &this->D, &this->S, &this->S2, &this->FL, &this->FR, &this->FB, &this->FT, &this->Q,
+  const std::size_t padded = static_cast<std::size_t>(this->NX + 2) * static_cast<std::size_t>(this->NY + 2);
+  for (auto* field : { &this->B, &this->D, &this->S, &this->S2, &this->FL, &this->FR, &this->FB, &this->FT, &this->Q,
                        &this->Delta, &this->Eroded, &this->Deposited, &this->Outflow })
   {
-    field->assign(n, 0.0f);
+    field->assign(padded, 0.0f);
   }
+  for (int j = 0; j < this->NY; ++j)
+  {
+    for (int i = 0; i < this->NX; ++i)
+    {
+      this->B[this->cell(i, j)] = terrain.at(i, j);
+    }
+  }
+}
+
+std::vector<float> PipeErosion::unpadded(const std::vector<float>& field) const
+{
+  std::vector<float> values(static_cast<std::size_t>(this->NX) * static_cast<std::size_t>(this->NY));
+  for (int j = 0; j < this->NY; ++j)
+  {
+    std::copy_n(field.begin() + static_cast<std::ptrdiff_t>(this->cell(0, j)), this->NX,
+                values.begin() + static_cast<std::ptrdiff_t>(j) * this->NX);
+  }
+  return values;
 }
 
 void PipeErosion::step()
@@ -66,161 +88,206 @@ void PipeErosion::step()
   ++this->Steps;
 }
 
+namespace
+{
+// One row of each pass. The row's fields come in as restrict parameters (GCC honours restrict on
+// parameters, not on local pointers), so the loops vectorise without run-time alias checks.
+// "below"/"above" are the same fields one row down/up; they are only read.
+
+struct FluxConstants
+{
+  float kx, ky, dt, area, rain;
+  bool bottomOpen, topOpen;
+};
+
+void fluxRow(int nx, const FluxConstants c, const float* __restrict b, const float* __restrict bBelow,
+             const float* __restrict bAbove, const float* __restrict d, const float* __restrict dBelow,
+             const float* __restrict dAbove, float* __restrict fL, float* __restrict fR, float* __restrict fB,
+             float* __restrict fT, float* __restrict q)
+{
+  for (int i = 0; i < nx; ++i)
+  {
+    const float h = b[i] + d[i];
+    const float l = std::max(0.0f, fL[i] + c.kx * (h - b[i - 1] - d[i - 1]));
+    const float r = std::max(0.0f, fR[i] + c.kx * (h - b[i + 1] - d[i + 1]));
+    const float down = std::max(0.0f, fB[i] + c.ky * (h - bBelow[i] - dBelow[i]));
+    const float up = std::max(0.0f, fT[i] + c.ky * (h - bAbove[i] - dAbove[i]));
+    // Walls: nothing flows out through the grid's edges.
+    const float fl = i > 0 ? l : 0.0f, fr = i < nx - 1 ? r : 0.0f;
+    const float fb = c.bottomOpen ? down : 0.0f, ft = c.topOpen ? up : 0.0f;
+    const float water = (d[i] + c.rain) * c.area;
+    const float out = (fl + fr + fb + ft) * c.dt;
+    // No cell gives more water than it holds (out > water implies out > 0).
+    const float scale = out > water ? water / out : 1.0f;
+    fL[i] = fl * scale, fR[i] = fr * scale, fB[i] = fb * scale, fT[i] = ft * scale;
+    // The fraction of the cell's water (and sediment) one unit of flux takes in a step.
+    q[i] = water > 1e-12f ? c.dt / water : 0.0f;
+  }
+}
+
+struct WaterConstants
+{
+  float dt, area, rain, dissolve, deposit, evaporate, inverseCapacityDepth, invLX, invLY, dyScale, capacity, minTilt;
+};
+
+void waterRow(int nx, const WaterConstants c, const float* __restrict b, const float* __restrict bBelow,
+              const float* __restrict bAbove, const float* __restrict s, const float* __restrict fL,
+              const float* __restrict fR, const float* __restrict fB, const float* __restrict fT,
+              const float* __restrict fTBelow, const float* __restrict fBAbove, float* __restrict d,
+              float* __restrict delta, float* __restrict outflow)
+{
+  for (int i = 0; i < nx; ++i)
+  {
+    // Ghost fluxes are 0: nothing comes in from outside the grid.
+    const float inLeft = fR[i - 1], inRight = fL[i + 1], inBottom = fTBelow[i], inTop = fBAbove[i];
+    const float out = fL[i] + fR[i] + fB[i] + fT[i];
+    const float d1 = d[i] + c.rain;
+    const float d2 = std::max(0.0f, d1 + c.dt * (inLeft + inRight + inBottom + inTop - out) / c.area);
+    const float mean = 0.5f * (d1 + d2);
+    const float u = 0.5f * (inLeft - fL[i] + fR[i] - inRight) * c.invLY;
+    const float v = 0.5f * (inBottom - fB[i] + fT[i] - inTop) * c.invLX;
+    const float speed = mean > 1e-6f ? std::sqrt(u * u + v * v) / mean : 0.0f;
+    // Tilt from central differences, one-sided on the edges (the ghost values are not used).
+    const float here = b[i], east = b[i + 1], west = b[i - 1];
+    const float right = i < nx - 1 ? east : here, left = i > 0 ? west : here;
+    const float dxScale = (i > 0 && i < nx - 1) ? 0.5f * c.invLX : c.invLX;
+    const float gx = (right - left) * dxScale;
+    const float gy = (bAbove[i] - bBelow[i]) * c.dyScale;
+    const float slope2 = gx * gx + gy * gy;
+    const float sinTilt = std::sqrt(slope2 / (1.0f + slope2));
+    const float capacity =
+      c.capacity * std::max(sinTilt, c.minTilt) * speed * std::min(1.0f, d2 * c.inverseCapacityDepth);
+    // Delta > 0: ground dissolved into the water; < 0: sediment laid down.
+    delta[i] = capacity > s[i] ? c.dissolve * (capacity - s[i]) : -c.deposit * (s[i] - capacity);
+    d[i] = d2 * c.evaporate;
+    outflow[i] += out * c.dt;
+  }
+}
+
+void sedimentRow(int nx, const float* __restrict s, const float* __restrict sBelow, const float* __restrict sAbove,
+                 const float* __restrict delta, const float* __restrict deltaBelow, const float* __restrict deltaAbove,
+                 const float* __restrict fL, const float* __restrict fR, const float* __restrict fB,
+                 const float* __restrict fT, const float* __restrict fTBelow, const float* __restrict fBAbove,
+                 const float* __restrict q, const float* __restrict qBelow, const float* __restrict qAbove,
+                 float* __restrict b, float* __restrict eroded, float* __restrict deposited, float* __restrict next)
+{
+  for (int i = 0; i < nx; ++i)
+  {
+    const float change = delta[i];
+    b[i] -= change;
+    eroded[i] += std::max(change, 0.0f);
+    deposited[i] += std::max(-change, 0.0f);
+    // Suspended sediment after erosion, of this cell and (read, not written) of its neighbours;
+    // ghosts hold no sediment and no flux.
+    const float leaving = (fL[i] + fR[i] + fB[i] + fT[i]) * q[i];
+    next[i] = (s[i] + change) * (1.0f - leaving) + (s[i - 1] + delta[i - 1]) * fR[i - 1] * q[i - 1] +
+              (s[i + 1] + delta[i + 1]) * fL[i + 1] * q[i + 1] + (sBelow[i] + deltaBelow[i]) * fTBelow[i] * qBelow[i] +
+              (sAbove[i] + deltaAbove[i]) * fBAbove[i] * qAbove[i];
+  }
+}
+} // namespace
+
 void PipeErosion::computeFluxes()
 {
   const int nx = this->NX, ny = this->NY;
+  const std::ptrdiff_t stride = nx + 2;
   const float dt = this->Settings.timeStep;
-  const float area = this->LX * this->LY;
   // Pipe cross-section l^2: f += dt g dh l (per pipe of length l); rain is uniform, so it leaves
   // the differences of surface height alone and enters only the cell's own water.
-  const float kx = dt * this->Settings.gravity * this->LY, ky = dt * this->Settings.gravity * this->LX;
-  const float rain = this->Settings.rainRate * dt;
-  const float* b = this->B.data();
-  const float* d = this->D.data();
-#pragma omp parallel for schedule(static)
+  FluxConstants c{ dt * this->Settings.gravity * this->LY,
+                   dt * this->Settings.gravity * this->LX,
+                   dt,
+                   this->LX * this->LY,
+                   this->Settings.rainRate * dt,
+                   false,
+                   false };
+#pragma omp parallel for schedule(static) firstprivate(c)
   for (int j = 0; j < ny; ++j)
   {
-    for (int i = 0; i < nx; ++i)
-    {
-      const std::size_t k = static_cast<std::size_t>(j) * nx + i;
-      const float h = b[k] + d[k];
-      float fl = i > 0 ? std::max(0.0f, this->FL[k] + kx * (h - b[k - 1] - d[k - 1])) : 0.0f;
-      float fr = i < nx - 1 ? std::max(0.0f, this->FR[k] + kx * (h - b[k + 1] - d[k + 1])) : 0.0f;
-      float fb = j > 0 ? std::max(0.0f, this->FB[k] + ky * (h - b[k - nx] - d[k - nx])) : 0.0f;
-      float ft = j < ny - 1 ? std::max(0.0f, this->FT[k] + ky * (h - b[k + nx] - d[k + nx])) : 0.0f;
-      const float water = (d[k] + rain) * area;
-      const float out = (fl + fr + fb + ft) * dt;
-      if (out > water)
-      {
-        const float scale = out > 0.0f ? water / out : 0.0f;
-        fl *= scale, fr *= scale, fb *= scale, ft *= scale;
-      }
-      this->FL[k] = fl, this->FR[k] = fr, this->FB[k] = fb, this->FT[k] = ft;
-      // The fraction of the cell's water (and sediment) one unit of flux takes in a step.
-      this->Q[k] = water > 1e-12f ? dt / water : 0.0f;
-    }
+    const std::size_t k = this->cell(0, j);
+    c.bottomOpen = j > 0, c.topOpen = j < ny - 1;
+    const float *b = this->B.data() + k, *d = this->D.data() + k;
+    fluxRow(nx, c, b, b - stride, b + stride, d, d - stride, d + stride, this->FL.data() + k, this->FR.data() + k,
+            this->FB.data() + k, this->FT.data() + k, this->Q.data() + k);
   }
 }
 
 void PipeErosion::updateWaterAndErode()
 {
   const int nx = this->NX, ny = this->NY;
+  const std::ptrdiff_t stride = nx + 2;
   const PipeSettings& p = this->Settings;
-  const float dt = p.timeStep, area = this->LX * this->LY;
-  const float rain = p.rainRate * dt;
-  const float dissolve = std::min(1.0f, p.dissolveRate * dt), deposit = std::min(1.0f, p.depositRate * dt);
-  const float evaporate = std::max(0.0f, 1.0f - p.evaporation * dt);
-  const float inverseCapacityDepth = 1.0f / p.capacityDepth;
-  const float* b = this->B.data();
-#pragma omp parallel for schedule(static)
+  const float dt = p.timeStep;
+  WaterConstants c{ dt,
+                    this->LX * this->LY,
+                    p.rainRate * dt,
+                    std::min(1.0f, p.dissolveRate * dt),
+                    std::min(1.0f, p.depositRate * dt),
+                    std::max(0.0f, 1.0f - p.evaporation * dt),
+                    1.0f / p.capacityDepth,
+                    1.0f / this->LX,
+                    1.0f / this->LY,
+                    0.0f,
+                    p.capacity,
+                    p.minTilt };
+#pragma omp parallel for schedule(static) firstprivate(c)
   for (int j = 0; j < ny; ++j)
   {
-    for (int i = 0; i < nx; ++i)
-    {
-      const std::size_t k = static_cast<std::size_t>(j) * nx + i;
-      const float inLeft = i > 0 ? this->FR[k - 1] : 0.0f, inRight = i < nx - 1 ? this->FL[k + 1] : 0.0f;
-      const float inBottom = j > 0 ? this->FT[k - nx] : 0.0f, inTop = j < ny - 1 ? this->FB[k + nx] : 0.0f;
-      const float out = this->FL[k] + this->FR[k] + this->FB[k] + this->FT[k];
-      const float d1 = this->D[k] + rain;
-      const float d2 = std::max(0.0f, d1 + dt * (inLeft + inRight + inBottom + inTop - out) / area);
-      const float mean = 0.5f * (d1 + d2);
-      float speed = 0.0f;
-      if (mean > 1e-6f)
-      {
-        const float u = 0.5f * (inLeft - this->FL[k] + this->FR[k] - inRight) / (this->LY * mean);
-        const float v = 0.5f * (inBottom - this->FB[k] + this->FT[k] - inTop) / (this->LX * mean);
-        speed = std::sqrt(u * u + v * v);
-      }
-      // Tilt of the ground from central differences (one-sided at the edges).
-      const float gx = (b[i < nx - 1 ? k + 1 : k] - b[i > 0 ? k - 1 : k]) / (this->LX * ((i > 0) + (i < nx - 1)));
-      const float gy = (b[j < ny - 1 ? k + nx : k] - b[j > 0 ? k - nx : k]) / (this->LY * ((j > 0) + (j < ny - 1)));
-      const float slope2 = gx * gx + gy * gy;
-      const float sinTilt = std::sqrt(slope2 / (1.0f + slope2));
-      const float capacity =
-        p.capacity * std::max(sinTilt, p.minTilt) * speed * std::min(1.0f, d2 * inverseCapacityDepth);
-      const float s = this->S[k];
-      // Delta > 0: ground dissolved into the water; < 0: sediment laid down.
-      this->Delta[k] = capacity > s ? dissolve * (capacity - s) : -deposit * (s - capacity);
-      this->D[k] = d2 * evaporate;
-      this->Outflow[k] += out * dt;
-    }
+    const std::size_t k = this->cell(0, j);
+    c.dyScale = 1.0f / (this->LY * static_cast<float>((j > 0) + (j < ny - 1)));
+    const float* b = this->B.data() + k;
+    const float* fB = this->FB.data() + k;
+    const float* fT = this->FT.data() + k;
+    waterRow(nx, c, b, b + (j > 0 ? -stride : 0), b + (j < ny - 1 ? stride : 0), this->S.data() + k,
+             this->FL.data() + k, this->FR.data() + k, fB, fT, fT - stride, fB + stride, this->D.data() + k,
+             this->Delta.data() + k, this->Outflow.data() + k);
   }
 }
 
 void PipeErosion::transportSediment()
 {
   const int nx = this->NX, ny = this->NY;
-  double eroded = 0.0, deposited = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : eroded, deposited)
+  const std::ptrdiff_t stride = nx + 2;
+#pragma omp parallel for schedule(static)
   for (int j = 0; j < ny; ++j)
   {
-    for (int i = 0; i < nx; ++i)
-    {
-      const std::size_t k = static_cast<std::size_t>(j) * nx + i;
-      const float delta = this->Delta[k];
-      this->B[k] -= delta;
-      if (delta > 0.0f)
-      {
-        this->Eroded[k] += delta, eroded += delta;
-      }
-      else
-      {
-        this->Deposited[k] -= delta, deposited -= delta;
-      }
-      // Suspended sediment after erosion, of this cell and (read, not written) of its neighbours.
-      const auto suspended = [&](std::size_t c) { return this->S[c] + this->Delta[c]; };
-      const float leaving = (this->FL[k] + this->FR[k] + this->FB[k] + this->FT[k]) * this->Q[k];
-      float value = suspended(k) * (1.0f - leaving);
-      if (i > 0)
-      {
-        value += suspended(k - 1) * this->FR[k - 1] * this->Q[k - 1];
-      }
-      if (i < nx - 1)
-      {
-        value += suspended(k + 1) * this->FL[k + 1] * this->Q[k + 1];
-      }
-      if (j > 0)
-      {
-        value += suspended(k - nx) * this->FT[k - nx] * this->Q[k - nx];
-      }
-      if (j < ny - 1)
-      {
-        value += suspended(k + nx) * this->FB[k + nx] * this->Q[k + nx];
-      }
-      this->S2[k] = value;
-    }
+    const std::size_t k = this->cell(0, j);
+    const float *s = this->S.data() + k, *delta = this->Delta.data() + k, *q = this->Q.data() + k;
+    const float *fB = this->FB.data() + k, *fT = this->FT.data() + k;
+    sedimentRow(nx, s, s - stride, s + stride, delta, delta - stride, delta + stride, this->FL.data() + k,
+                this->FR.data() + k, fB, fT, fT - stride, fB + stride, q, q - stride, q + stride, this->B.data() + k,
+                this->Eroded.data() + k, this->Deposited.data() + k, this->S2.data() + k);
   }
   this->S.swap(this->S2);
-  const double area = static_cast<double>(this->LX) * this->LY;
-  this->ErodedTotal += eroded * area;
-  this->DepositedTotal += deposited * area;
 }
 
 ErosionMaps PipeErosion::maps() const
 {
   ErosionMaps m;
-  m.waterFlow = this->Outflow;
+  m.waterFlow = this->unpadded(this->Outflow);
   const float time = this->Steps > 0 ? this->Settings.timeStep * static_cast<float>(this->Steps) : 1.0f;
   for (float& f : m.waterFlow)
   {
     f /= time;
   }
-  m.sedimentDeposited = this->Deposited;
-  m.erodedDepth = this->Eroded;
+  m.sedimentDeposited = this->unpadded(this->Deposited);
+  m.erodedDepth = this->unpadded(this->Eroded);
   return m;
 }
 
 SedimentBudget PipeErosion::budget() const
 {
-  SedimentBudget b;
-  b.eroded = this->ErodedTotal;
-  b.deposited = this->DepositedTotal;
-  double suspended = 0.0;
-  for (const float s : this->S)
+  // Summed from the per-cell maps (the totals are only wanted at the end).
+  double eroded = 0.0, deposited = 0.0, suspended = 0.0;
+  for (std::size_t k = 0; k < this->S.size(); ++k)
   {
-    suspended += s;
+    eroded += this->Eroded[k], deposited += this->Deposited[k], suspended += this->S[k];
   }
-  b.carried = suspended * this->LX * this->LY;
+  const double area = static_cast<double>(this->LX) * this->LY;
+  SedimentBudget b;
+  b.eroded = eroded * area;
+  b.deposited = deposited * area;
+  b.carried = suspended * area;
   return b;
 }
 } // namespace parafluid::terrain

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace parafluid::terrain
 {
@@ -57,8 +58,8 @@ std::string TerrainSettings::problem() const
 
 namespace
 {
-/// Rows per progress report.
-constexpr int kRowsPerReport = 32;
+/// Rows per progress report (and per parallel region: fewer regions keep both cores busy).
+constexpr int kRowsPerReport = 128;
 
 bool forEachRowBlock(int ny, const std::function<bool(double)>& progress, const std::function<void(int)>& row)
 {
@@ -161,14 +162,29 @@ bool generateTerrain(const TerrainSettings& s, ElevationGrid& grid, const std::f
   return forEachRowBlock(grid.ny, progress,
                          [&](int j)
                          {
-                           const auto y = static_cast<float>(oy + sy * j);
-                           for (int i = 0; i < grid.nx; ++i)
+                           const std::size_t n = static_cast<std::size_t>(grid.nx);
+                           std::vector<float> x(n), y(n), u(n), v(n), wx(n), wy(n);
+                           const auto row = static_cast<float>(oy + sy * j);
+                           for (std::size_t i = 0; i < n; ++i)
                            {
-                             const auto x = static_cast<float>(ox + sx * i);
-                             const float wx = fractal(warpNoise, w, x * toWarp, y * toWarp);
-                             const float wy = fractal(warpNoise, w, x * toWarp + 5.2f, y * toWarp + 1.3f);
-                             grid.elevation[grid.index(i, j)] =
-                               base + scale * fractal(noise, f, x + strength * wx, y + strength * wy);
+                             x[i] = static_cast<float>(ox + sx * static_cast<double>(i));
+                             u[i] = x[i] * toWarp, v[i] = row * toWarp;
+                           }
+                           fractalPoints(warpNoise, w, u.data(), v.data(), grid.nx, wx.data());
+                           for (std::size_t i = 0; i < n; ++i)
+                           {
+                             u[i] += 5.2f, v[i] += 1.3f;
+                           }
+                           fractalPoints(warpNoise, w, u.data(), v.data(), grid.nx, wy.data());
+                           for (std::size_t i = 0; i < n; ++i)
+                           {
+                             u[i] = x[i] + strength * wx[i], v[i] = row + strength * wy[i];
+                           }
+                           float* out = grid.elevation.data() + grid.index(0, j);
+                           fractalPoints(noise, f, u.data(), v.data(), grid.nx, out);
+                           for (std::size_t i = 0; i < n; ++i)
+                           {
+                             out[i] = base + scale * out[i];
                            }
                          });
 }

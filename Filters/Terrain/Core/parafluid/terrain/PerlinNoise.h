@@ -5,6 +5,7 @@
 // The noise is 0 at every lattice point.
 #include <array>
 #include <cstdint>
+#include <vector>
 
 namespace parafluid::terrain
 {
@@ -38,6 +39,14 @@ public:
     const float lower = n00 + u * (n10 - n00), upper = n01 + u * (n11 - n01);
     return lower + v * (upper - lower);
   }
+  /// out[i] += amplitude * noise(x[i], y[i]) (|noise| with `absolute`) for i < n: the fractal
+  /// sums' inner loop. On CPUs with AVX2 eight samples at a time (gathers from the permutation);
+  /// the same operations in the same order without fused multiply-adds, so the values are those
+  /// of noise() one by one, bit for bit.
+  void accumulate(const float* x, const float* y, int n, float amplitude, bool absolute, float* out) const;
+  /// True when accumulate() runs 8-wide (AVX2) on this CPU.
+  static bool vectorised();
+
   /// 3-D noise; |value| <= kBound3D.
   float noise(float x, float y, float z) const;
   /// 2-D noise and its analytic gradient (d/dx, d/dy).
@@ -67,7 +76,12 @@ public:
 
 private:
   int hash(int i) const { return this->Permutation[static_cast<unsigned>(i) & 511u]; }
-  std::array<std::int32_t, 512> Permutation{}; // int32, not bytes: AVX2 gathers 32-bit lanes
+  std::array<std::int32_t, 512> Permutation{};
+  /// Corner hashes tabulated: Corners[x * kCornerStride + y] = P[P[x] + y] for x, y in 0..256
+  /// (P: the doubled permutation), the value noise() computes for the corner (x, y) of a cell.
+  /// The batched evaluation reads a corner and its neighbour in y with one 2-byte load.
+  static constexpr int kCornerStride = 258;
+  std::vector<std::uint8_t> Corners;
 };
 
 /// SplitMix64: a 64-bit hash / stream step (Steele, Lea & Flood 2014) used for every random

@@ -44,10 +44,11 @@ public:
   void step();
   int steps() const { return this->Steps; }
 
-  /// The terrain as it is now (elevation only; origin and spacing of the input).
-  const std::vector<float>& elevation() const { return this->B; }
-  const std::vector<float>& water() const { return this->D; }
-  const std::vector<float>& suspendedSediment() const { return this->S; }
+  /// The terrain as it is now (elevation only; origin and spacing of the input), nx * ny values.
+  std::vector<float> elevation() const { return this->unpadded(this->B); }
+  /// Water depth [m] and suspended sediment [m] per cell.
+  std::vector<float> water() const { return this->unpadded(this->D); }
+  std::vector<float> suspendedSediment() const { return this->unpadded(this->S); }
   /// waterFlow: the time-averaged outflow [m^3/s] of each cell; deposited and eroded heights [m].
   ErosionMaps maps() const;
   /// eroded, deposited [m^3] so far; carried: sediment suspended in the water now [m^3].
@@ -57,13 +58,18 @@ private:
   void computeFluxes();
   void updateWaterAndErode();
   void transportSediment();
+  /// Index of cell (i, j) in the padded fields (a ghost ring around the grid).
+  std::size_t cell(int i, int j) const
+  {
+    return static_cast<std::size_t>(j + 1) * static_cast<std::size_t>(this->NX + 2) + static_cast<std::size_t>(i + 1);
+  }
+  std::vector<float> unpadded(const std::vector<float>& field) const;
 
   PipeSettings Settings;
   int NX, NY;
   float LX, LY;
   std::vector<float> B, D, S, S2, FL, FR, FB, FT, Q, Delta;
   std::vector<float> Eroded, Deposited, Outflow;
-  double ErodedTotal = 0.0, DepositedTotal = 0.0;
   int Steps = 0;
 };
 } // namespace parafluid::terrain
