@@ -2,8 +2,8 @@
 vtkImageDifference, thresholded error <= 10):
  - terrain_eroded.png: a domain-warped fBm terrain eroded by 60k droplets, its surface coloured by
    elevation with the ParaFluid Terrain preset (Plugins/ParaFluid/TerrainElevation.json);
- - terrain_water.png: SPH water released on a procedural slope, running down it (t = 0.3 s),
-   drawn as spheres over the terrain.
+ - terrain_water.png: SPH water released on a procedural slope eroded by droplets, running down
+   it (t = 0.2 s), drawn as spheres over the terrain.
 To refresh: PARAFLUID_UPDATE_BASELINE=1 ctest -R terrain_images"""
 import os
 
@@ -57,8 +57,8 @@ view = view_with([200.0, -700.0, 1100.0], [1000.0, 1000.0, -100.0])
 show_terrain(eroded, view)
 snapshot(view, "terrain_eroded.png")
 
-slope = ProceduralTerrain(Extent=[0.8, 0.4], Resolution=[41, 21], FeatureSize=0.6, HeightScale=0.08, BaseHeight=0.1,
-                          Seed=5)
+slope = HydraulicErosion(Input=ProceduralTerrain(Extent=[0.8, 0.4], Resolution=[41, 21], FeatureSize=0.6,
+                                                  HeightScale=0.08, BaseHeight=0.1, Seed=5), Drops=300)
 heights = pftest.point_array(pftest.fetch(slope), "elevation").reshape(21, 41)
 jm, im = np.unravel_index(np.argmax(heights[4:-4, 4:-4]), heights[4:-4, 4:-4].shape)
 cx, cy = (im + 4) * 0.02, (jm + 4) * 0.02
@@ -66,7 +66,7 @@ bottom = float(heights[jm:jm + 9, im:im + 9].max()) + 0.01
 block = ParticleBlock(Spacing=0.01, BlockBounds=[cx - 0.04, cx + 0.04, cy - 0.04, cy + 0.04, bottom, bottom + 0.04],
                       DomainBounds=[0, 0.8, 0, 0.4, float(heights.min()) - 0.05, float(heights.max()) + 0.2])
 water = SPHStep(Input=block, Boundary=OutputPort(slope, 1), OutputInterval=0.1, NumberOfOutputs=3)
-view = view_with([0.4, -0.55, 0.55], [0.4, 0.2, 0.08])
+view = view_with([0.35, -0.3, 0.4], [0.6, 0.2, 0.08])
 show_terrain(slope, view)
 drops = Show(water, view)
 drops.SetRepresentationType("Points")

@@ -6,7 +6,7 @@ import os
 import numpy as np
 from paraview.simple import *
 from vtkmodules.vtkCommonDataModel import vtkImageData
-from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkIOImage import vtkPNGWriter, vtkTIFFWriter
 from vtkmodules.util.numpy_support import numpy_to_vtk
 import pftest
 
@@ -105,6 +105,33 @@ values = pftest.point_array(png_terrain, "elevation")
 check(png_terrain.GetSpacing()[0] == 5.0, "Spacing applied: %s" % (png_terrain.GetSpacing(),))
 check(abs(values.max() - 0.01 * heights16.max()) < 1e-3 and values.min() == 0.0,
       "16-bit values kept (max %g, expected %g)" % (values.max(), 0.01 * heights16.max()))
+
+# --- a GeoTIFF DEM through ParaView's own GDAL Raster Reader (a vtkUniformGrid, heights as cell
+# data "Elevation", rows north-up): every terrain consumer takes it as it is ---
+tif = os.path.join(out, "dem.tif")
+raw_dem = vtkImageData()
+raw_dem.SetDimensions(24, 16, 1)
+jj, ii = np.mgrid[0:16, 0:24]
+dem_values = (50.0 + 3.0 * ii + 2.0 * jj + 10.0 * np.sin(ii / 3.0)).astype(np.float32)
+raw_dem.GetPointData().SetScalars(numpy_to_vtk(dem_values.ravel(), deep=True))
+tiff_writer = vtkTIFFWriter()
+tiff_writer.SetFileName(tif)
+tiff_writer.SetInputData(raw_dem)
+tiff_writer.Write()
+gdal = GDALRasterReader(FileName=tif)
+check(fetch_port(gdal, 0).GetCellData().GetNumberOfArrays() == 1, "the GDAL reader gives cell data")
+from_gdal = pftest.point_array(fetch_port(TerrainFromImage(Input=gdal), 0), "elevation")
+check(len(from_gdal) == 24 * 16 and abs(from_gdal.max() - dem_values.max()) < 1e-3, "DEM heights kept")
+gdal_eroded = HydraulicErosion(Input=gdal, Drops=300)
+check(fetch_port(gdal_eroded, 0).GetDimensions() == (24, 16, 1), "erosion takes the DEM as it is")
+for consumer in (GerstnerOcean(Bathymetry=gdal, Resolution=[16, 16], SeaLevel=80),
+                 SPHStep(Input=ParticleBlock(Spacing=2.0, BlockBounds=[4, 10, 4, 10, 130, 136],
+                                             DomainBounds=[0, 24, 0, 16, 40, 150]), Boundary=gdal,
+                         NumberOfOutputs=1)):
+    catcher = pftest.ErrorCatcher(consumer)
+    times = consumer.TimestepValues
+    consumer.UpdatePipeline(times[-1] if times else 0.0)
+    check(not catcher.text(), "%s takes the DEM: %r" % (consumer.GetXMLLabel(), catcher.text()))
 
 # --- Hydraulic Erosion: both methods close their sediment budget ---
 hills = ProceduralTerrain(Extent=[640, 640], Resolution=[129, 129], HeightScale=60, FeatureSize=400)

@@ -1,6 +1,7 @@
-"""Terrain to SPH: a procedural terrain's surface (output 1) as SPH Step's Boundary; water released
-over its highest ground runs downhill: its centre of mass descends, it moves to lower ground, and
-no particle ever gets under the terrain. The height image (output 0) is taken as a Boundary too."""
+"""Terrain to SPH: a procedural terrain, eroded by droplets, its surface (output 1) as SPH Step's
+Boundary; water released over its highest ground runs downhill: its centre of mass descends, it
+moves to lower ground, and no particle ever gets under the terrain. The height image (output 0) is
+taken as a Boundary too."""
 import numpy as np
 from paraview.simple import *
 import pftest
@@ -8,8 +9,9 @@ import pftest
 pftest.load(globals())
 check = pftest.check
 
-terrain = ProceduralTerrain(Extent=[0.8, 0.4], Resolution=[41, 21], FeatureSize=0.6, HeightScale=0.08,
-                            BaseHeight=0.1, Seed=5)
+hills = ProceduralTerrain(Extent=[0.8, 0.4], Resolution=[41, 21], FeatureSize=0.6, HeightScale=0.08,
+                          BaseHeight=0.1, Seed=5)
+terrain = HydraulicErosion(Input=hills, Drops=300)
 image = pftest.fetch(terrain)
 nx, ny = 41, 21
 h = pftest.point_array(image, "elevation").reshape(ny, nx)
