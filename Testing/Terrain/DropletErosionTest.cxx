@@ -9,6 +9,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace
@@ -26,6 +27,9 @@ TEST(DropletErosion, ErodedEqualsDepositedPlusCarried)
   const SedimentBudget budget = erodeWithDroplets(s, g, maps);
   ASSERT_GT(budget.eroded, 0.0);
   EXPECT_GT(budget.deposited, 0.0);
+  std::printf("droplets: eroded %.6g m^3, deposited %.6g, carried %.6g: residual %.2g of the eroded\n", budget.eroded,
+              budget.deposited, budget.carried,
+              std::fabs(budget.eroded - budget.deposited - budget.carried) / budget.eroded);
   EXPECT_NEAR(budget.eroded, budget.deposited + budget.carried, 1e-5 * budget.eroded);
   // The ground's net loss is what the water still carries.
   double change = 0.0, erodedMap = 0.0, depositedMap = 0.0;

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <vector>
 
 namespace
@@ -115,6 +116,7 @@ TEST(FractalSpectrum, FBmSlopeFollowsPersistenceAndLacunarity)
     const double expected = -2.0 * hurst - 1.0;
     // The octaves cover 1/1024 .. 1/8 cycles per sample; fit one octave inside either end.
     const double slope = spectralSlope(fbmField(persistence, n), n, n, 1.0 / 512, 1.0 / 16);
+    std::printf("fBm persistence %.4f: spectral slope %.3f, expected %.3f\n", persistence, slope, expected);
     EXPECT_NEAR(slope, expected, 0.1 * std::fabs(expected)) << "persistence " << persistence;
   }
 }
@@ -127,6 +129,7 @@ TEST(FractalSpectrum, DiamondSquareSlopeFollowsRoughness)
     const std::vector<float> field = diamondSquare(levels, roughness, 9);
     const double expected = -2.0 * roughness - 1.0;
     const double slope = spectralSlope(field, n, size, 1.0 / 256, 1.0 / 8);
+    std::printf("diamond-square H %.2f: spectral slope %.3f, expected %.3f\n", roughness, slope, expected);
     EXPECT_NEAR(slope, expected, 0.1 * std::fabs(expected)) << "H " << roughness;
   }
 }

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace
@@ -40,6 +41,9 @@ TEST(PipeErosion, WaterAndSedimentBudgetsClose)
   EXPECT_NEAR(sum(erosion.water()), rain, 1e-3 * rain);
   const SedimentBudget b = erosion.budget();
   ASSERT_GT(b.eroded, 0.0);
+  std::printf("pipes: water %.6g m^3 of %.6g rained; eroded %.6g m^3, deposited %.6g, suspended %.6g: residual %.2g\n",
+              sum(erosion.water()), rain, b.eroded, b.deposited, b.carried,
+              std::fabs(b.eroded - b.deposited - b.carried) / b.eroded);
   EXPECT_NEAR(b.eroded, b.deposited + b.carried, 1e-4 * b.eroded);
   EXPECT_NEAR(sum(g.elevation) - sum(erosion.elevation()), b.carried, 1e-3 * b.eroded);
 }
