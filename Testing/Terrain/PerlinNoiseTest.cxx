@@ -54,6 +54,31 @@ TEST(PerlinNoise, ValueAndGradientAreContinuousAcrossCellBorders)
   EXPECT_LT(worstGradient, 2e-2f);
 }
 
+TEST(PerlinNoise, ThreeDimensionalNoiseIsContinuousAcrossCellBorders)
+{
+  const PerlinNoise noise(13);
+  const float e = 1e-3f;
+  float worstValue = 0.0f, worstSlope = 0.0f;
+  for (int k = 0; k < 300; ++k)
+  {
+    // Borders z = integer (and x = integer): one-sided values and slopes from both sides.
+    const float x = 0.117f * static_cast<float>(k) + 0.03f, y = 0.291f * static_cast<float>(k % 53) + 0.05f;
+    const float z = static_cast<float>(k % 29);
+    const float centre = noise.noise(x, y, z);
+    worstValue = std::fmax(worstValue, std::fabs(noise.noise(x, y, z + e) - centre));
+    worstValue = std::fmax(worstValue, std::fabs(noise.noise(x, y, z - e) - centre));
+    const float below = (centre - noise.noise(x, y, z - 2 * e)) / (2 * e);
+    const float above = (noise.noise(x, y, z + 2 * e) - centre) / (2 * e);
+    worstSlope = std::fmax(worstSlope, std::fabs(above - below));
+    const float xb = static_cast<float>(k % 31), c2 = noise.noise(xb, y, x);
+    const float left = (c2 - noise.noise(xb - 2 * e, y, x)) / (2 * e),
+                right = (noise.noise(xb + 2 * e, y, x) - c2) / (2 * e);
+    worstSlope = std::fmax(worstSlope, std::fabs(right - left));
+  }
+  EXPECT_LT(worstValue, 5e-3f);
+  EXPECT_LT(worstSlope, 2e-2f);
+}
+
 TEST(PerlinNoise, AnalyticGradientMatchesFiniteDifferences)
 {
   const PerlinNoise noise(3);
