@@ -221,7 +221,11 @@ SedimentBudget erodeWithDroplets(const DropletSettings& s, ElevationGrid& grid, 
   std::vector<float> erodedUnits(n, 0.0f), depositedUnits(n, 0.0f);
   const Brush brush(s.radius, nx);
   const std::uint64_t key = splitMix64(s.seed ^ 0x64726f70ull);
-  const auto batch = static_cast<long long>(s.batchSize);
+  // The events of a batch are held at once: long lifetimes get smaller batches, so the buffer stays
+  // under 2^21 events (64 MB) whatever MaxLifetime is (a function of the settings only, so still
+  // the same result on any thread count).
+  const auto batch =
+    std::min(static_cast<long long>(s.batchSize), std::max(16LL, static_cast<long long>((1 << 21) / s.maxSteps)));
   std::vector<DropEvent> events(static_cast<std::size_t>(batch) * static_cast<std::size_t>(s.maxSteps));
   std::vector<int> counts(static_cast<std::size_t>(batch));
   std::vector<float> brushWeights(brush.weight.size());
