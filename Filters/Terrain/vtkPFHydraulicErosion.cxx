@@ -25,29 +25,7 @@ int vtkPFHydraulicErosion::FillInputPortInformation(int, vtkInformation* info)
 bool vtkPFHydraulicErosion::TerrainGeometry(vtkInformationVector** inputVector, int dims[2], double origin[2],
                                             double spacing[2])
 {
-  vtkInformation* in = inputVector[0]->GetInformationObject(0);
-  if (!in || !in->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
-  {
-    return false;
-  }
-  int extent[6];
-  in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
-  double o[3] = { 0, 0, 0 }, s[3] = { 1, 1, 1 };
-  if (in->Has(vtkDataObject::ORIGIN()))
-  {
-    in->Get(vtkDataObject::ORIGIN(), o);
-  }
-  if (in->Has(vtkDataObject::SPACING()))
-  {
-    in->Get(vtkDataObject::SPACING(), s);
-  }
-  for (int a = 0; a < 2; ++a)
-  {
-    dims[a] = extent[2 * a + 1] - extent[2 * a] + 1;
-    spacing[a] = s[a];
-    origin[a] = o[a] + extent[2 * a] * s[a];
-  }
-  return true;
+  return InputGeometry(inputVector, dims, origin, spacing);
 }
 
 bool vtkPFHydraulicErosion::ComputeTerrain(vtkInformationVector** inputVector, parafluid::terrain::ElevationGrid& grid,

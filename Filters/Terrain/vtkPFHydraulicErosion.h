@@ -28,41 +28,41 @@ public:
   vtkSetClampMacro(Method, int, 0, 1);
   vtkGetMacro(Method, int);
   // Droplets
-  void SetDrops(int value) { this->Set(this->Droplets.drops, static_cast<long long>(value)); }
+  void SetDrops(int value) { this->SetSetting(this->Droplets.drops, static_cast<long long>(value)); }
   int GetDrops() const { return static_cast<int>(this->Droplets.drops); }
-  void SetInertia(double value) { this->Set(this->Droplets.inertia, static_cast<float>(value)); }
+  void SetInertia(double value) { this->SetSetting(this->Droplets.inertia, static_cast<float>(value)); }
   double GetInertia() const { return this->Droplets.inertia; }
-  void SetCapacity(double value) { this->Set(this->Droplets.capacity, static_cast<float>(value)); }
+  void SetCapacity(double value) { this->SetSetting(this->Droplets.capacity, static_cast<float>(value)); }
   double GetCapacity() const { return this->Droplets.capacity; }
-  void SetErodeRate(double value) { this->Set(this->Droplets.erodeRate, static_cast<float>(value)); }
+  void SetErodeRate(double value) { this->SetSetting(this->Droplets.erodeRate, static_cast<float>(value)); }
   double GetErodeRate() const { return this->Droplets.erodeRate; }
-  void SetDepositRate(double value) { this->Set(this->Droplets.depositRate, static_cast<float>(value)); }
+  void SetDepositRate(double value) { this->SetSetting(this->Droplets.depositRate, static_cast<float>(value)); }
   double GetDepositRate() const { return this->Droplets.depositRate; }
-  void SetEvaporation(double value) { this->Set(this->Droplets.evaporation, static_cast<float>(value)); }
+  void SetEvaporation(double value) { this->SetSetting(this->Droplets.evaporation, static_cast<float>(value)); }
   double GetEvaporation() const { return this->Droplets.evaporation; }
-  void SetRadius(double value) { this->Set(this->Droplets.radius, static_cast<float>(value)); }
+  void SetRadius(double value) { this->SetSetting(this->Droplets.radius, static_cast<float>(value)); }
   double GetRadius() const { return this->Droplets.radius; }
-  void SetMaxLifetime(int value) { this->Set(this->Droplets.maxSteps, value); }
+  void SetMaxLifetime(int value) { this->SetSetting(this->Droplets.maxSteps, value); }
   int GetMaxLifetime() const { return this->Droplets.maxSteps; }
   void SetSeed(int value)
   {
-    this->Set(this->Droplets.seed, static_cast<std::uint64_t>(static_cast<std::uint32_t>(value)));
+    this->SetSetting(this->Droplets.seed, static_cast<std::uint64_t>(static_cast<std::uint32_t>(value)));
   }
   int GetSeed() const { return static_cast<int>(this->Droplets.seed); }
   // Virtual pipes
   vtkSetMacro(Iterations, int);
   vtkGetMacro(Iterations, int);
-  void SetTimeStep(double value) { this->Set(this->Pipes.timeStep, static_cast<float>(value)); }
+  void SetTimeStep(double value) { this->SetSetting(this->Pipes.timeStep, static_cast<float>(value)); }
   double GetTimeStep() const { return this->Pipes.timeStep; }
-  void SetRainRate(double value) { this->Set(this->Pipes.rainRate, static_cast<float>(value)); }
+  void SetRainRate(double value) { this->SetSetting(this->Pipes.rainRate, static_cast<float>(value)); }
   double GetRainRate() const { return this->Pipes.rainRate; }
-  void SetSedimentCapacity(double value) { this->Set(this->Pipes.capacity, static_cast<float>(value)); }
+  void SetSedimentCapacity(double value) { this->SetSetting(this->Pipes.capacity, static_cast<float>(value)); }
   double GetSedimentCapacity() const { return this->Pipes.capacity; }
-  void SetDissolveRate(double value) { this->Set(this->Pipes.dissolveRate, static_cast<float>(value)); }
+  void SetDissolveRate(double value) { this->SetSetting(this->Pipes.dissolveRate, static_cast<float>(value)); }
   double GetDissolveRate() const { return this->Pipes.dissolveRate; }
-  void SetPipeDepositRate(double value) { this->Set(this->Pipes.depositRate, static_cast<float>(value)); }
+  void SetPipeDepositRate(double value) { this->SetSetting(this->Pipes.depositRate, static_cast<float>(value)); }
   double GetPipeDepositRate() const { return this->Pipes.depositRate; }
-  void SetPipeEvaporation(double value) { this->Set(this->Pipes.evaporation, static_cast<float>(value)); }
+  void SetPipeEvaporation(double value) { this->SetSetting(this->Pipes.evaporation, static_cast<float>(value)); }
   double GetPipeEvaporation() const { return this->Pipes.evaporation; }
 
   /// Volumes of the last run [m^3] (also in the output's field data).
@@ -82,15 +82,6 @@ protected:
 private:
   vtkPFHydraulicErosion(const vtkPFHydraulicErosion&) = delete;
   void operator=(const vtkPFHydraulicErosion&) = delete;
-  template<class Field, class Value>
-  void Set(Field& field, Value value)
-  {
-    if (!(field == value))
-    {
-      field = value;
-      this->Modified();
-    }
-  }
   int Method = 0;
   int Iterations = 500;
   parafluid::terrain::DropletSettings Droplets;

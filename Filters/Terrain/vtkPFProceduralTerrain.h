@@ -27,38 +27,41 @@ public:
   vtkSetVector2Macro(Resolution, int);
   vtkGetVector2Macro(Resolution, int);
   /// 0 fractal noise, 1 diamond-square.
-  void SetMethod(int value) { this->Set(this->Settings.method, static_cast<parafluid::terrain::TerrainMethod>(value)); }
+  void SetMethod(int value)
+  {
+    this->SetSetting(this->Settings.method, static_cast<parafluid::terrain::TerrainMethod>(value));
+  }
   int GetMethod() const { return static_cast<int>(this->Settings.method); }
   /// 0 fBm, 1 turbulence, 2 ridged.
   void SetFractalType(int value)
   {
-    this->Set(this->Settings.fractal.type, static_cast<parafluid::terrain::FractalType>(value));
+    this->SetSetting(this->Settings.fractal.type, static_cast<parafluid::terrain::FractalType>(value));
   }
   int GetFractalType() const { return static_cast<int>(this->Settings.fractal.type); }
   void SetSeed(int value)
   {
-    this->Set(this->Settings.seed, static_cast<std::uint64_t>(static_cast<std::uint32_t>(value)));
+    this->SetSetting(this->Settings.seed, static_cast<std::uint64_t>(static_cast<std::uint32_t>(value)));
   }
   int GetSeed() const { return static_cast<int>(this->Settings.seed); }
-  void SetOctaves(int value) { this->Set(this->Settings.fractal.octaves, value); }
+  void SetOctaves(int value) { this->SetSetting(this->Settings.fractal.octaves, value); }
   int GetOctaves() const { return this->Settings.fractal.octaves; }
-  void SetLacunarity(double value) { this->Set(this->Settings.fractal.lacunarity, static_cast<float>(value)); }
+  void SetLacunarity(double value) { this->SetSetting(this->Settings.fractal.lacunarity, static_cast<float>(value)); }
   double GetLacunarity() const { return this->Settings.fractal.lacunarity; }
-  void SetPersistence(double value) { this->Set(this->Settings.fractal.persistence, static_cast<float>(value)); }
+  void SetPersistence(double value) { this->SetSetting(this->Settings.fractal.persistence, static_cast<float>(value)); }
   double GetPersistence() const { return this->Settings.fractal.persistence; }
-  void SetFeatureSize(double value) { this->Set(this->Settings.featureSize, value); }
+  void SetFeatureSize(double value) { this->SetSetting(this->Settings.featureSize, value); }
   double GetFeatureSize() const { return this->Settings.featureSize; }
-  void SetWarpStrength(double value) { this->Set(this->Settings.warpStrength, value); }
+  void SetWarpStrength(double value) { this->SetSetting(this->Settings.warpStrength, value); }
   double GetWarpStrength() const { return this->Settings.warpStrength; }
-  void SetWarpScale(double value) { this->Set(this->Settings.warpScale, value); }
+  void SetWarpScale(double value) { this->SetSetting(this->Settings.warpScale, value); }
   double GetWarpScale() const { return this->Settings.warpScale; }
-  void SetWarpOctaves(int value) { this->Set(this->Settings.warpOctaves, value); }
+  void SetWarpOctaves(int value) { this->SetSetting(this->Settings.warpOctaves, value); }
   int GetWarpOctaves() const { return this->Settings.warpOctaves; }
-  void SetRoughness(double value) { this->Set(this->Settings.roughness, value); }
+  void SetRoughness(double value) { this->SetSetting(this->Settings.roughness, value); }
   double GetRoughness() const { return this->Settings.roughness; }
-  void SetHeightScale(double value) { this->Set(this->Settings.heightScale, value); }
+  void SetHeightScale(double value) { this->SetSetting(this->Settings.heightScale, value); }
   double GetHeightScale() const { return this->Settings.heightScale; }
-  void SetBaseHeight(double value) { this->Set(this->Settings.baseHeight, value); }
+  void SetBaseHeight(double value) { this->SetSetting(this->Settings.baseHeight, value); }
   double GetBaseHeight() const { return this->Settings.baseHeight; }
 
 protected:
@@ -72,15 +75,6 @@ protected:
 private:
   vtkPFProceduralTerrain(const vtkPFProceduralTerrain&) = delete;
   void operator=(const vtkPFProceduralTerrain&) = delete;
-  template<class Field, class Value>
-  void Set(Field& field, Value value)
-  {
-    if (!(field == value))
-    {
-      field = value;
-      this->Modified();
-    }
-  }
   parafluid::terrain::TerrainSettings Settings;
   double Origin[2] = { 0.0, 0.0 };
   double Extent[2] = { 1000.0, 1000.0 };

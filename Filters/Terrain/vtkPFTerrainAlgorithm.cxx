@@ -87,6 +87,36 @@ int vtkPFTerrainAlgorithm::RequestUpdateExtent(vtkInformationVector** inputVecto
   return 1;
 }
 
+bool vtkPFTerrainAlgorithm::InputGeometry(vtkInformationVector** inputVector, int dims[2], double origin[2],
+                                          double spacing[2])
+{
+  vtkInformation* in = inputVector[0]->GetInformationObject(0);
+  if (!in || !in->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    return false;
+  }
+  int extent[6];
+  in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
+  double o[3] = { 0, 0, 0 }, s[3] = { 1, 1, 1 };
+  if (in->Has(vtkDataObject::ORIGIN()))
+  {
+    in->Get(vtkDataObject::ORIGIN(), o);
+  }
+  if (in->Has(vtkDataObject::SPACING()))
+  {
+    in->Get(vtkDataObject::SPACING(), s);
+  }
+  // Point data is assumed here; an input with cell data (one fewer sample per side) is only
+  // known in RequestData.
+  for (int a = 0; a < 2; ++a)
+  {
+    dims[a] = extent[2 * a + 1] - extent[2 * a] + 1;
+    spacing[a] = s[a];
+    origin[a] = o[a] + extent[2 * a] * s[a];
+  }
+  return true;
+}
+
 bool vtkPFTerrainAlgorithm::Progress(double fraction)
 {
   this->UpdateProgress(fraction);

@@ -57,6 +57,20 @@ protected:
   /// Reports progress in [0, 1] and returns false when the user aborted.
   bool Progress(double fraction);
 
+  /// For filters: the geometry of the image on input port 0 (its whole extent, origin, spacing).
+  static bool InputGeometry(vtkInformationVector** inputVector, int dims[2], double origin[2], double spacing[2]);
+
+  /// Sets a field of a settings struct and marks the algorithm modified when it changes.
+  template<class Field, class Value>
+  void SetSetting(Field& field, Value value)
+  {
+    if (!(field == value))
+    {
+      field = value;
+      this->Modified();
+    }
+  }
+
 private:
   vtkPFTerrainAlgorithm(const vtkPFTerrainAlgorithm&) = delete;
   void operator=(const vtkPFTerrainAlgorithm&) = delete;

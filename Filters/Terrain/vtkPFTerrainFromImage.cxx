@@ -40,28 +40,13 @@ std::string chosenArray(vtkAlgorithm* algorithm)
 bool vtkPFTerrainFromImage::TerrainGeometry(vtkInformationVector** inputVector, int dims[2], double origin[2],
                                             double spacing[2])
 {
-  vtkInformation* in = inputVector[0]->GetInformationObject(0);
-  if (!in || !in->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  if (!InputGeometry(inputVector, dims, origin, spacing))
   {
     return false;
   }
-  int extent[6];
-  in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent);
-  double o[3] = { 0, 0, 0 }, s[3] = { 1, 1, 1 };
-  if (in->Has(vtkDataObject::ORIGIN()))
-  {
-    in->Get(vtkDataObject::ORIGIN(), o);
-  }
-  if (in->Has(vtkDataObject::SPACING()))
-  {
-    in->Get(vtkDataObject::SPACING(), s);
-  }
-  // Point data is assumed here; cell data (one fewer sample per side) is settled in RequestData.
   for (int a = 0; a < 2; ++a)
   {
-    dims[a] = extent[2 * a + 1] - extent[2 * a] + 1;
-    spacing[a] = this->Spacing[a] > 0.0 ? this->Spacing[a] : s[a];
-    origin[a] = o[a] + extent[2 * a] * s[a];
+    spacing[a] = this->Spacing[a] > 0.0 ? this->Spacing[a] : spacing[a];
   }
   return true;
 }
