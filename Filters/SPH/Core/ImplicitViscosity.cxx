@@ -112,16 +112,17 @@ struct ViscousOperator
                });
   }
 
-  /// The diagonal of M (the gradient factor is negative, so it exceeds V_i).
-  void computeDiagonal()
+  /// y = M x and the diagonal of M in one neighbour pass (the diagonal depends on the positions
+  /// only, so it comes free with the first product).
+  void applyAndComputeDiagonal(const float* x, float* y)
   {
     diagonal.resize(3 * n);
-    std::vector<float> zero(3 * n, 0.0f);
-    forEachRow(zero.data(),
-               [&](std::uint32_t i, const float*, const float*, const float* diag)
+    forEachRow(x,
+               [&](std::uint32_t i, const float* value, const float* sum, const float* diag)
                {
                  for (int a = 0; a < 3; ++a)
                  {
+                   y[a * n + i] = volume[i] * (value[a] - dt * sum[a]);
                    diagonal[a * n + i] = volume[i] * (1.0f - dt * diag[a]);
                  }
                });
@@ -143,13 +144,16 @@ double dot(const std::vector<float>& a, const std::vector<float>& b, int threads
 }
 
 /// Jacobi-preconditioned CG on plain arrays until |r| <= tolerance |b|; x holds the start and
-/// returns the solution.
+/// returns the solution (a start of all zeros skips the first product: M 0 = 0).
 int handWrittenCG(const ViscousOperator& op, const std::vector<float>& b, std::vector<float>& x, float tolerance,
                   int maxIterations, int threads)
 {
   const auto size = static_cast<std::int64_t>(b.size());
-  std::vector<float> r(b.size()), z(b.size()), d(b.size()), q(b.size());
-  op.apply(x.data(), q.data());
+  std::vector<float> r(b.size()), z(b.size()), d(b.size()), q(b.size(), 0.0f);
+  if (std::any_of(x.begin(), x.end(), [](float value) { return value != 0.0f; }))
+  {
+    op.apply(x.data(), q.data());
+  }
 #pragma omp parallel for simd schedule(static) num_threads(threads)
   for (std::int64_t k = 0; k < size; ++k)
   {
@@ -314,7 +318,6 @@ int DFSPHSolver::solveViscosity(SPHSolver& sim, float dt)
   {
     op.volume[i] = p.particleMass / s.density[i];
   }
-  op.computeDiagonal();
   // Solved for the change of velocity dv = v - v*: M dv = V v* - M v*, from dv = 0, so that the
   // tolerance is relative to what viscosity changes in this step (relative to V v* itself, a small
   // viscous change would already count as converged before the first iteration).
@@ -324,7 +327,7 @@ int DFSPHSolver::solveViscosity(SPHSolver& sim, float dt)
   {
     std::copy(v[a], v[a] + n, current.begin() + static_cast<std::ptrdiff_t>(a * n));
   }
-  op.apply(current.data(), product.data());
+  op.applyAndComputeDiagonal(current.data(), product.data());
   for (int a = 0; a < 3; ++a)
   {
     for (std::size_t i = 0; i < n; ++i)
