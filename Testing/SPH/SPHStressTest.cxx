@@ -97,8 +97,7 @@ void runTenThousandSteps(PressureSolverType solver)
 {
   SPHParameters p = water(solver);
   // One thread: ctest runs two tests at a time on two cores, and a two-threaded solver sharing a
-  // busy core stalls at every barrier (in CI the DFSPH run averaged 78 ms a step on two threads;
-  // alone, its early steps take 64 ms on one).
+  // busy core stalls at every barrier (this test took 78 ms a step that way, 64 ms on one thread).
   // Thread counts are covered by SPHSolver.IsDeterministicForAGivenThreadCountAndAcrossThreadCounts.
   p.threads = 1;
   SPHSolver s(p, damBreakBlock(), obstacle());
