@@ -95,11 +95,7 @@ double mechanicalEnergy(const SPHSolver& s)
 
 void runTenThousandSteps(PressureSolverType solver)
 {
-  SPHParameters p = water(solver);
-  // One thread: ctest runs two tests at a time on two cores, and a two-threaded solver sharing a
-  // busy core stalls at every barrier (this test took 78 ms a step that way, 64 ms on one thread).
-  // Thread counts are covered by SPHSolver.IsDeterministicForAGivenThreadCountAndAcrossThreadCounts.
-  p.threads = 1;
+  const SPHParameters p = water(solver);
   SPHSolver s(p, damBreakBlock(), obstacle());
   ASSERT_EQ(s.state().size(), 5000u);
   const double initial = mechanicalEnergy(s);
