@@ -51,6 +51,11 @@ bool readHeightImage(vtkImageData* image, const std::string& arrayName, HeightIm
   }
   int dims[3];
   image->GetDimensions(dims);
+  if (image->GetNumberOfPoints() == 0)
+  {
+    error = "the image is empty (did the reader or filter before this one fail?)";
+    return false;
+  }
   if (dims[2] != 1)
   {
     error = "the image must be 2D (one layer of points in z), got " + std::to_string(dims[2]) + " layers";
