@@ -210,6 +210,12 @@ double RainField::waterPerImpact(std::uint32_t slot) const
   return this->CellWater[this->Cell[slot]] * DropSizeDistribution::volume(this->Diameter[slot]);
 }
 
+bool RainField::born(std::uint32_t slot, std::int64_t k) const
+{
+  const double duration = this->Parameters.duration;
+  return duration <= 0.0 || static_cast<double>(k) * this->Period[slot] - this->Phase[slot] <= duration;
+}
+
 bool RainField::mayBeUnderWater(std::uint32_t slot, const std::vector<float>* water) const
 {
   // A drop lands in its own cell: water can stop it early only where it stands above that cell's
@@ -284,7 +290,7 @@ void RainField::evaluate(double t, const std::vector<float>* water, float* posit
     {
       // A drop is above its target's ground until it gets there (over a ridge on its way it is
       // hidden behind the ground anyway); the water is tested in the cell the drop is over.
-      bool air = true;
+      bool air = this->born(slot, this->dropAt(slot, t));
       if (water && air)
       {
         air = z > (*water)[this->cellOf(x, y)];
@@ -445,6 +451,11 @@ void RainField::collectImpacts(double t, const std::vector<float>* water, std::v
       for (std::int64_t k = lastCounted[i] + 1; k <= newest; ++k)
       {
         // Drop k meets the ground by the birth of k + 1; it may meet the water earlier.
+        if (!this->born(slot, k))
+        {
+          lastCounted[i] = k; // after the shower: never falls
+          continue;
+        }
         if (k < newest || this->mayBeUnderWater(slot, water))
         {
           const Impact impact = this->impactOf(slot, k, water);
@@ -485,6 +496,10 @@ void RainField::recentImpacts(double t, double window, const std::vector<float>*
         if (k == newest && !this->mayBeUnderWater(slot, water))
         {
           break; // the drop in the air meets the ground only when the next one is born
+        }
+        if (!this->born(slot, k))
+        {
+          break;
         }
         const Impact impact = this->impactOf(slot, k, water);
         if (impact.time <= t && impact.time > t - window)

@@ -181,6 +181,108 @@ double SPHSolver::step(double maxStep)
   return this->Last.timeStep;
 }
 
+void SPHSolver::addParticles(const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z,
+                             const std::vector<float>& vx, const std::vector<float>& vy, const std::vector<float>& vz)
+{
+  const std::size_t added = x.size();
+  if (y.size() != added || z.size() != added || vx.size() != added || vy.size() != added || vz.size() != added)
+  {
+    throw std::invalid_argument("SPH: the added particles' arrays have different lengths");
+  }
+  for (std::size_t i = 0; i < added; ++i)
+  {
+    if (!std::isfinite(x[i] + y[i] + z[i] + vx[i] + vy[i] + vz[i]))
+    {
+      throw std::invalid_argument("SPH: added particle " + std::to_string(i) + " has a NaN or infinite position or velocity");
+    }
+  }
+  if (added == 0)
+  {
+    return;
+  }
+  ParticleState& s = this->State;
+  const std::size_t n = s.size();
+  std::int64_t nextId = 0;
+  std::uint32_t nextIndex = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    nextId = std::max(nextId, s.id[i] + 1);
+    nextIndex = std::max(nextIndex, s.originalIndex[i] + 1);
+  }
+  s.x.insert(s.x.end(), x.begin(), x.end());
+  s.y.insert(s.y.end(), y.begin(), y.end());
+  s.z.insert(s.z.end(), z.begin(), z.end());
+  s.vx.insert(s.vx.end(), vx.begin(), vx.end());
+  s.vy.insert(s.vy.end(), vy.begin(), vy.end());
+  s.vz.insert(s.vz.end(), vz.begin(), vz.end());
+  for (auto* a : { &s.ax, &s.ay, &s.az, &s.pressure })
+  {
+    a->resize(n + added, 0.0f);
+  }
+  s.density.resize(n + added, this->Parameters.restDensity);
+  for (std::size_t i = 0; i < added; ++i)
+  {
+    s.id.push_back(nextId + static_cast<std::int64_t>(i));
+    s.originalIndex.push_back(nextIndex + static_cast<std::uint32_t>(i));
+  }
+  if (!this->PressureImpulse.empty())
+  {
+    this->PressureImpulse.resize(n + added, 0.0f);
+  }
+  this->drift(0.0f); // inside the walls
+  this->sortByCell();
+  this->Pressure->start(*this);
+}
+
+std::size_t SPHSolver::removeParticles(const std::vector<std::uint8_t>& remove)
+{
+  ParticleState& s = this->State;
+  const std::size_t n = s.size();
+  if (remove.size() != n)
+  {
+    throw std::invalid_argument("SPH: removeParticles needs one flag per particle");
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (remove[i])
+    {
+      continue;
+    }
+    if (kept != i)
+    {
+      for (auto* a : { &s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.density, &s.pressure })
+      {
+        (*a)[kept] = (*a)[i];
+      }
+      s.id[kept] = s.id[i];
+      s.originalIndex[kept] = s.originalIndex[i];
+      if (this->PressureImpulse.size() == n)
+      {
+        this->PressureImpulse[kept] = this->PressureImpulse[i];
+      }
+    }
+    ++kept;
+  }
+  if (kept == n)
+  {
+    return 0;
+  }
+  for (auto* a : { &s.x, &s.y, &s.z, &s.vx, &s.vy, &s.vz, &s.ax, &s.ay, &s.az, &s.density, &s.pressure })
+  {
+    a->resize(kept);
+  }
+  s.id.resize(kept);
+  s.originalIndex.resize(kept);
+  if (this->PressureImpulse.size() == n)
+  {
+    this->PressureImpulse.resize(kept);
+  }
+  this->sortByCell();
+  this->Pressure->start(*this);
+  return n - kept;
+}
+
 double SPHSolver::largestLength(const std::vector<float>& x, const std::vector<float>& y,
                                 const std::vector<float>& z) const
 {

@@ -88,6 +88,8 @@ private:
   DropPath path(std::uint32_t slot, std::int64_t k) const;
   /// Height of the drop above its target's ground `remaining` seconds before it gets there.
   double heightAbove(std::uint32_t slot, double remaining) const;
+  /// Whether drop k of a slot is born before the shower ends (RainParameters::duration).
+  bool born(std::uint32_t slot, std::int64_t k) const;
   /// Whether the water of the slot's cell stands above its lowest ground (so it may stop a drop).
   bool mayBeUnderWater(std::uint32_t slot, const std::vector<float>* waterLevels) const;
   /// Vertical velocity [m/s] at time-since-birth s.

@@ -27,6 +27,8 @@ struct RainParameters
   bool terminalVelocity = true;
   double initialSpeed = 2.0;
   double gravity = 9.81; // [m/s^2]
+  /// The shower lasts this long [s] (0: forever): drops born later do not exist.
+  double duration = 0.0;
   std::uint64_t seed = 1;
 
   /// Empty when valid, else what is wrong, naming the property.

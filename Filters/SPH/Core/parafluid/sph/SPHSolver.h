@@ -47,6 +47,16 @@ public:
   std::int64_t advance(double duration, const std::function<bool(double)>& progress = {});
   /// One step of at most maxStep seconds; returns the step taken [s]. Pressure is that step's.
   double step(double maxStep = 1e30);
+  /// Adds particles to the running simulation (a source: rain, an inflow) at the given positions
+  /// [m] and velocities [m/s], at rest density; their ids continue after the largest id so far and
+  /// their originalIndex after the largest one. The pressure solver restarts on the new set (a
+  /// DFSPH warm start is lost). Throws std::invalid_argument for mismatched sizes or non-finite
+  /// values.
+  void addParticles(const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z,
+                    const std::vector<float>& vx, const std::vector<float>& vy, const std::vector<float>& vz);
+  /// Removes the particles whose flag is non-zero (a sink: infiltration, an outflow), flags in state
+  /// order; returns how many were removed.
+  std::size_t removeParticles(const std::vector<std::uint8_t>& remove);
   /// The step the time-step control would take now [s] (WCSPH; DFSPH adds non-pressure forces first).
   double proposedTimeStep() const;
 

@@ -1,0 +1,303 @@
+#include "parafluid/rain/Runoff.h"
+
+#include "parafluid/rain/GroundSurface.h"
+#include "parafluid/sph/SPHSolver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace parafluid::rain
+{
+namespace
+{
+constexpr float kDry = -std::numeric_limits<float>::max();
+}
+
+Runoff::Runoff(const RainParameters& rain, const RunoffParameters& runoff, std::shared_ptr<const HeightField> ground)
+  : RainSettings(rain)
+  , Parameters(runoff)
+  , Ground(ground)
+  , Rain(rain, ground)
+{
+  const RunoffParameters& p = this->Parameters;
+  const double d = p.particleSpacing;
+  double b[4];
+  ground->bounds(b);
+  if (!(d > 0.0) || !std::isfinite(d) || d > 0.25 * std::min(b[1] - b[0], b[3] - b[2]))
+  {
+    throw std::invalid_argument("Rain: ParticleSpacing must be positive and at most a quarter of the terrain's width "
+                                "(got " + std::to_string(d) + " m)");
+  }
+  if (p.rainScale < 1 || p.rainScale > 1000000)
+  {
+    throw std::invalid_argument("Rain: RainScale must be from 1 to 1000000 impacts per particle");
+  }
+  if (p.sphEvery < 1 || p.sphEvery > 1000)
+  {
+    throw std::invalid_argument("Rain: SPHEvery must be from 1 to 1000 drop steps");
+  }
+  if (!(p.rainStep > 0.0) || !(p.rainStep <= 1.0))
+  {
+    throw std::invalid_argument("Rain: RainTimeStep must be in (0, 1] s (got " + std::to_string(p.rainStep) + ")");
+  }
+  if (!(p.infiltration >= 0.0) || !(p.infiltration <= 1e4))
+  {
+    throw std::invalid_argument("Rain: Infiltration must be from 0 to 10000 mm/h (got " +
+                                std::to_string(p.infiltration) + ")");
+  }
+  // The SPH: the ground's box up to the precipitation plane, gravity down, the kernel of SPH Step
+  // for this spacing, and a sound speed from the fastest runoff the relief allows.
+  sph::SPHParameters& s = this->Resolved;
+  s = p.sph;
+  const auto& z = ground->elevation();
+  const auto [lowest, highest] = std::minmax_element(z.begin(), z.end());
+  const double top = std::max(rain.height, static_cast<double>(*highest) + 10.0 * d);
+  s.domainBounds = { static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2]),
+                     static_cast<float>(b[3]), static_cast<float>(*lowest - 2.0 * d), static_cast<float>(top) };
+  s.gravity = { 0.0f, 0.0f, static_cast<float>(-rain.gravity) };
+  const bool delta = s.pressureSolver == sph::PressureSolverType::DeltaSPH;
+  s.smoothingLength = static_cast<float>((delta ? 3.0 : 2.0) * d);
+  s.particleMass = sph::latticeParticleMass(static_cast<float>(d), s.smoothingLength, s.restDensity, s.densityKernel());
+  if (!(s.soundSpeed > 0.0f))
+  {
+    // Ten times the speed of water that ran down the whole relief (at least ten spacings of it).
+    const double relief = std::max(static_cast<double>(*highest - *lowest), 10.0 * d);
+    s.soundSpeed = static_cast<float>(10.0 * std::sqrt(2.0 * rain.gravity * relief));
+  }
+  const std::string problem = s.validate();
+  if (!problem.empty())
+  {
+    throw std::invalid_argument("Rain: " + problem);
+  }
+  this->Boundary = groundBoundary(*ground);
+  const auto cells = static_cast<std::size_t>(this->Rain.cellCount());
+  this->WaterLevels.assign(cells, kDry);
+  this->ImpactCount.assign(cells, 0);
+  this->Gathered.assign(cells, 0.0);
+  this->Tally.assign(cells, 0);
+  this->Soak.assign(cells, 0.0);
+}
+
+Runoff::~Runoff() = default;
+Runoff::Runoff(Runoff&&) noexcept = default;
+Runoff& Runoff::operator=(Runoff&&) noexcept = default;
+
+const sph::SPHSolver* Runoff::water() const
+{
+  return this->Water.get();
+}
+
+double Runoff::particleVolume() const
+{
+  const double d = this->Parameters.particleSpacing;
+  return d * d * d;
+}
+
+std::size_t Runoff::particleCount() const
+{
+  return this->Water ? this->Water->state().size() : 0;
+}
+
+double Runoff::waitingVolume() const
+{
+  double sum = 0.0;
+  for (double v : this->Gathered)
+  {
+    sum += v;
+  }
+  return sum;
+}
+
+void Runoff::advance(double duration, const std::function<bool(double)>& progress)
+{
+  if (!(duration >= 0.0) || !std::isfinite(duration))
+  {
+    throw std::invalid_argument("Rain: the time to advance must be a non-negative number of seconds");
+  }
+  const double end = this->Time + duration;
+  const double step = this->Parameters.rainStep;
+  // A last sliver of a step (the rounding of the sum of steps) is no step: a solver asked to
+  // advance 1e-15 s would divide by its square.
+  while (end - this->Time > 1e-6 * step)
+  {
+    const double dt = end - this->Time < 1.000001 * step ? end - this->Time : step;
+    this->dropStep(dt);
+    if (progress && !progress(duration > 0.0 ? 1.0 - (end - this->Time) / duration : 1.0))
+    {
+      return;
+    }
+  }
+  this->Time = std::max(this->Time, end);
+  // The water catches up with the rain at the end of the span, whatever SPHEvery says.
+  if (this->Water && this->Time - this->WaterTime > 1e-6 * step)
+  {
+    this->SPHSteps += this->Water->advance(this->Time - this->WaterTime);
+    this->WaterTime = this->Time;
+    this->updateWaterLevels();
+  }
+}
+
+void Runoff::dropStep(double dt)
+{
+  const double t = this->Time + dt;
+  this->Impacts.clear();
+  this->Rain.collectImpacts(t, &this->WaterLevels, this->Counted, this->Impacts);
+  this->insert(this->Impacts);
+  if (this->Parameters.infiltration > 0.0)
+  {
+    this->infiltrate(dt);
+  }
+  this->Time = t;
+  ++this->DropSteps;
+  if (this->Water && this->DropSteps % this->Parameters.sphEvery == 0)
+  {
+    this->SPHSteps += this->Water->advance(this->Time - this->WaterTime);
+    this->WaterTime = this->Time;
+    this->updateWaterLevels();
+  }
+}
+
+void Runoff::insert(const std::vector<Impact>& impacts)
+{
+  const RunoffParameters& p = this->Parameters;
+  const double volume = this->particleVolume(), d = p.particleSpacing;
+  std::vector<float> x, y, z, vx, vy, vz;
+  for (const Impact& impact : impacts)
+  {
+    const double water = this->Rain.waterPerImpact(impact.slot);
+    this->Fallen += water;
+    ++this->ImpactCount[impact.cell];
+    bool emit = false;
+    if (p.conserveVolume)
+    {
+      this->Gathered[impact.cell] += water;
+      if (this->Gathered[impact.cell] >= volume)
+      {
+        this->Gathered[impact.cell] -= volume;
+        emit = true;
+      }
+    }
+    else if (++this->Tally[impact.cell] >= static_cast<std::uint32_t>(p.rainScale))
+    {
+      this->Tally[impact.cell] = 0;
+      emit = true;
+    }
+    if (!emit)
+    {
+      continue;
+    }
+    // Half a spacing above the surface it hit: above the triangulated ground (which the SPH's
+    // boundary is) as well as the bilinear one, or on top of the water's highest particle.
+    const double px = impact.position[0], py = impact.position[1];
+    double pz = std::max(static_cast<double>(impact.position[2]), triangulatedHeight(*this->Ground, px, py)) + 0.5 * d;
+    if (impact.onWater)
+    {
+      pz = impact.position[2] + 0.5 * d;
+    }
+    x.push_back(static_cast<float>(px));
+    y.push_back(static_cast<float>(py));
+    z.push_back(static_cast<float>(pz));
+    vx.push_back(impact.velocity[0]);
+    vy.push_back(impact.velocity[1]);
+    vz.push_back(impact.velocity[2]);
+    this->Inserted += volume;
+  }
+  if (x.empty())
+  {
+    return;
+  }
+  if (this->particleCount() + x.size() > p.maxParticles)
+  {
+    throw std::runtime_error("Rain: the runoff would exceed MaxParticles (" + std::to_string(p.maxParticles) +
+                             " particles): raise ParticleSpacing or MaxParticles, or shorten the rain");
+  }
+  if (!this->Water)
+  {
+    ParticleState state;
+    state.x = std::move(x), state.y = std::move(y), state.z = std::move(z);
+    state.vx = std::move(vx), state.vy = std::move(vy), state.vz = std::move(vz);
+    this->Water = std::make_unique<sph::SPHSolver>(this->Resolved, std::move(state), this->Boundary);
+    this->WaterTime = this->Time;
+  }
+  else
+  {
+    this->Water->addParticles(x, y, z, vx, vy, vz);
+  }
+}
+
+void Runoff::infiltrate(double dt)
+{
+  // Each cell soaks up to Infiltration * area * dt of the water it holds: first the rain waiting
+  // in it, then whole particles resting on its ground (within 1.5 spacings of it). A dry cell's
+  // capacity does not build up.
+  const double rate = this->Parameters.infiltration / 3.6e6 * this->Rain.cellArea() * dt;
+  const double volume = this->particleVolume(), d = this->Parameters.particleSpacing;
+  std::vector<std::vector<std::uint32_t>> resting(this->Gathered.size());
+  if (this->Water)
+  {
+    const ParticleState& s = this->Water->state();
+    for (std::size_t i = 0; i < s.size(); ++i)
+    {
+      if (s.z[i] - triangulatedHeight(*this->Ground, s.x[i], s.y[i]) < 1.5 * d)
+      {
+        resting[this->Rain.cellOf(s.x[i], s.y[i])].push_back(static_cast<std::uint32_t>(i));
+      }
+    }
+  }
+  std::vector<std::uint8_t> remove(this->particleCount(), 0);
+  std::size_t removing = 0;
+  for (std::size_t c = 0; c < this->Gathered.size(); ++c)
+  {
+    const bool wet = this->Gathered[c] > 0.0 || !resting[c].empty();
+    if (!wet)
+    {
+      this->Soak[c] = 0.0;
+      continue;
+    }
+    this->Soak[c] += rate;
+    const double taken = std::min(this->Soak[c], this->Gathered[c]);
+    this->Gathered[c] -= taken;
+    this->Soak[c] -= taken;
+    this->Infiltrated += taken;
+    for (std::uint32_t i : resting[c])
+    {
+      if (this->Soak[c] < volume)
+      {
+        break;
+      }
+      remove[i] = 1;
+      ++removing;
+      this->Soak[c] -= volume;
+      this->Infiltrated += volume;
+    }
+  }
+  if (removing > 0)
+  {
+    this->Water->removeParticles(remove);
+    if (this->Water->state().size() == 0)
+    {
+      this->Water.reset(); // all soaked up
+    }
+    this->updateWaterLevels();
+  }
+}
+
+void Runoff::updateWaterLevels()
+{
+  std::fill(this->WaterLevels.begin(), this->WaterLevels.end(), kDry);
+  if (!this->Water)
+  {
+    return;
+  }
+  const ParticleState& s = this->Water->state();
+  const auto half = static_cast<float>(0.5 * this->Parameters.particleSpacing);
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    float& level = this->WaterLevels[this->Rain.cellOf(s.x[i], s.y[i])];
+    level = std::max(level, s.z[i] + half);
+  }
+}
+} // namespace parafluid::rain

@@ -1,0 +1,108 @@
+#pragma once
+// Rain that becomes SPH water (after the seed method): the stateless drops of RainField fall on a
+// height field; in each precipitation cell the water of the impacts is gathered and becomes SPH
+// particles at the impact points, with the drops' velocities, and SPH Step's solver moves them
+// with the triangulated ground as their boundary.
+//  - ConserveVolume (default): every particle carries d^3 of water (d the particle spacing); a cell
+//    inserts one whenever the rain it gathered reaches d^3, so the water in the SPH equals the rain
+//    that fell, within one particle per cell (what waits in the cells).
+//  - Otherwise the seed's rule: one particle every RainScale impacts in a cell.
+//  - The drops step by `rainStep`; the SPH advances once every `sphEvery` drop steps, with the
+//    impacts of those steps gathered.
+//  - Infiltration [mm/h] takes water from wet cells (first the rain waiting in the cell, then
+//    particles resting on its ground), so runoff starts only where the rain outpaces it.
+//  - The water's surface (per cell, the highest particle plus half a spacing) stops later drops.
+#include "parafluid/common/HeightField.h"
+#include "parafluid/rain/RainField.h"
+#include "parafluid/sph/SPHParameters.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace parafluid
+{
+class TriangleBoundary;
+}
+namespace parafluid::sph
+{
+class SPHSolver;
+}
+
+namespace parafluid::rain
+{
+struct RunoffParameters
+{
+  /// The solver's settings; smoothingLength, particleMass, domainBounds, gravity and (when 0) the
+  /// sound speed are derived from the spacing, the ground and the precipitation area.
+  sph::SPHParameters sph;
+  double particleSpacing = 0.05; // d [m]
+  bool conserveVolume = true;
+  int rainScale = 10;          // impacts per particle without ConserveVolume
+  int sphEvery = 1;            // drop steps per SPH advance
+  double rainStep = 1.0 / 60.0; // [s]
+  double infiltration = 0.0;   // [mm/h]
+  std::size_t maxParticles = 4000000;
+};
+
+class Runoff
+{
+public:
+  /// Throws std::invalid_argument for bad parameters (naming the property).
+  Runoff(const RainParameters& rain, const RunoffParameters& runoff, std::shared_ptr<const HeightField> ground);
+  ~Runoff();
+  Runoff(Runoff&&) noexcept;
+  Runoff& operator=(Runoff&&) noexcept;
+
+  /// Advances `duration` seconds in drop steps (the last shortened to land on the end); progress
+  /// as SPHSolver::advance. Throws std::runtime_error when the SPH becomes unstable, or when the
+  /// water would exceed maxParticles.
+  void advance(double duration, const std::function<bool(double)>& progress = {});
+
+  double time() const { return this->Time; }
+  const RainField& rain() const { return this->Rain; }
+  const RunoffParameters& parameters() const { return this->Parameters; }
+  /// The SPH water, or null before the first particle.
+  const sph::SPHSolver* water() const;
+  /// Per precipitation cell: the water surface [m] (lowest float when dry), and its impacts so far.
+  const std::vector<float>& waterLevels() const { return this->WaterLevels; }
+  const std::vector<std::uint32_t>& impactCounts() const { return this->ImpactCount; }
+  /// Volumes [m^3]: rain that reached the ground or the water, water inserted as particles, taken by
+  /// infiltration, and still waiting in the cells.
+  double fallenVolume() const { return this->Fallen; }
+  double insertedVolume() const { return this->Inserted; }
+  double infiltratedVolume() const { return this->Infiltrated; }
+  double waitingVolume() const;
+  /// Volume of one particle's water [m^3] (d^3).
+  double particleVolume() const;
+  std::size_t particleCount() const;
+  /// SPH steps taken so far.
+  std::int64_t sphSteps() const { return this->SPHSteps; }
+
+private:
+  void dropStep(double dt);
+  void insert(const std::vector<Impact>& impacts);
+  void infiltrate(double dt);
+  void updateWaterLevels();
+
+  RainParameters RainSettings;
+  RunoffParameters Parameters;
+  std::shared_ptr<const HeightField> Ground;
+  RainField Rain;
+  sph::SPHParameters Resolved;
+  std::shared_ptr<const TriangleBoundary> Boundary;
+  std::unique_ptr<sph::SPHSolver> Water;
+  double Time = 0.0, WaterTime = 0.0;
+  std::int64_t DropSteps = 0, SPHSteps = 0;
+  std::vector<std::int64_t> Counted;
+  std::vector<float> WaterLevels;
+  std::vector<std::uint32_t> ImpactCount;
+  std::vector<double> Gathered;    // water waiting in each cell [m^3] (ConserveVolume)
+  std::vector<std::uint32_t> Tally; // impacts since the cell's last particle (RainScale)
+  std::vector<double> Soak;        // infiltration capacity each wet cell has built up [m^3]
+  double Fallen = 0.0, Inserted = 0.0, Infiltrated = 0.0;
+  std::vector<Impact> Impacts;
+};
+} // namespace parafluid::rain

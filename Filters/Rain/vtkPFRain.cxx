@@ -1,0 +1,507 @@
+#include "vtkPFRain.h"
+
+#include "HeightImage.h"
+#include "ParameterCheck.h"
+#include "ParticleArrays.h"
+#include "ParticleContract.h"
+#include "ParticleStateArrays.h"
+
+#include "parafluid/common/MemoryBudget.h"
+#include "parafluid/rain/RainField.h"
+#include "parafluid/sph/SPHSolver.h"
+
+#include "vtkCellArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTriangleFilter.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace contract = parafluid::contract;
+using parafluid::HeightField;
+using parafluid::rain::Impact;
+using parafluid::rain::RainField;
+using parafluid::rain::Runoff;
+
+struct vtkPFRain::Cache
+{
+  std::optional<Runoff> Simulation;
+  long long OutputIndex = 0;
+  vtkMTimeType InputTime = 0, FilterTime = 0;
+};
+
+vtkStandardNewMacro(vtkPFRain);
+
+vtkPFRain::vtkPFRain()
+  : Cached(std::make_unique<Cache>())
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(3);
+  // Runoff is thin sheets of water: DFSPH (no tension at a free surface) is the default here;
+  // δ-SPH's negative pressure holds a film of one particle on a slope like glue.
+  this->Water.sph.pressureSolver = parafluid::sph::PressureSolverType::DFSPH;
+}
+
+vtkPFRain::~vtkPFRain() = default;
+
+void vtkPFRain::SetPrecipitationBounds(double x0, double x1, double y0, double y1)
+{
+  const double b[4] = { x0, x1, y0, y1 };
+  for (int k = 0; k < 4; ++k)
+  {
+    this->Set(this->PrecipitationBoundsValue[k], b[k]);
+  }
+}
+
+void vtkPFRain::SetCells(int nx, int ny)
+{
+  this->Set(this->Rain.cells[0], nx);
+  this->Set(this->Rain.cells[1], ny);
+}
+
+void vtkPFRain::SetImpactResolution(int nx, int ny)
+{
+  this->Set(this->ImpactResolution[0], nx);
+  this->Set(this->ImpactResolution[1], ny);
+}
+
+void vtkPFRain::SetWindVelocity(double x, double y)
+{
+  this->Set(this->Rain.wind[0], x);
+  this->Set(this->Rain.wind[1], y);
+}
+
+void vtkPFRain::SetPressureSolver(int solver)
+{
+  this->Set(this->Water.sph.pressureSolver, static_cast<parafluid::sph::PressureSolverType>(std::clamp(solver, 0, 2)));
+}
+
+void vtkPFRain::SetWallFriction(int friction)
+{
+  this->Set(this->Water.sph.wallFriction, static_cast<parafluid::sph::WallFriction>(std::clamp(friction, 0, 2)));
+}
+
+void vtkPFRain::ReportError(const std::string& message)
+{
+  vtkErrorMacro(<< "Rain: " << message);
+}
+
+int vtkPFRain::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+int vtkPFRain::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  const double interval = this->OutputInterval > 0.0 && std::isfinite(this->OutputInterval) ? this->OutputInterval : 1.0;
+  std::vector<double> times(static_cast<std::size_t>(std::clamp(this->NumberOfOutputs, 0, 100000)) + 1);
+  for (std::size_t k = 0; k < times.size(); ++k)
+  {
+    times[k] = static_cast<double>(k) * interval;
+  }
+  const double range[2] = { times.front(), times.back() };
+  for (int port = 0; port < 3; ++port)
+  {
+    vtkInformation* outInfo = outputVector->GetInformationObject(port);
+    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));
+    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  }
+  return 1;
+}
+
+int vtkPFRain::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The whole terrain on every process (only process 0 simulates).
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  return 1;
+}
+
+std::shared_ptr<const HeightField> vtkPFRain::ReadGround(vtkDataObject* input)
+{
+  try
+  {
+    if (auto* image = vtkImageData::SafeDownCast(input))
+    {
+      parafluid::vtk::HeightImage heights;
+      std::string problem;
+      if (!parafluid::vtk::readHeightImage(image, "", heights, problem))
+      {
+        this->ReportError("Terrain: " + problem);
+        return nullptr;
+      }
+      const auto bad =
+        std::find_if(heights.heights.begin(), heights.heights.end(), [](float h) { return !std::isfinite(h); });
+      if (bad != heights.heights.end())
+      {
+        this->ReportError("Terrain: the height image's '" + heights.arrayName + "' is not finite at sample " +
+                          std::to_string(bad - heights.heights.begin()) +
+                          " (fill no-data with Terrain From Image first)");
+        return nullptr;
+      }
+      return std::make_shared<HeightField>(std::move(heights.heights), heights.nx, heights.ny, heights.origin[0],
+                                           heights.origin[1], heights.spacing[0], heights.spacing[1], 0.0);
+    }
+    auto* surface = vtkPolyData::SafeDownCast(input);
+    if (!surface || surface->GetNumberOfPolys() == 0)
+    {
+      this->ReportError("Terrain: give a 2-D height image or a surface with polygons (got " +
+                        std::string(input ? input->GetClassName() : "nothing") + " without polygons)");
+      return nullptr;
+    }
+    if (this->ImpactResolution[0] < 2 || this->ImpactResolution[1] < 2 || this->ImpactResolution[0] > 8192 ||
+        this->ImpactResolution[1] > 8192)
+    {
+      this->ReportError("ImpactResolution must be from 2 to 8192 nodes per side");
+      return nullptr;
+    }
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputData(surface);
+    triangles->PassVertsOff();
+    triangles->PassLinesOff();
+    triangles->Update();
+    vtkPolyData* mesh = triangles->GetOutput();
+    std::vector<float> storage;
+    const float* xyz = parafluid::vtk::positionsAsFloat(mesh, storage);
+    std::vector<float> points(xyz, xyz + 3 * mesh->GetNumberOfPoints());
+    for (float v : points)
+    {
+      if (!std::isfinite(v))
+      {
+        this->ReportError("Terrain: the surface has NaN or infinite point coordinates");
+        return nullptr;
+      }
+    }
+    std::vector<std::uint32_t> indices;
+    vtkCellArray* polys = mesh->GetPolys();
+    vtkIdType count = 0;
+    const vtkIdType* ids = nullptr;
+    for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+    {
+      if (count == 3)
+      {
+        indices.insert(indices.end(), { static_cast<std::uint32_t>(ids[0]), static_cast<std::uint32_t>(ids[1]),
+                                        static_cast<std::uint32_t>(ids[2]) });
+      }
+    }
+    return std::make_shared<HeightField>(HeightField::fromTriangles(points, indices, this->ImpactResolution[0],
+                                                                    this->ImpactResolution[1], 0.0));
+  }
+  catch (const std::exception& e)
+  {
+    this->ReportError(std::string("Terrain: ") + e.what());
+    return nullptr;
+  }
+}
+
+bool vtkPFRain::Resolve(const HeightField& ground, parafluid::rain::RainParameters& rain)
+{
+  rain = this->Rain;
+  double b[4];
+  ground.bounds(b);
+  const bool automaticArea =
+    std::all_of(this->PrecipitationBoundsValue, this->PrecipitationBoundsValue + 4, [](double v) { return v == 0.0; });
+  for (int k = 0; k < 4; ++k)
+  {
+    rain.bounds[k] = automaticArea ? b[k] : this->PrecipitationBoundsValue[k];
+  }
+  const auto& z = ground.elevation();
+  const auto [lowest, highest] = std::minmax_element(z.begin(), z.end());
+  const double relief = *highest - *lowest;
+  rain.height = this->PrecipitationHeight != 0.0 ? this->PrecipitationHeight : *highest + std::max(relief, 5.0);
+  parafluid::vtk::ParameterCheck check;
+  check.inRange("ExposureTime", this->ExposureTime, 0.0, 10.0, "s")
+    .inRange("SplashLifetime", this->SplashLifetime, 0.0, 10.0, "s")
+    .inRange("OutputInterval", this->OutputInterval, 1e-6, 1e5, "s")
+    .inRange("ParticleSpacing", this->Water.particleSpacing, 1e-5, 1e5, "m")
+    .inRange("KinematicViscosity", this->Water.sph.kinematicViscosity, 0.0, 1e3, "m^2/s")
+    .inRange("SurfaceTension", this->Water.sph.surfaceTension, 0.0, 1e3, "N/m")
+    .inRange("BoundaryDamping", this->Water.sph.boundaryDamping, 0.0, 1.0)
+    .inRange("SoundSpeed", this->Water.sph.soundSpeed, 0.0, 1e5, "m/s")
+    .inRange("DensityTolerance", this->Water.sph.densityTolerance, 1e-6, 0.5);
+  if (!check.ok())
+  {
+    this->ReportError(check.problem());
+    return false;
+  }
+  const std::string problem = rain.validate();
+  if (!problem.empty())
+  {
+    this->ReportError(problem);
+    return false;
+  }
+  return true;
+}
+
+int vtkPFRain::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* drops = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* water = vtkPolyData::GetData(outputVector, 1);
+  vtkPolyData* splashes = vtkPolyData::GetData(outputVector, 2);
+  if (parafluid::vtk::processIndex() != 0)
+  {
+    return 1; // process 0 simulates the whole shower
+  }
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const double interval = this->OutputInterval;
+  if (!(interval > 0.0) || !std::isfinite(interval))
+  {
+    this->ReportError("OutputInterval must be a positive number of seconds");
+    return 0;
+  }
+  double requested = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+                       ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+                       : 0.0;
+  const long long target =
+    std::clamp<long long>(std::llround(requested / interval), 0, static_cast<long long>(this->NumberOfOutputs));
+  const double t = static_cast<double>(target) * interval;
+
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0]);
+  const std::shared_ptr<const HeightField> ground = this->ReadGround(input);
+  if (!ground)
+  {
+    return 0;
+  }
+  parafluid::rain::RainParameters rain;
+  if (!this->Resolve(*ground, rain))
+  {
+    return 0;
+  }
+  Cache& cache = *this->Cached;
+  try
+  {
+    const RainField* field = nullptr;
+    std::optional<RainField> stateless;
+    if (this->SimulateRunoff)
+    {
+      const bool reusable = cache.Simulation && cache.InputTime == input->GetMTime() &&
+                            cache.FilterTime == this->GetMTime() && cache.OutputIndex <= target;
+      if (!reusable)
+      {
+        cache.Simulation.reset();
+        cache.Simulation.emplace(rain, this->Water, ground);
+        cache.OutputIndex = 0;
+        cache.InputTime = input->GetMTime();
+        cache.FilterTime = this->GetMTime();
+      }
+      bool aborted = false;
+      const double span = t - cache.Simulation->time();
+      cache.Simulation->advance(span,
+                                [this, &aborted](double fraction)
+                                {
+                                  this->UpdateProgress(fraction);
+                                  aborted = this->CheckAbort() != 0;
+                                  return !aborted;
+                                });
+      if (aborted)
+      {
+        cache.Simulation.reset();
+        return 1;
+      }
+      cache.OutputIndex = target;
+      field = &cache.Simulation->rain();
+    }
+    else
+    {
+      cache.Simulation.reset();
+      stateless.emplace(rain, ground);
+      field = &*stateless;
+    }
+    const std::vector<float>* levels = this->SimulateRunoff ? &cache.Simulation->waterLevels() : nullptr;
+    const std::string memory = parafluid::checkMemoryBudget(
+      60.0 * static_cast<double>(field->dropCount()), "drawing " + std::to_string(field->dropCount()) + " drops");
+    if (!memory.empty())
+    {
+      this->ReportError(memory);
+      return 0;
+    }
+    this->WriteDrops(*field, levels, t, drops);
+    this->WriteWater(t, water);
+    this->WriteSplashes(*field, levels, t, splashes);
+    this->FallenVolume = this->SimulateRunoff ? cache.Simulation->fallenVolume() : 0.0;
+    this->WaterVolume = this->SimulateRunoff ? static_cast<double>(cache.Simulation->particleCount()) *
+                                                 cache.Simulation->particleVolume()
+                                             : 0.0;
+    this->InfiltratedVolume = this->SimulateRunoff ? cache.Simulation->infiltratedVolume() : 0.0;
+  }
+  catch (const std::exception& e)
+  {
+    cache.Simulation.reset();
+    this->ReportError(e.what());
+    return 0;
+  }
+  for (vtkPolyData* output : { drops, water, splashes })
+  {
+    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), t);
+  }
+  return 1;
+}
+
+void vtkPFRain::WriteDrops(const RainField& rain, const std::vector<float>* water, double t, vtkPolyData* output)
+{
+  const std::size_t n = rain.dropCount();
+  std::vector<float> position(3 * n), velocity(3 * n);
+  std::vector<std::uint8_t> inAir(n);
+  rain.evaluate(t, water, position.data(), velocity.data(), inAir.data());
+  const auto& diameters = rain.diameters();
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (inAir[i])
+    {
+      std::copy_n(&position[3 * i], 3, &position[3 * kept]);
+      std::copy_n(&velocity[3 * i], 3, &velocity[3 * kept]);
+      ++kept;
+    }
+  }
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(kept));
+  std::copy_n(position.data(), 3 * kept, static_cast<float*>(points->GetVoidPointer(0)));
+  output->SetPoints(points);
+  auto velocities = vtkSmartPointer<vtkFloatArray>::New();
+  velocities->SetName(contract::Velocity);
+  velocities->SetNumberOfComponents(3);
+  velocities->SetNumberOfTuples(static_cast<vtkIdType>(kept));
+  std::copy_n(velocity.data(), 3 * kept, velocities->GetPointer(0));
+  auto diameter = vtkSmartPointer<vtkFloatArray>::New();
+  diameter->SetName("diameter");
+  diameter->SetNumberOfTuples(static_cast<vtkIdType>(kept));
+  auto streak = vtkSmartPointer<vtkFloatArray>::New();
+  streak->SetName("streak_length");
+  streak->SetNumberOfTuples(static_cast<vtkIdType>(kept));
+  for (std::size_t i = 0, k = 0; i < n; ++i)
+  {
+    if (inAir[i])
+    {
+      diameter->SetValue(static_cast<vtkIdType>(k), diameters[i]);
+      const float* v = &velocity[3 * k];
+      streak->SetValue(static_cast<vtkIdType>(k),
+                       static_cast<float>(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) * this->ExposureTime));
+      ++k;
+    }
+  }
+  output->GetPointData()->AddArray(velocities);
+  output->GetPointData()->SetActiveVectors(contract::Velocity);
+  output->GetPointData()->AddArray(diameter);
+  output->GetPointData()->AddArray(streak);
+  parafluid::vtk::setOneVertexPerPoint(output, static_cast<vtkIdType>(kept));
+  this->DropCount = static_cast<vtkIdType>(kept);
+}
+
+void vtkPFRain::WriteWater(double t, vtkPolyData* output)
+{
+  const Runoff* runoff = this->SimulateRunoff && this->Cached->Simulation ? &*this->Cached->Simulation : nullptr;
+  const parafluid::sph::SPHSolver* sph = runoff ? runoff->water() : nullptr;
+  vtkFieldData* fd = output->GetFieldData();
+  if (sph)
+  {
+    parafluid::vtk::ParticleOutputArrays extra;
+    parafluid::vtk::writeParticleState(sph->state(), extra, output);
+    const auto& p = sph->parameters();
+    const double d = runoff->parameters().particleSpacing, h = p.smoothingLength, rho0 = p.restDensity,
+                 mass = p.particleMass;
+    const double bounds[6] = { p.domainBounds[0], p.domainBounds[1], p.domainBounds[2],
+                               p.domainBounds[3], p.domainBounds[4], p.domainBounds[5] };
+    parafluid::vtk::setFieldValue(fd, contract::ParticleSpacing, &d, 1);
+    parafluid::vtk::setFieldValue(fd, contract::SmoothingLength, &h, 1);
+    parafluid::vtk::setFieldValue(fd, contract::RestDensity, &rho0, 1);
+    parafluid::vtk::setFieldValue(fd, contract::ParticleMass, &mass, 1);
+    parafluid::vtk::setFieldValue(fd, contract::DomainBounds, bounds, 6);
+  }
+  else
+  {
+    // No water yet: an empty particle set that still names the contract's arrays.
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToFloat();
+    output->SetPoints(points);
+    output->GetPointData()->AddArray(parafluid::vtk::floatArray(contract::Velocity, 3, {}));
+    output->GetPointData()->AddArray(parafluid::vtk::floatArray(contract::Density, 1, {}));
+    parafluid::vtk::setOneVertexPerPoint(output, 0);
+    const double d = this->Water.particleSpacing;
+    parafluid::vtk::setFieldValue(fd, contract::ParticleSpacing, &d, 1);
+  }
+  parafluid::vtk::setFieldValue(fd, contract::Time, &t, 1);
+}
+
+void vtkPFRain::WriteSplashes(const RainField& rain, const std::vector<float>* water, double t, vtkPolyData* output)
+{
+  std::vector<Impact> impacts;
+  if (this->SplashLifetime > 0.0)
+  {
+    rain.recentImpacts(t, this->SplashLifetime, water, impacts);
+  }
+  const auto n = static_cast<vtkIdType>(impacts.size());
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(n);
+  auto age = vtkSmartPointer<vtkFloatArray>::New();
+  age->SetName("age");
+  age->SetNumberOfTuples(n);
+  auto normal = vtkSmartPointer<vtkFloatArray>::New();
+  normal->SetName("normal");
+  normal->SetNumberOfComponents(3);
+  normal->SetNumberOfTuples(n);
+  auto slope = vtkSmartPointer<vtkFloatArray>::New();
+  slope->SetName("slope");
+  slope->SetNumberOfTuples(n);
+  auto angle = vtkSmartPointer<vtkFloatArray>::New();
+  angle->SetName("impact_angle");
+  angle->SetNumberOfTuples(n);
+  auto onWater = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  onWater->SetName("on_water");
+  onWater->SetNumberOfTuples(n);
+  const HeightField& ground = rain.ground();
+  const double step = 0.5 * ground.spacing();
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    const Impact& impact = impacts[static_cast<std::size_t>(i)];
+    points->SetPoint(i, impact.position);
+    age->SetValue(i, static_cast<float>(t - impact.time));
+    double nrm[3] = { 0.0, 0.0, 1.0 };
+    if (!impact.onWater)
+    {
+      // The ground's normal from central differences of the bilinear surface.
+      const double x = impact.position[0], y = impact.position[1];
+      const double gx = (ground.heightAt(x + step, y) - ground.heightAt(x - step, y)) / (2.0 * step);
+      const double gy = (ground.heightAt(x, y + step) - ground.heightAt(x, y - step)) / (2.0 * step);
+      const double len = std::sqrt(gx * gx + gy * gy + 1.0);
+      nrm[0] = -gx / len, nrm[1] = -gy / len, nrm[2] = 1.0 / len;
+    }
+    normal->SetTuple(i, nrm);
+    slope->SetValue(i, static_cast<float>(std::acos(std::clamp(nrm[2], -1.0, 1.0)) * 180.0 / 3.14159265358979));
+    const double v[3] = { impact.velocity[0], impact.velocity[1], impact.velocity[2] };
+    const double speed = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    const double cosine = speed > 0.0 ? -(v[0] * nrm[0] + v[1] * nrm[1] + v[2] * nrm[2]) / speed : 1.0;
+    angle->SetValue(i, static_cast<float>(std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / 3.14159265358979));
+    onWater->SetValue(i, impact.onWater ? 1 : 0);
+  }
+  output->SetPoints(points);
+  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ age, normal, slope, angle, onWater })
+  {
+    output->GetPointData()->AddArray(a);
+  }
+  output->GetPointData()->SetActiveScalars("age");
+  parafluid::vtk::setOneVertexPerPoint(output, n);
+}
+
+void vtkPFRain::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "RainfallRate: " << this->Rain.rainfallRate << " mm/h\n";
+  os << indent << "OutputInterval: " << this->OutputInterval << "\n";
+}

@@ -1,0 +1,212 @@
+// Rain becoming SPH water: the volume it carries, a basin filled to the level its volume gives,
+// water running down a slope and never under it, and infiltration.
+#include "parafluid/rain/GroundSurface.h"
+#include "parafluid/rain/Runoff.h"
+#include "parafluid/sph/SPHSolver.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+using parafluid::HeightField;
+using parafluid::rain::RainParameters;
+using parafluid::rain::Runoff;
+using parafluid::rain::RunoffParameters;
+using parafluid::rain::triangulatedHeight;
+
+namespace
+{
+/// z = f(x, y) on an n x n grid over [0, size]^2.
+template<class F>
+std::shared_ptr<HeightField> groundOf(double size, int n, F f)
+{
+  std::vector<float> z(static_cast<std::size_t>(n) * n);
+  const double h = size / (n - 1);
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      z[static_cast<std::size_t>(j) * n + i] = static_cast<float>(f(i * h, j * h));
+    }
+  }
+  return std::make_shared<HeightField>(std::move(z), n, n, 0.0, 0.0, h, h, 0.0);
+}
+
+/// A cloudburst from low over the ground: ballistic drops from 0.3 m, so the SPH's steps stay long.
+RainParameters cloudburst(double size, double rate)
+{
+  RainParameters r;
+  r.bounds = { 0.0, size, 0.0, size };
+  r.cells = { 4, 4 };
+  r.rainfallRate = rate;
+  r.dropsPerRealDrop = 2e-3;
+  r.terminalVelocity = false;
+  r.initialSpeed = 0.5;
+  r.seed = 11;
+  return r;
+}
+
+RunoffParameters water(double spacing)
+{
+  RunoffParameters p;
+  p.particleSpacing = spacing;
+  p.rainStep = 0.02;
+  p.sph.pressureSolver = parafluid::sph::PressureSolverType::DFSPH;
+  return p;
+}
+
+/// The lowest clearance of any particle over the triangulated ground [m].
+double lowestClearance(const Runoff& runoff, const HeightField& ground)
+{
+  double lowest = 1e30;
+  if (const auto* sph = runoff.water())
+  {
+    const auto& s = sph->state();
+    for (std::size_t i = 0; i < s.size(); ++i)
+    {
+      lowest = std::min(lowest, s.z[i] - triangulatedHeight(ground, s.x[i], s.y[i]));
+    }
+  }
+  return lowest;
+}
+} // namespace
+
+TEST(Runoff, BasinKeepsTheRainVolumeAndFillsToItsLevel)
+{
+  // A paraboloid bowl z = a r^2 (a = 1 / m) 0.8 m across. It rains 25 s, then the water settles
+  // for 5 s. The water inserted equals the rain that fell within one particle per cell, and the
+  // pond's surface is where a bowl holding that volume is full: V = pi L^2 / (2 a).
+  const double size = 0.8, a = 1.0;
+  auto ground = groundOf(size, 41, [&](double x, double y)
+                         { return a * ((x - 0.4) * (x - 0.4) + (y - 0.4) * (y - 0.4)); });
+  RainParameters rain = cloudburst(size, 1500.0);
+  rain.height = 0.6;
+  rain.duration = 25.0;
+  const double d = 0.02;
+  Runoff runoff(rain, water(d), ground);
+  runoff.advance(30.0);
+  const double particles = static_cast<double>(runoff.particleCount()) * runoff.particleVolume();
+  const double fallen = runoff.fallenVolume();
+  RecordProperty("particles", std::to_string(runoff.particleCount()));
+  RecordProperty("fallen_m3", std::to_string(fallen));
+  RecordProperty("sph_m3", std::to_string(particles));
+  ASSERT_GT(runoff.particleCount(), 500u);
+  // Bookkeeping is exact; what waits in the cells is under one particle each.
+  EXPECT_NEAR(particles + runoff.waitingVolume(), fallen, 1e-9 * fallen);
+  EXPECT_LT(runoff.waitingVolume(), 16 * runoff.particleVolume());
+  EXPECT_NEAR(particles, fallen, 0.01 * fallen);
+  // The surface: the highest particles in the middle of the pond, plus half a spacing.
+  const auto& s = runoff.water()->state();
+  double top = -1e30;
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    if (std::hypot(s.x[i] - 0.4, s.y[i] - 0.4) < 0.1)
+    {
+      top = std::max(top, static_cast<double>(s.z[i]));
+    }
+  }
+  const double level = top + 0.5 * d;
+  const double expected = std::sqrt(2.0 * a * particles / M_PI);
+  RecordProperty("level_m", std::to_string(level));
+  RecordProperty("expected_level_m", std::to_string(expected));
+  EXPECT_NEAR(level, expected, d);
+  EXPECT_GT(lowestClearance(runoff, *ground), -1e-6);
+}
+
+TEST(Runoff, WaterRunsDownATiltedPlaneAndNeverUnderIt)
+{
+  // A plane falling 0.3 m over 1.2 m in x. Rain on its upper third only; the water's centre of
+  // mass moves downhill, and no particle is ever under the ground, over 10,000 SPH steps.
+  const double size = 1.2;
+  auto ground = groundOf(size, 25, [&](double x, double) { return 0.3 * (1.0 - x / size); });
+  RainParameters rain = cloudburst(size, 3000.0);
+  rain.bounds = { 0.0, 0.4, 0.0, size };
+  rain.height = 0.7;
+  rain.duration = 5.0;
+  RunoffParameters p = water(0.02);
+  Runoff runoff(rain, p, ground);
+  double firstX = -1.0, lastX = 0.0;
+  double lowest = 1e30;
+  while (runoff.sphSteps() < 10000)
+  {
+    runoff.advance(0.02);
+    lowest = std::min(lowest, lowestClearance(runoff, *ground));
+    if (runoff.particleCount() > 0)
+    {
+      const auto& s = runoff.water()->state();
+      double mean = 0.0;
+      for (float x : s.x)
+      {
+        mean += x;
+      }
+      mean /= static_cast<double>(s.size());
+      if (firstX < 0.0 && runoff.time() > 1.0)
+      {
+        firstX = mean;
+      }
+      lastX = mean;
+    }
+  }
+  RecordProperty("time_s", std::to_string(runoff.time()));
+  {
+    const auto& st = runoff.water()->state();
+    int hist[12] = {};
+    double vmean = 0;
+    for (std::size_t i = 0; i < st.size(); ++i) { hist[std::min(11, int(st.x[i] / 0.1))]++; vmean += st.vx[i]; }
+    for (int b = 0; b < 12; ++b) std::printf("%d ", hist[b]);
+    std::printf(" vx mean %g clearance %g\n", vmean / st.size(), lowest);
+  }
+  std::printf("t %g particles %zu first %g last %g\n", runoff.time(), runoff.particleCount(), firstX, lastX);
+  RecordProperty("first_x", std::to_string(firstX));
+  RecordProperty("last_x", std::to_string(lastX));
+  EXPECT_GT(runoff.particleCount(), 200u);
+  EXPECT_GT(lowest, -1e-6) << "a particle got under the terrain";
+  EXPECT_GT(lastX, firstX + 0.2) << "the water should run down the slope (towards +x)";
+}
+
+TEST(Runoff, InfiltrationTakesTheRainUntilTheRainOutpacesIt)
+{
+  const double size = 0.6;
+  auto ground = groundOf(size, 13, [](double, double) { return 0.0; });
+  RainParameters rain = cloudburst(size, 2000.0);
+  rain.height = 0.4;
+  RunoffParameters p = water(0.02);
+  p.infiltration = 3000.0; // faster than it rains: nothing runs off
+  {
+    Runoff runoff(rain, p, ground);
+    runoff.advance(5.0);
+    EXPECT_EQ(runoff.particleCount(), 0u);
+    EXPECT_GT(runoff.fallenVolume(), 10 * runoff.particleVolume());
+    EXPECT_NEAR(runoff.infiltratedVolume() + runoff.waitingVolume(), runoff.fallenVolume(), 1e-9);
+  }
+  p.infiltration = 1000.0; // half the rain soaks in, half becomes water
+  Runoff runoff(rain, p, ground);
+  runoff.advance(5.0);
+  const double inWater = static_cast<double>(runoff.particleCount()) * runoff.particleVolume();
+  EXPECT_GT(runoff.particleCount(), 0u);
+  EXPECT_NEAR(inWater + runoff.infiltratedVolume() + runoff.waitingVolume(), runoff.fallenVolume(),
+              1e-9 * runoff.fallenVolume());
+  EXPECT_NEAR(runoff.infiltratedVolume() / runoff.fallenVolume(), 0.5, 0.1);
+}
+
+TEST(Runoff, BadParametersAreRefusedByName)
+{
+  auto ground = groundOf(1.0, 5, [](double, double) { return 0.0; });
+  RainParameters rain = cloudburst(1.0, 10.0);
+  RunoffParameters p = water(0.0);
+  EXPECT_THROW(Runoff(rain, p, ground), std::invalid_argument);
+  p = water(0.05);
+  p.sphEvery = 0;
+  try
+  {
+    Runoff runoff(rain, p, ground);
+    FAIL() << "SPHEvery 0 accepted";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("SPHEvery"), std::string::npos);
+  }
+}
