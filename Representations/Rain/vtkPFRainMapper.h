@@ -1,0 +1,70 @@
+/**
+ * @class vtkPFRainMapper
+ * @brief Draws rain drops as streaks lit by precomputed radiance transfer, or impacts as splash
+ * sprites (Kind), over the scene.
+ *
+ * Streaks read the point arrays `diameter` [m], `velocity` [m/s] and `streak_length` [m] (the Rain
+ * filter's drops; a drop without them is 2 mm wide, falls at 6 m/s and streaks over 1/60 s).
+ * Splashes read `age` [s], `normal`, `slope` [deg], `impact_angle` [deg] and `on_water` (the Rain
+ * filter's splashes). The environment is six cube-map images when set, else the view's background.
+ * Drawn by a vtkPFScreenSpaceFluidActor (after the rest of the scene), with the scene's depth.
+ */
+#pragma once
+
+#include "ParaFluidRainRepresentationsModule.h"
+#include "vtkMapper.h"
+
+#include <memory>
+#include <string>
+
+class PARAFLUIDRAINREPRESENTATIONS_EXPORT vtkPFRainMapper : public vtkMapper
+{
+public:
+  static vtkPFRainMapper* New();
+  vtkTypeMacro(vtkPFRainMapper, vtkMapper);
+
+  enum Kinds
+  {
+    Streaks = 0,
+    Splashes = 1
+  };
+  vtkSetClampMacro(Kind, int, 0, 1);
+  vtkGetMacro(Kind, int);
+  /// Streaks: 0 blended streaks, 1 opaque quads of the radiance alone.
+  vtkSetClampMacro(DisplayMode, int, 0, 1);
+  vtkSetClampMacro(RefractiveIndex, double, 1.01, 3.0);
+  vtkSetClampMacro(Brightness, double, 0.0, 1e6);
+  vtkSetClampMacro(Opacity, double, 0.0, 1.0);
+  vtkSetClampMacro(FogDistance, double, 0.0, 1e9);
+  vtkSetClampMacro(WidthScale, double, 0.0, 1e6);
+  vtkSetClampMacro(SplashSize, double, 0.0, 1e6);
+  vtkSetClampMacro(SplashLifetime, double, 1e-6, 1e6);
+  void SetEnvironmentImage(int face, const char* file);
+
+  void Render(vtkRenderer* renderer, vtkActor* actor) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+  double* GetBounds() override;
+  using vtkMapper::GetBounds;
+
+protected:
+  vtkPFRainMapper();
+  ~vtkPFRainMapper() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+private:
+  vtkPFRainMapper(const vtkPFRainMapper&) = delete;
+  void operator=(const vtkPFRainMapper&) = delete;
+
+  int Kind = Streaks;
+  int DisplayMode = 0;
+  double RefractiveIndex = 1.333;
+  double Brightness = 1.0;
+  double Opacity = 0.6;
+  double FogDistance = 0.0;
+  double WidthScale = 1.0;
+  double SplashSize = 0.05;
+  double SplashLifetime = 0.1;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
