@@ -1,6 +1,9 @@
 #include "parafluid/rain/RainField.h"
 
 #include "private/DropRandom.h"
+#include "private/DropRows.h"
+
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -172,10 +175,13 @@ RainField::RainField(const RainParameters& parameters, std::shared_ptr<const Hei
   this->Speed.resize(slots);
   this->Period.resize(slots);
   this->Phase.resize(slots);
+  this->InversePeriod.resize(slots);
   this->CellWater.assign(cells, 0.0);
+  this->CellStart.assign(cells + 1, 0);
   std::size_t s = 0;
   for (std::size_t c = 0; c < cells; ++c)
   {
+    this->CellStart[c] = static_cast<std::int64_t>(s);
     double waterRate = 0.0; // sum of vol(D) / P over the cell's slots [m^3/s per real drop]
     for (std::int64_t k = 0; k < count[c]; ++k, ++s)
     {
@@ -191,10 +197,12 @@ RainField::RainField(const RainParameters& parameters, std::shared_ptr<const Hei
       this->Speed[s] = static_cast<float>(speed);
       this->Period[s] = static_cast<float>(period);
       this->Phase[s] = static_cast<float>(v * period);
+      this->InversePeriod[s] = 1.0 / static_cast<double>(this->Period[s]);
       waterRate += DropSizeDistribution::volume(this->Diameter[s]) / this->Period[s];
     }
     this->CellWater[c] = this->Sizes.rate() * this->cellArea() / waterRate;
   }
+  this->CellStart[cells] = static_cast<std::int64_t>(s);
 }
 
 std::uint32_t RainField::cellOf(double x, double y) const
@@ -226,7 +234,7 @@ bool RainField::mayBeUnderWater(std::uint32_t slot, const std::vector<float>* wa
 
 std::int64_t RainField::dropAt(std::uint32_t slot, double t) const
 {
-  return static_cast<std::int64_t>(std::floor((t + this->Phase[slot]) / this->Period[slot]));
+  return static_cast<std::int64_t>(std::floor((t + this->Phase[slot]) * this->InversePeriod[slot]));
 }
 
 RainField::DropPath RainField::path(std::uint32_t slot, std::int64_t k) const
@@ -269,34 +277,71 @@ void RainField::evaluate(double t, const std::vector<float>* water, float* posit
                          std::uint8_t* inAir) const
 {
   const auto n = static_cast<std::int64_t>(this->dropCount());
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < n; ++i)
+  DropCache& cache = this->Cache;
+  if (cache.drop.size() != static_cast<std::size_t>(n))
   {
-    const auto slot = static_cast<std::uint32_t>(i);
-    double at[3], v[3];
-    this->drop(slot, t, at, v);
-    const double x = at[0], y = at[1], z = at[2];
-    if (position)
+    cache.drop.assign(static_cast<std::size_t>(n), -1e300);
+    cache.birth.assign(static_cast<std::size_t>(n), 0.0);
+    for (auto* a : { &cache.targetX, &cache.targetY, &cache.ground, &cache.horizontalX, &cache.horizontalY })
     {
-      position[3 * i] = static_cast<float>(x), position[3 * i + 1] = static_cast<float>(y),
-                   position[3 * i + 2] = static_cast<float>(z);
+      a->assign(static_cast<std::size_t>(n), 0.0f);
     }
-    if (velocity)
+  }
+  // Pass 1: the drop in each slot now; a slot whose drop changed since the last call gets its new
+  // path (a drop lives for seconds, a frame is a few milliseconds: rare).
+  std::vector<std::uint8_t>& changed = cache.changed;
+  changed.resize(static_cast<std::size_t>(n));
+#pragma omp parallel
+  {
+    const int part = omp_get_thread_num(), parts = omp_get_num_threads();
+    const std::int64_t begin = n * part / parts, end = n * (part + 1) / parts;
+    detail::changedDrops(this->Phase.data(), this->InversePeriod.data(), cache.drop.data(), begin, end, t,
+                         changed.data());
+    for (std::int64_t i = begin; i < end; ++i)
     {
-      velocity[3 * i] = static_cast<float>(v[0]), velocity[3 * i + 1] = static_cast<float>(v[1]);
-      velocity[3 * i + 2] = static_cast<float>(v[2]);
-    }
-    if (inAir)
-    {
-      // A drop is above its target's ground until it gets there (over a ridge on its way it is
-      // hidden behind the ground anyway); the water is tested in the cell the drop is over.
-      bool air = this->born(slot, this->dropAt(slot, t));
-      if (water && air)
+      if (changed[i])
       {
-        air = z > (*water)[this->cellOf(x, y)];
+        const auto slot = static_cast<std::uint32_t>(i);
+        const std::int64_t k = this->dropAt(slot, t);
+        const DropPath d = this->path(slot, k);
+        cache.drop[i] = static_cast<double>(k);
+        cache.birth[i] = d.birth;
+        cache.targetX[i] = static_cast<float>(d.target[0]), cache.targetY[i] = static_cast<float>(d.target[1]);
+        cache.ground[i] = static_cast<float>(d.ground);
+        cache.horizontalX[i] = static_cast<float>(d.horizontal[0]);
+        cache.horizontalY[i] = static_cast<float>(d.horizontal[1]);
       }
-      inAir[i] = air ? 1 : 0;
     }
+  }
+  // Pass 2: positions, velocities and whether in the air, a loop without calls (vectorised), over
+  // each cell's slots with its water level.
+  // Every output is written (a loop without branches vectorises): scratch for those not asked for.
+  if (!position)
+  {
+    cache.position.resize(3 * static_cast<std::size_t>(n));
+    position = cache.position.data();
+  }
+  if (!velocity)
+  {
+    cache.velocity.resize(3 * static_cast<std::size_t>(n));
+    velocity = cache.velocity.data();
+  }
+  if (!inAir)
+  {
+    cache.inAir.resize(static_cast<std::size_t>(n));
+    inAir = cache.inAir.data();
+  }
+  detail::DropRows rows;
+  rows.birth = cache.birth.data(), rows.targetX = cache.targetX.data(), rows.targetY = cache.targetY.data();
+  rows.ground = cache.ground.data(), rows.horizontalX = cache.horizontalX.data();
+  rows.horizontalY = cache.horizontalY.data(), rows.period = this->Period.data(), rows.speed = this->Speed.data();
+  const int cells = this->cellCount();
+#pragma omp parallel for schedule(static)
+  for (int c = 0; c < cells; ++c)
+  {
+    const float level = water ? (*water)[c] : -std::numeric_limits<float>::max();
+    detail::evaluateRows(rows, this->CellStart[c], this->CellStart[c + 1], t, this->Parameters.terminalVelocity,
+                         this->Parameters.gravity, this->Parameters.duration, level, position, velocity, inAir);
   }
 }
 
@@ -436,7 +481,20 @@ void RainField::collectImpacts(double t, const std::vector<float>* water, std::v
       lastCounted[s] = this->dropAt(static_cast<std::uint32_t>(s), 0.0) - 1;
     }
   }
-  // Per slot in parallel, then gathered in slot order (the same list for any thread count).
+  // Which slots may have something to count (a vectorised pass over each cell's slots, which lie
+  // together), then those slots in parallel, gathered in slot order (the same list for any thread
+  // count).
+  std::vector<std::uint8_t>& candidate = this->Cache.candidate;
+  candidate.resize(n);
+  const int cells = this->cellCount();
+#pragma omp parallel for schedule(static)
+  for (int c = 0; c < cells; ++c)
+  {
+    const std::int64_t begin = this->CellStart[c], end = this->CellStart[c + 1];
+    const bool wet = water && (*water)[c] > this->CellLowest[c];
+    detail::impactCandidates(this->Phase.data(), this->InversePeriod.data(), lastCounted.data(), begin, end, t, wet,
+                             candidate.data());
+  }
   const int threads = 64;
   std::vector<std::vector<Impact>> found(threads);
   const auto count = static_cast<std::int64_t>(n);
@@ -446,6 +504,10 @@ void RainField::collectImpacts(double t, const std::vector<float>* water, std::v
     const std::int64_t begin = count * part / threads, end = count * (part + 1) / threads;
     for (std::int64_t i = begin; i < end; ++i)
     {
+      if (!candidate[i])
+      {
+        continue;
+      }
       const auto slot = static_cast<std::uint32_t>(i);
       const std::int64_t newest = this->dropAt(slot, t);
       for (std::int64_t k = lastCounted[i] + 1; k <= newest; ++k)

@@ -60,7 +60,8 @@ public:
   double waterPerImpact(std::uint32_t slot) const;
 
   /// Every drop at time t: positions and velocities (3 floats each, may be null) and whether it is
-  /// in the air (above the ground and above `waterLevels`, one height per cell or null).
+  /// in the air (above the ground and above `waterLevels`, one height per cell or null). Keeps
+  /// each slot's current path between calls (so not for concurrent calls on one field).
   void evaluate(double t, const std::vector<float>* waterLevels, float* position, float* velocity,
                 std::uint8_t* inAir) const;
   /// The drop of a slot in the air at time t: position [m] and velocity [m/s], in double precision.
@@ -102,7 +103,19 @@ private:
   // Per slot (structure of arrays): its cell, diameter, speed (terminal, or initial), period, phase.
   std::vector<std::uint32_t> Cell;
   std::vector<float> Diameter, Speed, Period, Phase;
+  std::vector<double> InversePeriod;
+  // The path of the drop each slot had at the last evaluate() (a drop lives for seconds, a frame
+  // is a few milliseconds): values of pure functions, so results never depend on what was cached.
+  struct DropCache
+  {
+    std::vector<double> drop, birth; // the drop's index (exact in a double) and birth time [s]
+    std::vector<float> targetX, targetY, ground, horizontalX, horizontalY; // float: a frame's precision
+    std::vector<std::uint8_t> changed, candidate, inAir; // scratch of the passes
+    std::vector<float> position, velocity;
+  };
+  mutable DropCache Cache;
   std::vector<double> CellLowest; // lowest ground in each cell [m]
+  std::vector<std::int64_t> CellStart; // the slots of cell c are CellStart[c] .. CellStart[c + 1] - 1
   std::vector<double> CellWater;  // w_c: real drops per drawn drop in each cell
 };
 } // namespace parafluid::rain
