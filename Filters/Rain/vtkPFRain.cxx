@@ -48,9 +48,6 @@ vtkPFRain::vtkPFRain()
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(3);
-  // Runoff is thin sheets of water: DFSPH (no tension at a free surface) is the default here;
-  // δ-SPH's negative pressure holds a film of one particle on a slope like glue.
-  this->Water.sph.pressureSolver = parafluid::sph::PressureSolverType::DFSPH;
 }
 
 vtkPFRain::~vtkPFRain() = default;
@@ -224,7 +221,12 @@ bool vtkPFRain::Resolve(const HeightField& ground, parafluid::rain::RainParamete
   const double relief = *highest - *lowest;
   rain.height = this->PrecipitationHeight != 0.0 ? this->PrecipitationHeight : *highest + std::max(relief, 5.0);
   parafluid::vtk::ParameterCheck check;
-  check.inRange("ExposureTime", this->ExposureTime, 0.0, 10.0, "s")
+  check.inRange("Seed", this->SeedValue, 0, 2147483647)
+    .inRange("MaxParticles", this->MaxParticlesValue, 1, 2147483647)
+    .inRange("NumberOfOutputs", this->NumberOfOutputs, 0, 100000)
+    .inRange("ImpactResolution", this->ImpactResolution[0], 2, 8192)
+    .inRange("ImpactResolution", this->ImpactResolution[1], 2, 8192)
+    .inRange("ExposureTime", this->ExposureTime, 0.0, 10.0, "s")
     .inRange("SplashLifetime", this->SplashLifetime, 0.0, 10.0, "s")
     .inRange("OutputInterval", this->OutputInterval, 1e-6, 1e5, "s")
     .inRange("ParticleSpacing", this->Water.particleSpacing, 1e-5, 1e5, "m")
@@ -238,6 +240,8 @@ bool vtkPFRain::Resolve(const HeightField& ground, parafluid::rain::RainParamete
     this->ReportError(check.problem());
     return false;
   }
+  rain.seed = static_cast<std::uint64_t>(this->SeedValue);
+  this->Water.maxParticles = static_cast<std::size_t>(this->MaxParticlesValue);
   const std::string problem = rain.validate();
   if (!problem.empty())
   {
@@ -261,6 +265,11 @@ int vtkPFRain::RequestData(vtkInformation*, vtkInformationVector** inputVector, 
   if (!(interval > 0.0) || !std::isfinite(interval))
   {
     this->ReportError("OutputInterval must be a positive number of seconds");
+    return 0;
+  }
+  if (this->NumberOfOutputs < 0 || this->NumberOfOutputs > 100000)
+  {
+    this->ReportError("NumberOfOutputs must be from 0 to 100000 (got " + std::to_string(this->NumberOfOutputs) + ")");
     return 0;
   }
   double requested = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())

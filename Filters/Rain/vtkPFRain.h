@@ -47,7 +47,7 @@ public:
   void SetVelocityJitter(double value) { this->Set(this->Rain.velocityJitter, value); }
   void SetTerminalVelocity(int value) { this->Set(this->Rain.terminalVelocity, value != 0); }
   void SetInitialSpeed(double value) { this->Set(this->Rain.initialSpeed, value); }
-  void SetSeed(int value) { this->Set(this->Rain.seed, static_cast<std::uint64_t>(value < 0 ? 0 : value)); }
+  void SetSeed(int value) { this->Set(this->SeedValue, value); }
   void SetRainDuration(double value) { this->Set(this->Rain.duration, value); }
   /// [s]: streak_length = speed x ExposureTime.
   void SetExposureTime(double value) { this->Set(this->ExposureTime, value); }
@@ -62,7 +62,7 @@ public:
   void SetSPHEvery(int value) { this->Set(this->Water.sphEvery, value); }
   void SetRainTimeStep(double value) { this->Set(this->Water.rainStep, value); }
   void SetInfiltration(double value) { this->Set(this->Water.infiltration, value); }
-  void SetMaxParticles(int value) { this->Set(this->Water.maxParticles, static_cast<std::size_t>(value < 1 ? 1 : value)); }
+  void SetMaxParticles(int value) { this->Set(this->MaxParticlesValue, value); }
   /// SPH Step's solver settings (parafluid/sph/SPHParameters.h).
   void SetPressureSolver(int solver);
   void SetKinematicViscosity(double value) { this->Set(this->Water.sph.kinematicViscosity, static_cast<float>(value)); }
@@ -74,7 +74,7 @@ public:
 
   vtkSetMacro(OutputInterval, double);
   vtkGetMacro(OutputInterval, double);
-  vtkSetClampMacro(NumberOfOutputs, int, 0, 100000);
+  vtkSetMacro(NumberOfOutputs, int);
   vtkGetMacro(NumberOfOutputs, int);
 
   /// After an update: drops drawn, and the volumes [m^3] of rain fallen, water in the SPH, and
@@ -117,6 +117,8 @@ private:
   double PrecipitationBoundsValue[4] = { 0, 0, 0, 0 };
   double PrecipitationHeight = 0.0;
   int ImpactResolution[2] = { 256, 256 };
+  int SeedValue = 1;
+  int MaxParticlesValue = 4000000;
   double ExposureTime = 1.0 / 60.0;
   double SplashLifetime = 0.1;
   bool SimulateRunoff = true;

@@ -54,9 +54,9 @@ std::string RainParameters::validate() const
   {
     problem << "Gravity must be in (0, 1000] m/s^2 (got " << this->gravity << ")";
   }
-  else if (!(this->duration >= 0.0) || !std::isfinite(this->duration))
+  else if (!(this->duration >= 0.0) || !(this->duration <= 1e9))
   {
-    problem << "RainDuration must be a non-negative number of seconds (0: forever; got " << this->duration << ")";
+    problem << "RainDuration must be from 0 to 1e9 s (0: forever; got " << this->duration << ")";
   }
   return problem.str();
 }
