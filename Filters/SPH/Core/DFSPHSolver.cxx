@@ -98,6 +98,20 @@ void DFSPHSolver::permute(SPHSolver& sim, const std::vector<std::uint32_t>& orde
   }
 }
 
+void DFSPHSolver::resize(std::size_t n)
+{
+  // The warm starts of the particles already there are kept (losing them every time rain adds a
+  // particle leaves each step's solve to start from nothing).
+  this->DensityStiffness.resize(n, 0.0f);
+  this->DivergenceStiffness.resize(n, 0.0f);
+}
+
+void DFSPHSolver::restart(SPHSolver& sim)
+{
+  this->computeDensityAndFactor(sim);
+  sim.computeAccelerations(false);
+}
+
 std::size_t DFSPHSolver::bytes() const
 {
   std::size_t total = this->NeighbourCount.capacity() * sizeof(std::uint16_t);

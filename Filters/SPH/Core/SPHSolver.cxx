@@ -229,9 +229,10 @@ void SPHSolver::addParticles(const std::vector<float>& x, const std::vector<floa
   {
     this->PressureImpulse.resize(n + added, 0.0f);
   }
+  this->Pressure->resize(n + added);
   this->drift(0.0f); // inside the walls
   this->sortByCell();
-  this->Pressure->start(*this);
+  this->Pressure->restart(*this);
 }
 
 std::size_t SPHSolver::removeParticles(const std::vector<std::uint8_t>& remove)

@@ -36,15 +36,14 @@ namespace parafluid::rain
 struct RunoffParameters
 {
   /// The solver's settings; smoothingLength, particleMass, domainBounds, gravity and (when 0) the
-  /// sound speed are derived from the spacing, the ground and the precipitation area. Defaults
-  /// for runoff: DFSPH (thin sheets of water: no tension at a free surface, where δ-SPH's negative
-  /// pressure holds a one-particle film on a slope), and water that keeps none of its normal
+  /// sound speed are derived from the spacing, the ground and the precipitation area. SPH Step's
+  /// default solver (δ-SPH: DFSPH, which slides thin films down slopes more freely, blows up
+  /// within seconds under a cloudburst on a terrain), and water that keeps none of its normal
   /// velocity when it meets the ground (a drop's water spreads; it does not bounce as a ball).
   sph::SPHParameters sph = runoffDefaults();
   static sph::SPHParameters runoffDefaults()
   {
     sph::SPHParameters p;
-    p.pressureSolver = sph::PressureSolverType::DFSPH;
     p.boundaryDamping = 1.0f;
     return p;
   }

@@ -17,6 +17,8 @@ public:
   void permute(SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
                int threads) override;
   std::size_t bytes() const override;
+  void resize(std::size_t n) override;
+  void restart(SPHSolver& sim) override;
 
 private:
   void computeDensityAndFactor(SPHSolver& sim);

@@ -33,6 +33,12 @@ public:
   /// sorted its particles by grid cell (`order[k]`: the old index of new particle k).
   virtual void permute(SPHSolver& simulation, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
                        int threads) = 0;
+  /// Particles were added at the end of the state (SPHSolver::addParticles): the arrays this
+  /// solver carries from step to step grow to n (new entries zero), before the state is sorted.
+  virtual void resize(std::size_t /*n*/) {}
+  /// After particles were added and the state sorted: what start() computes, keeping what the
+  /// solver carries from step to step (DFSPH's warm starts). By default start() again.
+  virtual void restart(SPHSolver& simulation) { this->start(simulation); }
   /// Bytes held by this solver's arrays.
   virtual std::size_t bytes() const = 0;
 };
