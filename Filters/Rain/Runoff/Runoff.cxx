@@ -170,40 +170,42 @@ void Runoff::insert(const std::vector<Impact>& impacts)
     const double water = this->Rain.waterPerImpact(impact.slot);
     this->Fallen += water;
     ++this->ImpactCount[impact.cell];
-    bool emit = false;
+    int emit = 0;
     if (p.conserveVolume)
     {
+      // A drop can carry more than a particle's water (a large cell's drops stand for many real
+      // ones): as many particles as the cell has gathered.
       this->Gathered[impact.cell] += water;
       if (this->Gathered[impact.cell] >= volume)
       {
-        this->Gathered[impact.cell] -= volume;
-        emit = true;
+        emit = static_cast<int>(std::min(std::floor(this->Gathered[impact.cell] / volume), 1e6));
+        this->Gathered[impact.cell] -= emit * volume;
       }
     }
     else if (++this->Tally[impact.cell] >= static_cast<std::uint32_t>(p.rainScale))
     {
       this->Tally[impact.cell] = 0;
-      emit = true;
+      emit = 1;
     }
-    if (!emit)
+    for (int k = 0; k < emit; ++k)
     {
-      continue;
+      // Half a spacing above the surface it hit: above the triangulated ground (which the SPH's
+      // boundary is) as well as the bilinear one, or on top of the water's highest particle. More
+      // than one particle: on a spiral of spacing d around the impact, so none coincide.
+      const double angle = 2.399963 * k, radius = d * std::sqrt(static_cast<double>(k));
+      const double px = impact.position[0] + radius * std::cos(angle);
+      const double py = impact.position[1] + radius * std::sin(angle);
+      double pz = impact.onWater ? impact.position[2] + 0.5 * d
+                                 : std::max(this->Ground->heightAt(px, py), triangulatedHeight(*this->Ground, px, py)) +
+                                     0.5 * d;
+      x.push_back(static_cast<float>(px));
+      y.push_back(static_cast<float>(py));
+      z.push_back(static_cast<float>(pz));
+      vx.push_back(impact.velocity[0]);
+      vy.push_back(impact.velocity[1]);
+      vz.push_back(impact.velocity[2]);
+      this->Inserted += volume;
     }
-    // Half a spacing above the surface it hit: above the triangulated ground (which the SPH's
-    // boundary is) as well as the bilinear one, or on top of the water's highest particle.
-    const double px = impact.position[0], py = impact.position[1];
-    double pz = std::max(static_cast<double>(impact.position[2]), triangulatedHeight(*this->Ground, px, py)) + 0.5 * d;
-    if (impact.onWater)
-    {
-      pz = impact.position[2] + 0.5 * d;
-    }
-    x.push_back(static_cast<float>(px));
-    y.push_back(static_cast<float>(py));
-    z.push_back(static_cast<float>(pz));
-    vx.push_back(impact.velocity[0]);
-    vy.push_back(impact.velocity[1]);
-    vz.push_back(impact.velocity[2]);
-    this->Inserted += volume;
   }
   if (x.empty())
   {
