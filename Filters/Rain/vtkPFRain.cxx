@@ -476,6 +476,8 @@ void vtkPFRain::WriteSplashes(const RainField& rain, const std::vector<float>* w
   onWater->SetNumberOfTuples(n);
   const HeightField& ground = rain.ground();
   const double step = 0.5 * ground.spacing();
+  double bounds[4];
+  ground.bounds(bounds);
   for (vtkIdType i = 0; i < n; ++i)
   {
     const Impact& impact = impacts[static_cast<std::size_t>(i)];
@@ -484,10 +486,13 @@ void vtkPFRain::WriteSplashes(const RainField& rain, const std::vector<float>* w
     double nrm[3] = { 0.0, 0.0, 1.0 };
     if (!impact.onWater)
     {
-      // The ground's normal from central differences of the bilinear surface.
+      // The ground's normal from differences of the bilinear surface, kept inside the grid (beyond
+      // it the height is held constant, which would flatten the slope at the edges).
       const double x = impact.position[0], y = impact.position[1];
-      const double gx = (ground.heightAt(x + step, y) - ground.heightAt(x - step, y)) / (2.0 * step);
-      const double gy = (ground.heightAt(x, y + step) - ground.heightAt(x, y - step)) / (2.0 * step);
+      const double x0 = std::max(x - step, bounds[0]), x1 = std::min(x + step, bounds[1]);
+      const double y0 = std::max(y - step, bounds[2]), y1 = std::min(y + step, bounds[3]);
+      const double gx = x1 > x0 ? (ground.heightAt(x1, y) - ground.heightAt(x0, y)) / (x1 - x0) : 0.0;
+      const double gy = y1 > y0 ? (ground.heightAt(x, y1) - ground.heightAt(x, y0)) / (y1 - y0) : 0.0;
       const double len = std::sqrt(gx * gx + gy * gy + 1.0);
       nrm[0] = -gx / len, nrm[1] = -gy / len, nrm[2] = 1.0 / len;
     }
