@@ -103,7 +103,8 @@ int vtkPFRain::FillInputPortInformation(int, vtkInformation* info)
 
 int vtkPFRain::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  const double interval = this->OutputInterval > 0.0 && std::isfinite(this->OutputInterval) ? this->OutputInterval : 1.0;
+  const double interval =
+    this->OutputInterval > 0.0 && std::isfinite(this->OutputInterval) ? this->OutputInterval : 1.0;
   std::vector<double> times(static_cast<std::size_t>(std::clamp(this->NumberOfOutputs, 0, 100000)) + 1);
   for (std::size_t k = 0; k < times.size(); ++k)
   {
@@ -195,8 +196,8 @@ std::shared_ptr<const HeightField> vtkPFRain::ReadGround(vtkDataObject* input)
                                         static_cast<std::uint32_t>(ids[2]) });
       }
     }
-    return std::make_shared<HeightField>(HeightField::fromTriangles(points, indices, this->ImpactResolution[0],
-                                                                    this->ImpactResolution[1], 0.0));
+    return std::make_shared<HeightField>(
+      HeightField::fromTriangles(points, indices, this->ImpactResolution[0], this->ImpactResolution[1], 0.0));
   }
   catch (const std::exception& e)
   {
@@ -331,8 +332,8 @@ int vtkPFRain::RequestData(vtkInformation*, vtkInformationVector** inputVector, 
       field = &*stateless;
     }
     const std::vector<float>* levels = this->SimulateRunoff ? &cache.Simulation->waterLevels() : nullptr;
-    const std::string memory = parafluid::checkMemoryBudget(
-      60.0 * static_cast<double>(field->dropCount()), "drawing " + std::to_string(field->dropCount()) + " drops");
+    const std::string memory = parafluid::checkMemoryBudget(60.0 * static_cast<double>(field->dropCount()),
+                                                            "drawing " + std::to_string(field->dropCount()) + " drops");
     if (!memory.empty())
     {
       this->ReportError(memory);
@@ -342,9 +343,9 @@ int vtkPFRain::RequestData(vtkInformation*, vtkInformationVector** inputVector, 
     this->WriteWater(t, water);
     this->WriteSplashes(*field, levels, t, splashes);
     this->FallenVolume = this->SimulateRunoff ? cache.Simulation->fallenVolume() : 0.0;
-    this->WaterVolume = this->SimulateRunoff ? static_cast<double>(cache.Simulation->particleCount()) *
-                                                 cache.Simulation->particleVolume()
-                                             : 0.0;
+    this->WaterVolume = this->SimulateRunoff
+                          ? static_cast<double>(cache.Simulation->particleCount()) * cache.Simulation->particleVolume()
+                          : 0.0;
     this->InfiltratedVolume = this->SimulateRunoff ? cache.Simulation->infiltratedVolume() : 0.0;
   }
   catch (const std::exception& e)

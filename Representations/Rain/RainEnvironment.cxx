@@ -71,9 +71,8 @@ bool RainEnvironment::ProjectImages()
       }
     }
   }
-  const auto sh = rain::shProjectCubeMap({ faces[0].data(), faces[1].data(), faces[2].data(), faces[3].data(),
-                                           faces[4].data(), faces[5].data() },
-                                         size, 3);
+  const auto sh = rain::shProjectCubeMap(
+    { faces[0].data(), faces[1].data(), faces[2].data(), faces[3].data(), faces[4].data(), faces[5].data() }, size, 3);
   for (std::size_t k = 0; k < 48; ++k)
   {
     this->Images[k] = static_cast<float>(sh[k]);
@@ -103,8 +102,8 @@ const std::array<float, 48>& RainEnvironment::Coefficients(vtkRenderer* renderer
     std::copy(bottom, bottom + 3, top);
   }
   renderer->GetActiveCamera()->GetViewUp(up);
-  const std::array<double, 10> key = { bottom[0], bottom[1], bottom[2], top[0], top[1], top[2],
-                                       up[0],     up[1],     up[2],     gradient ? 1.0 : 0.0 };
+  const std::array<double, 10> key = { bottom[0], bottom[1], bottom[2], top[0], top[1],
+                                       top[2],    up[0],     up[1],     up[2],  gradient ? 1.0 : 0.0 };
   if (this->HaveBackground && key == this->BackgroundKey)
   {
     return this->Current;

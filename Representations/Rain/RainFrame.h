@@ -14,10 +14,10 @@ struct RainFrame
 {
   vtkOpenGLRenderWindow* Window = nullptr;
   vtkOpenGLState* State = nullptr;
-  vtkSmartPointer<vtkMatrix4x4> WorldToView;      // transposed for vtkUniforms (row-major upload)
-  vtkSmartPointer<vtkMatrix4x4> ViewToClip;       // transposed likewise
-  float Viewport[2] = { 1.0f, 1.0f };             // pixels
-  float Eye[3] = { 0.0f, 0.0f, 0.0f };            // camera position, world
-  std::array<float, 48> Environment{};            // SH coefficients, channel-major
+  vtkSmartPointer<vtkMatrix4x4> WorldToView; // transposed for vtkUniforms (row-major upload)
+  vtkSmartPointer<vtkMatrix4x4> ViewToClip;  // transposed likewise
+  float Viewport[2] = { 1.0f, 1.0f };        // pixels
+  float Eye[3] = { 0.0f, 0.0f, 0.0f };       // camera position, world
+  std::array<float, 48> Environment{};       // SH coefficients, channel-major
 };
 } // namespace parafluid

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "ParaFluidRainRepresentationsModule.h"
+#include "SetParameterMacros.h"
 #include "vtkMapper.h"
 
 #include <memory>
@@ -28,17 +29,17 @@ public:
     Streaks = 0,
     Splashes = 1
   };
-  vtkSetClampMacro(Kind, int, 0, 1);
+  vtkPFSetClampMacro(Kind, int, 0, 1);
   vtkGetMacro(Kind, int);
   /// Streaks: 0 blended streaks, 1 opaque quads of the radiance alone.
-  vtkSetClampMacro(DisplayMode, int, 0, 1);
-  vtkSetClampMacro(RefractiveIndex, double, 1.01, 3.0);
-  vtkSetClampMacro(Brightness, double, 0.0, 1e6);
-  vtkSetClampMacro(Opacity, double, 0.0, 1.0);
-  vtkSetClampMacro(FogDistance, double, 0.0, 1e9);
-  vtkSetClampMacro(WidthScale, double, 0.0, 1e6);
-  vtkSetClampMacro(SplashSize, double, 0.0, 1e6);
-  vtkSetClampMacro(SplashLifetime, double, 1e-6, 1e6);
+  vtkPFSetClampMacro(DisplayMode, int, 0, 1);
+  vtkPFSetClampMacro(RefractiveIndex, double, 1.01, 3.0);
+  vtkPFSetClampMacro(Brightness, double, 0.0, 1e6);
+  vtkPFSetClampMacro(Opacity, double, 0.0, 1.0);
+  vtkPFSetClampMacro(FogDistance, double, 0.0, 1e9);
+  vtkPFSetClampMacro(WidthScale, double, 0.0, 1e6);
+  vtkPFSetClampMacro(SplashSize, double, 0.0, 1e6);
+  vtkPFSetClampMacro(SplashLifetime, double, 1e-6, 1e6);
   void SetEnvironmentImage(int face, const char* file);
 
   void Render(vtkRenderer* renderer, vtkActor* actor) override;

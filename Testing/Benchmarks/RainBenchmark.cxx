@@ -154,8 +154,8 @@ int main(int argc, char** argv)
       field.evaluate(runoff.time() + f / 60.0, &runoff.waterLevels(), position.data(), velocity.data(), inAir.data());
     }
     const double drops = seconds(b, Clock::now()) / frames;
-    sph::SPHSolver solver = sph::SPHSolver(runoff.water()->parameters(), runoff.water()->state(),
-                                           rain::groundBoundary(*ground));
+    sph::SPHSolver solver =
+      sph::SPHSolver(runoff.water()->parameters(), runoff.water()->state(), rain::groundBoundary(*ground));
     const auto c = Clock::now();
     for (int f = 0; f < frames; ++f)
     {

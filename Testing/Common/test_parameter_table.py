@@ -22,6 +22,7 @@ BAD = [float("nan"), float("inf"), float("-inf"), 0.0, -1.0, 1e30]
 block = ParticleBlock(BlockBounds=[0, 0.1, 0, 0.1, 0, 0.1], Spacing=0.025, DomainBounds=[0, 0.2, 0, 0.2, 0, 0.2])
 terrain = Plane(Origin=[-1, -1, -0.5], Point1=[1, -1, -0.5], Point2=[-1, 1, -0.5])
 small_terrain = ProceduralTerrain(Resolution=[17, 17], Extent=[100, 100])
+rain_terrain = ProceduralTerrain(Resolution=[9, 9], Extent=[2, 2], HeightScale=0.2)
 MAKERS = {
     "ParticleBlock": lambda: ParticleBlock(BlockBounds=[0, 0.1, 0, 0.1, 0, 0.1], Spacing=0.025,
                                            DomainBounds=[0, 0.2, 0, 0.2, 0, 0.2]),
@@ -34,6 +35,8 @@ MAKERS = {
     "ProceduralTerrain": lambda: ProceduralTerrain(Resolution=[17, 17]),
     "TerrainFromImage": lambda: TerrainFromImage(Input=small_terrain),
     "HydraulicErosion": lambda: HydraulicErosion(Input=small_terrain, Drops=200, Iterations=20),
+    "Rain": lambda: Rain(Terrain=rain_terrain, DropsPerRealDrop=1e-3, Cells=[4, 4], PrecipitationHeight=3.0,
+                         RainfallRate=500, ParticleSpacing=0.2, OutputInterval=0.05, NumberOfOutputs=2),
 }
 # (proxy, property) -> function(values) -> True when the values are valid (must run), False when
 # they must be refused. Properties not listed follow their XML domain.
@@ -56,6 +59,11 @@ SPECIAL = {
     ("GerstnerOcean", "WindDirection"): lambda v: math.isfinite(v[0]) and abs(v[0]) < 1e12,
     # amplitude, wavelength, direction, steepness, phase per wave
     ("GerstnerOcean", "Waves"): lambda w: all(math.isfinite(v) for v in w) and w[1] > 0 and w[0] >= 0 and abs(w[2]) < 1e12 and abs(w[4]) < 1e12 and 0 <= w[3] <= 1,
+    # all zero: the terrain's extent; else x1 > x0 and y1 > y0, finite
+    ("Rain", "PrecipitationBounds"): lambda b: all(v == 0 for v in b) or (
+        all(math.isfinite(v) and abs(v) <= 1e7 for v in b) and b[1] > b[0] and b[3] > b[2]),
+    # 0: automatic; else above the ground (the test terrain is below 0.2 m)
+    ("Rain", "PrecipitationHeight"): lambda v: math.isfinite(v[0]) and (v[0] == 0 or 0.2 < v[0] <= 1e7),
 }
 SKIP = {"TimestepValues"}
 

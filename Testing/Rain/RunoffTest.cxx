@@ -1,7 +1,7 @@
 // Rain becoming SPH water: the volume it carries, a basin filled to the level its volume gives,
 // water running down a slope and never under it, and infiltration.
-#include "parafluid/rain/GroundSurface.h"
 #include "parafluid/rain/Runoff.h"
+#include "parafluid/rain/GroundSurface.h"
 #include "parafluid/sph/SPHSolver.h"
 
 #include <gtest/gtest.h>
@@ -80,8 +80,8 @@ TEST(Runoff, BasinKeepsTheRainVolume)
   // for 5 s. The water inserted equals the rain that fell within one particle per cell. The
   // pond's surface should be where a bowl holding that volume is full: V = pi L^2 / (2 a).
   const double size = 0.8, a = 1.0;
-  auto ground = groundOf(size, 41, [&](double x, double y)
-                         { return a * ((x - 0.4) * (x - 0.4) + (y - 0.4) * (y - 0.4)); });
+  auto ground =
+    groundOf(size, 41, [&](double x, double y) { return a * ((x - 0.4) * (x - 0.4) + (y - 0.4) * (y - 0.4)); });
   RainParameters rain = cloudburst(size, 1500.0);
   rain.height = 0.6;
   rain.duration = 25.0;

@@ -42,9 +42,8 @@ void evaluateRows(const DropRows& rows, std::int64_t begin, std::int64_t end, do
 }
 
 PARAFLUID_DROP_ROWS_CLONES
-void changedDrops(const float* __restrict phase, const double* __restrict inversePeriod,
-                  const double* __restrict drop, std::int64_t begin, std::int64_t end, double t,
-                  std::uint8_t* __restrict changed)
+void changedDrops(const float* __restrict phase, const double* __restrict inversePeriod, const double* __restrict drop,
+                  std::int64_t begin, std::int64_t end, double t, std::uint8_t* __restrict changed)
 {
   for (std::int64_t i = begin; i < end; ++i)
   {

@@ -21,8 +21,10 @@ namespace
 /// Adds a soft disc (Gaussian edge) of radius r at (x, y) in sprite units [0, 1]^2 with opacity a.
 void disc(std::vector<float>& coverage, int size, double x, double y, double r, double a)
 {
-  const int x0 = std::max(0, static_cast<int>((x - 2 * r) * size)), x1 = std::min(size - 1, static_cast<int>((x + 2 * r) * size));
-  const int y0 = std::max(0, static_cast<int>((y - 2 * r) * size)), y1 = std::min(size - 1, static_cast<int>((y + 2 * r) * size));
+  const int x0 = std::max(0, static_cast<int>((x - 2 * r) * size)),
+            x1 = std::min(size - 1, static_cast<int>((x + 2 * r) * size));
+  const int y0 = std::max(0, static_cast<int>((y - 2 * r) * size)),
+            y1 = std::min(size - 1, static_cast<int>((y + 2 * r) * size));
   for (int j = y0; j <= y1; ++j)
   {
     for (int i = x0; i <= x1; ++i)

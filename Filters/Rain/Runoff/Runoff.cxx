@@ -29,7 +29,8 @@ Runoff::Runoff(const RainParameters& rain, const RunoffParameters& runoff, std::
   if (!(d > 0.0) || !std::isfinite(d) || d > 0.25 * std::min(b[1] - b[0], b[3] - b[2]))
   {
     throw std::invalid_argument("Rain: ParticleSpacing must be positive and at most a quarter of the terrain's width "
-                                "(got " + std::to_string(d) + " m)");
+                                "(got " +
+                                std::to_string(d) + " m)");
   }
   if (p.rainScale < 1 || p.rainScale > 1000000)
   {
@@ -55,8 +56,12 @@ Runoff::Runoff(const RainParameters& rain, const RunoffParameters& runoff, std::
   const auto& z = ground->elevation();
   const auto [lowest, highest] = std::minmax_element(z.begin(), z.end());
   const double top = std::max(rain.height, static_cast<double>(*highest) + 10.0 * d);
-  s.domainBounds = { static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2]),
-                     static_cast<float>(b[3]), static_cast<float>(*lowest - 2.0 * d), static_cast<float>(top) };
+  s.domainBounds = { static_cast<float>(b[0]),
+                     static_cast<float>(b[1]),
+                     static_cast<float>(b[2]),
+                     static_cast<float>(b[3]),
+                     static_cast<float>(*lowest - 2.0 * d),
+                     static_cast<float>(top) };
   s.gravity = { 0.0f, 0.0f, static_cast<float>(-rain.gravity) };
   const bool delta = s.pressureSolver == sph::PressureSolverType::DeltaSPH;
   s.smoothingLength = static_cast<float>((delta ? 3.0 : 2.0) * d);
@@ -195,9 +200,9 @@ void Runoff::insert(const std::vector<Impact>& impacts)
       const double angle = 2.399963 * k, radius = d * std::sqrt(static_cast<double>(k));
       const double px = impact.position[0] + radius * std::cos(angle);
       const double py = impact.position[1] + radius * std::sin(angle);
-      double pz = impact.onWater ? impact.position[2] + 0.5 * d
-                                 : std::max(this->Ground->heightAt(px, py), triangulatedHeight(*this->Ground, px, py)) +
-                                     0.5 * d;
+      double pz = impact.onWater
+                    ? impact.position[2] + 0.5 * d
+                    : std::max(this->Ground->heightAt(px, py), triangulatedHeight(*this->Ground, px, py)) + 0.5 * d;
       x.push_back(static_cast<float>(px));
       y.push_back(static_cast<float>(py));
       z.push_back(static_cast<float>(pz));

@@ -193,7 +193,8 @@ void SPHSolver::addParticles(const std::vector<float>& x, const std::vector<floa
   {
     if (!std::isfinite(x[i] + y[i] + z[i] + vx[i] + vy[i] + vz[i]))
     {
-      throw std::invalid_argument("SPH: added particle " + std::to_string(i) + " has a NaN or infinite position or velocity");
+      throw std::invalid_argument("SPH: added particle " + std::to_string(i) +
+                                  " has a NaN or infinite position or velocity");
     }
   }
   if (added == 0)

@@ -20,9 +20,8 @@ void evaluateRows(const DropRows& rows, std::int64_t begin, std::int64_t end, do
                   std::uint8_t* __restrict inAir);
 /// changed[i] = 1 where the drop in slot i at time t is not `drop[i]` (its index as a double,
 /// exact below 2^53; then its path needs refreshing), for i in [begin, end).
-void changedDrops(const float* __restrict phase, const double* __restrict inversePeriod,
-                  const double* __restrict drop, std::int64_t begin, std::int64_t end, double t,
-                  std::uint8_t* __restrict changed);
+void changedDrops(const float* __restrict phase, const double* __restrict inversePeriod, const double* __restrict drop,
+                  std::int64_t begin, std::int64_t end, double t, std::uint8_t* __restrict changed);
 
 /// candidate[i] = 1 where slot i may have an impact to count by time t: a drop after the one in
 /// the air now was born since lastCounted, or (wet) water may stop the drop in the air early.

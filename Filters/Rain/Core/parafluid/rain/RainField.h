@@ -110,12 +110,12 @@ private:
   {
     std::vector<double> drop, birth; // the drop's index (exact in a double) and birth time [s]
     std::vector<float> targetX, targetY, ground, horizontalX, horizontalY; // float: a frame's precision
-    std::vector<std::uint8_t> changed, candidate, inAir; // scratch of the passes
+    std::vector<std::uint8_t> changed, candidate, inAir;                   // scratch of the passes
     std::vector<float> position, velocity;
   };
   mutable DropCache Cache;
-  std::vector<double> CellLowest; // lowest ground in each cell [m]
+  std::vector<double> CellLowest;      // lowest ground in each cell [m]
   std::vector<std::int64_t> CellStart; // the slots of cell c are CellStart[c] .. CellStart[c + 1] - 1
-  std::vector<double> CellWater;  // w_c: real drops per drawn drop in each cell
+  std::vector<double> CellWater;       // w_c: real drops per drawn drop in each cell
 };
 } // namespace parafluid::rain

@@ -49,10 +49,10 @@ struct RunoffParameters
   }
   double particleSpacing = 0.05; // d [m]
   bool conserveVolume = true;
-  int rainScale = 10;          // impacts per particle without ConserveVolume
-  int sphEvery = 1;            // drop steps per SPH advance
+  int rainScale = 10;           // impacts per particle without ConserveVolume
+  int sphEvery = 1;             // drop steps per SPH advance
   double rainStep = 1.0 / 60.0; // [s]
-  double infiltration = 0.0;   // [mm/h]
+  double infiltration = 0.0;    // [mm/h]
   std::size_t maxParticles = 4000000;
 };
 
@@ -108,9 +108,9 @@ private:
   std::vector<std::int64_t> Counted;
   std::vector<float> WaterLevels;
   std::vector<std::uint32_t> ImpactCount;
-  std::vector<double> Gathered;    // water waiting in each cell [m^3] (ConserveVolume)
+  std::vector<double> Gathered;     // water waiting in each cell [m^3] (ConserveVolume)
   std::vector<std::uint32_t> Tally; // impacts since the cell's last particle (RainScale)
-  std::vector<double> Soak;        // infiltration capacity each wet cell has built up [m^3]
+  std::vector<double> Soak;         // infiltration capacity each wet cell has built up [m^3]
   double Fallen = 0.0, Inserted = 0.0, Infiltrated = 0.0;
   std::vector<Impact> Impacts;
 };
