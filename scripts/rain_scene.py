@@ -32,7 +32,11 @@ def show(terrain, rain, view, time):
     ground.Specular = 0.2
     water = Show(OutputPort(rain, 1), view)
     water.SetRepresentationType("Screen-Space Fluid")
-    water.FluidColor = [0.55, 0.7, 0.8]
+    # Runoff is films a few millimetres thin, resolved by 2.5 cm particles: drawn with spheres of a
+    # spacing's radius so that neighbouring particles join into sheets of water.
+    water.FluidParticleRadius = 1.0 * rain.ParticleSpacing
+    water.FluidDisplayMode = "Opaque Surface"
+    water.FluidColor = [0.3, 0.5, 0.75]
     drops = Show(OutputPort(rain, 0), view)
     drops.SetRepresentationType("Rain")
     drops.RainWidthScale = 2.0

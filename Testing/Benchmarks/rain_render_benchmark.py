@@ -1,7 +1,8 @@
 """Frame time of the Rain representation against ParaView's Point Gaussian on the same drops, same
 window, same run (target: Rain <= 1.5 x Point Gaussian at 1M drops, 1280 x 720, llvmpipe).
 
-  scripts/with-xvfb.sh pvpython Testing/Benchmarks/rain_render_benchmark.py [drops (millions), default 1]
+  PARAFLUID_PLUGIN=build/lib/paraview-5.11/plugins/ParaFluid/ParaFluid.so PYTHONPATH=Testing/Python \
+    scripts/with-xvfb.sh pvpython Testing/Benchmarks/rain_render_benchmark.py [drops (millions), default 1]
 """
 import sys
 import time
