@@ -14,15 +14,16 @@ pftest.load(globals())
 millions = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0
 terrain = ProceduralTerrain(Extent=[40, 40], Resolution=[65, 65], HeightScale=2.0)
 rain = Rain(Terrain=terrain, Runoff=0, RainfallRate=20, Cells=[64, 64], PrecipitationHeight=20.0)
-rain.DropsPerRealDrop = 1.0
+probe = 1e-3
+rain.DropsPerRealDrop = probe
 rain.UpdatePipeline(1.0)
-real = rain.GetDataInformation(0).GetNumberOfPoints()  # drops drawn at 1 per real drop
+real = rain.GetDataInformation(0).GetNumberOfPoints() / probe  # real drops in the air
 rain.DropsPerRealDrop = min(1.0, millions * 1e6 / max(real, 1))
 rain.UpdatePipeline(1.0)
 drops = rain.GetDataInformation(0).GetNumberOfPoints()
 
 view = CreateRenderView()
-view.ViewSize = [1280, 720]
+view.ViewSize = [int(v) for v in (sys.argv[2:4] if len(sys.argv) > 3 else (1280, 720))]
 view.OrientationAxesVisibility = 0
 view.ViewTime = 1.0
 display = Show(OutputPort(rain, 0), view)
