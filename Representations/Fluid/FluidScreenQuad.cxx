@@ -26,6 +26,10 @@ vtkShaderProgram* readyScreenQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad, co
     frame.Window->GetShaderCache()->ReadyShaderProgram(quad->Program);
   }
   vtkShaderProgram* program = quad->Program;
+  if (!program)
+  {
+    return nullptr; // did not compile (the shader cache reported why)
+  }
   const float viewport[2] = { static_cast<float>(frame.Size[0]), static_cast<float>(frame.Size[1]) };
   program->SetUniform2i("rectMin", frame.RectMin);
   program->SetUniform2i("rectMax", frame.RectMax);

@@ -17,7 +17,7 @@ class FluidScreenTargets;
 
 /// Builds `quad` from FluidScreenCommon.glsl, `defines` and `body` the first time, readies its
 /// program after that, and sets the uniforms every screen pass reads (rectangle, viewport size,
-/// projection). Returns the program.
+/// projection). Returns the program, or null when it did not compile.
 vtkShaderProgram* readyScreenQuad(std::unique_ptr<vtkOpenGLQuadHelper>& quad, const FluidFrame& frame, const char* body,
                                   const char* defines = "");
 

@@ -4,7 +4,7 @@
 // smoothed depth; normal from the neighbours (the one-sided difference with the smaller depth
 // step at discontinuities); then the display mode's colour, and the surface's window depth.
 // Shading: Schlick's Fresnel with R0 from the index of refraction; reflection of the environment
-// (a cube map when FLUID_CUBEMAP is defined, else the view's background); Blinn-Phong specular from the view's lights; for
+// (FluidLightingFS.glsl, prepended); Blinn-Phong specular from the view's lights; for
 // transparent fluid, the opaque scene behind refracted by normal x thickness and attenuated by
 // Beer-Lambert: transmission exp(-sigma t), sigma = -ln(fluidColor) / attenuationDistance, so a
 // layer attenuationDistance thick tints white light to fluidColor.
@@ -29,27 +29,9 @@ uniform float refractionStrength;
 uniform float shininess;
 uniform float specularStrength;
 uniform float ambient;
-uniform int lightCount;
-uniform vec3 lightDirectionVC[6]; // direction the light travels, eye space
-uniform vec3 lightColor[6];
-#ifdef FLUID_CUBEMAP
-uniform samplerCube environment;
-#endif
-uniform mat3 eyeToCube;
-uniform vec3 backgroundBottom;
-uniform vec3 backgroundTop;
 uniform vec2 depthRange; // particle depth mode: nearest and farthest distance of the fluid
 
 //VTK::Output::Dec
-
-vec3 environmentColor(vec3 dirVC)
-{
-#ifdef FLUID_CUBEMAP
-  return texture(environment, eyeToCube * dirVC).rgb;
-#endif
-  // The view's background is a screen-space gradient: look it up by the direction's height.
-  return mix(backgroundBottom, backgroundTop, clamp(0.5 + 0.5 * dirVC.y, 0.0, 1.0));
-}
 
 // The neighbour difference with the smaller depth step (one-sided at discontinuities).
 vec3 tangent(ivec2 p, vec3 centre, ivec2 step)
@@ -115,9 +97,7 @@ void main()
       base = mix(base, texelFetch(particleColorTex, p, 0).rgb, colorMix);
     }
     float cosine = max(dot(N, V), 0.0);
-    float r0 = (refractiveIndex - 1.0) / (refractiveIndex + 1.0);
-    r0 *= r0;
-    float fresnel = r0 + (1.0 - r0) * pow(1.0 - cosine, 5.0);
+    float fresnel = schlickFresnel(cosine, refractiveIndex);
     vec3 reflected = environmentColor(reflect(-V, N));
     vec3 diffuse = vec3(ambient);
     vec3 specular = vec3(0.0);

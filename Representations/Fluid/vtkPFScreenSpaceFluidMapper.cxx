@@ -148,12 +148,7 @@ double* vtkPFScreenSpaceFluidMapper::GetBounds()
 bool vtkPFScreenSpaceFluidMapper::UploadParticles(vtkPointSet* input, vtkOpenGLRenderWindow* window)
 {
   Internals& in = *this->Internal;
-  int cellFlag = 0;
-  vtkUnsignedCharArray* colors = this->ScalarVisibility ? this->MapScalars(input, 1.0, cellFlag) : nullptr;
-  if (colors && (cellFlag != 0 || colors->GetNumberOfTuples() != input->GetNumberOfPoints()))
-  {
-    colors = nullptr; // cell colours have no particle to sit on
-  }
+  vtkUnsignedCharArray* colors = this->MapParticleColors(input);
   vtkMTimeType key = std::max(input->GetMTime(), this->GetMTime());
   if (colors)
   {
@@ -170,7 +165,24 @@ bool vtkPFScreenSpaceFluidMapper::UploadParticles(vtkPointSet* input, vtkOpenGLR
   return true;
 }
 
-bool vtkPFScreenSpaceFluidMapper::PlaceOnScreen(vtkRenderer* renderer, vtkActor* actor, parafluid::FluidFrame& frame)
+vtkUnsignedCharArray* vtkPFScreenSpaceFluidMapper::MapParticleColors(vtkPointSet* input)
+{
+  int cellFlag = 0;
+  vtkUnsignedCharArray* colors = this->ScalarVisibility ? this->MapScalars(input, 1.0, cellFlag) : nullptr;
+  if (colors && (cellFlag != 0 || colors->GetNumberOfTuples() != input->GetNumberOfPoints()))
+  {
+    colors = nullptr; // cell colours have no particle to sit on
+  }
+  return colors;
+}
+
+vtkTexture* vtkPFScreenSpaceFluidMapper::GetEnvironmentTexture() const
+{
+  return this->Internal->Environment;
+}
+
+bool vtkPFScreenSpaceFluidMapper::PlaceOnScreen(vtkRenderer* renderer, vtkActor* actor, parafluid::FluidFrame& frame,
+                                                const double bounds[6], double reach, int margin)
 {
   Internals& in = *this->Internal;
   renderer->GetTiledSizeAndOrigin(&frame.Size[0], &frame.Size[1], &frame.Origin[0], &frame.Origin[1]);
@@ -207,8 +219,8 @@ bool vtkPFScreenSpaceFluidMapper::PlaceOnScreen(vtkRenderer* renderer, vtkActor*
     in.MaxPointSize = std::max(1.0f, range[1]);
   }
   parafluid::FluidFootprintQuery query;
-  std::copy(in.Particles.Bounds(), in.Particles.Bounds() + 6, query.Bounds);
-  query.MaxRadius = in.Particles.MaxRadius();
+  std::copy(bounds, bounds + 6, query.Bounds);
+  query.MaxRadius = reach;
   for (int k = 0; k < 16; ++k)
   {
     query.ModelView[k] = frame.ModelView->GetElement(k / 4, k % 4);
@@ -218,7 +230,7 @@ bool vtkPFScreenSpaceFluidMapper::PlaceOnScreen(vtkRenderer* renderer, vtkActor*
   query.NearDistance = frame.NearDistance;
   query.Size[0] = frame.Size[0];
   query.Size[1] = frame.Size[1];
-  query.Margin = this->MaxFilterRadius + 2;
+  query.Margin = margin;
   query.MaxPointSize = in.MaxPointSize;
   const parafluid::FluidFootprint footprint = parafluid::computeFluidFootprint(query);
   if (!footprint.Visible)
@@ -231,7 +243,7 @@ bool vtkPFScreenSpaceFluidMapper::PlaceOnScreen(vtkRenderer* renderer, vtkActor*
   frame.RectMax[1] = footprint.Rect[3];
   frame.Nearest = footprint.Nearest;
   frame.Farthest = footprint.Farthest;
-  frame.MaxRadius = in.Particles.MaxRadius();
+  frame.MaxRadius = reach;
   frame.PointSprites = footprint.PointSprites;
   this->LastUsedPointSprites = footprint.PointSprites;
   std::copy(footprint.Rect, footprint.Rect + 4, this->LastScreenRect);
@@ -277,7 +289,8 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   frame.Window = window;
   frame.State = window->GetState();
   frame.Renderer = renderer;
-  if (!this->UploadParticles(input, window) || !this->PlaceOnScreen(renderer, actor, frame))
+  if (!this->UploadParticles(input, window) || !this->PlaceOnScreen(renderer, actor, frame, in.Particles.Bounds(), in.Particles.MaxRadius(),
+                                                                      this->MaxFilterRadius + 2))
   {
     return;
   }

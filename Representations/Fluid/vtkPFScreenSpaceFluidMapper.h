@@ -42,6 +42,7 @@
 class vtkOpenGLRenderWindow;
 class vtkPointSet;
 class vtkTexture;
+class vtkUnsignedCharArray;
 namespace parafluid
 {
 struct FluidFrame;
@@ -120,10 +121,14 @@ public:
   vtkPFSetClampMacro(RefractionStrength, double, 0.0, 10.0);
   vtkGetMacro(RefractionStrength, double);
   vtkPFSetClampMacro(Shininess, double, 1.0, 10000.0);
+  vtkGetMacro(Shininess, double);
   vtkPFSetClampMacro(SpecularStrength, double, 0.0, 10.0);
+  vtkGetMacro(SpecularStrength, double);
   vtkPFSetClampMacro(Ambient, double, 0.0, 1.0);
+  vtkGetMacro(Ambient, double);
   /// Weight of the colour mapped from the scalars (ScalarVisibility) against FluidColor.
   vtkPFSetClampMacro(ColorMix, double, 0.0, 1.0);
+  vtkGetMacro(ColorMix, double);
   /// A cube map (vtkTexture with CubeMap on) to reflect; without it the renderer's environment
   /// texture when it has one, else the view's background colours.
   void SetEnvironmentTexture(vtkTexture* texture);
@@ -170,6 +175,15 @@ protected:
   double GetUploadedMaxRadius() const;
   //@}
 
+  /// The camera and where the fluid lands on screen into `frame`: the particle centres' `bounds`
+  /// grown by `reach` [world units], plus `margin` pixels. False when it is not on screen.
+  bool PlaceOnScreen(vtkRenderer* renderer, vtkActor* actor, parafluid::FluidFrame& frame, const double bounds[6],
+                     double reach, int margin);
+  /// The cube map set by SetEnvironmentTexture (null when none).
+  vtkTexture* GetEnvironmentTexture() const;
+  /// The fluid's colour mapped from the scalars (null when not colouring or not one per point).
+  vtkUnsignedCharArray* MapParticleColors(vtkPointSet* input);
+
 private:
   vtkPFScreenSpaceFluidMapper(const vtkPFScreenSpaceFluidMapper&) = delete;
   void operator=(const vtkPFScreenSpaceFluidMapper&) = delete;
@@ -181,8 +195,6 @@ private:
   std::string RadiusArray;
   // Render's parts. The particles to the GPU when they changed; false when none can be drawn.
   bool UploadParticles(vtkPointSet* input, vtkOpenGLRenderWindow* window);
-  // The camera and where the fluid lands on screen into `frame`; false when it is not on screen.
-  bool PlaceOnScreen(vtkRenderer* renderer, vtkActor* actor, parafluid::FluidFrame& frame);
   // Full-resolution pixels per thickness pixel, each way: 2, or 4 for particles small on screen.
   int ChooseThicknessFactor(const parafluid::FluidFrame& frame) const;
   int SmoothingMethod = NarrowRange;

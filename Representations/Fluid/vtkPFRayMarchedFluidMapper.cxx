@@ -1,0 +1,205 @@
+#include "vtkPFRayMarchedFluidMapper.h"
+
+#include "FluidFrame.h"
+#include "FluidScreenTargets.h"
+#include "RayMarchBuffers.h"
+#include "RayMarchPass.h"
+
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkPointSet.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+vtkStandardNewMacro(vtkPFRayMarchedFluidMapper);
+
+/// The GPU side: the particle grid, the opaque scene's copy, the march.
+struct vtkPFRayMarchedFluidMapper::Internals
+{
+  vtkOpenGLRenderWindow* Context = nullptr;
+  parafluid::RayMarchBuffers Buffers;
+  parafluid::FluidScreenTargets Targets;
+  parafluid::RayMarchPass Pass;
+
+  void Release(vtkWindow* window)
+  {
+    this->Buffers.Release(window);
+    this->Targets.Release(window);
+    this->Pass.Release(window);
+    this->Context = nullptr;
+  }
+};
+
+vtkPFRayMarchedFluidMapper::vtkPFRayMarchedFluidMapper()
+  : March(new Internals)
+{
+  this->SetDisplayMode(TransparentFluid);
+}
+
+vtkPFRayMarchedFluidMapper::~vtkPFRayMarchedFluidMapper() = default;
+
+void vtkPFRayMarchedFluidMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ParticleSpacing: " << this->ParticleSpacing << "\n";
+  os << indent << "KernelRadius: " << this->KernelRadius << "\n";
+  os << indent << "IsoValue: " << this->IsoValue << "\n";
+  os << indent << "StepSize: " << this->StepSize << "\n";
+  os << indent << "MaxSteps: " << this->MaxSteps << "\n";
+  os << indent << "ResolutionScale: " << this->ResolutionScale << "\n";
+  os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << "\n";
+}
+
+double vtkPFRayMarchedFluidMapper::EffectiveSpacing()
+{
+  return this->ParticleSpacing > 0.0 ? this->ParticleSpacing : this->GetParticleRadius() / 0.6;
+}
+
+long long vtkPFRayMarchedFluidMapper::GetLastCellCount() const
+{
+  const int* d = this->March->Buffers.Grid().dims();
+  return static_cast<long long>(d[0]) * d[1] * d[2];
+}
+
+long long vtkPFRayMarchedFluidMapper::GetLastOccupiedCellCount() const
+{
+  return static_cast<long long>(this->March->Buffers.Grid().occupiedCells());
+}
+
+double vtkPFRayMarchedFluidMapper::GetLastBuildMilliseconds() const
+{
+  return this->March->Buffers.LastBuildMilliseconds();
+}
+
+void vtkPFRayMarchedFluidMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->March->Release(window);
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+double* vtkPFRayMarchedFluidMapper::GetBounds()
+{
+  auto* input = vtkPointSet::SafeDownCast(this->GetInputDataObject(0, 0));
+  if (!input || input->GetNumberOfPoints() == 0)
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+    return this->Bounds;
+  }
+  input->GetBounds(this->Bounds);
+  // The surface lies within the kernel's reach of the particle centres.
+  const double reach = this->KernelRadius * this->EffectiveSpacing();
+  for (int i = 0; i < 3; ++i)
+  {
+    this->Bounds[2 * i] -= reach;
+    this->Bounds[2 * i + 1] += reach;
+  }
+  return this->Bounds;
+}
+
+void vtkPFRayMarchedFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
+{
+  Internals& in = *this->March;
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  auto* input = vtkPointSet::SafeDownCast(this->GetInputDataObject(0, 0));
+  this->LastSpacing = 0.0;
+  if (!window || !input || input->GetNumberOfPoints() == 0)
+  {
+    return;
+  }
+  if (in.Context && in.Context != window)
+  {
+    in.Release(in.Context);
+  }
+  in.Context = window;
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
+  {
+    // errors of earlier drawing are not ours to report
+  }
+  const double spacing = this->EffectiveSpacing();
+  vtkUnsignedCharArray* colors = this->MapParticleColors(input);
+  vtkMTimeType key = std::max(input->GetMTime(), this->GetMTime());
+  if (colors)
+  {
+    key = std::max(key, colors->GetMTime());
+  }
+  try
+  {
+    in.Buffers.Update(window, input, spacing, this->KernelRadius * spacing, this->IsoValue, colors, key);
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("Ray-Marched Fluid: " << e.what());
+    return;
+  }
+  if (in.Buffers.Grid().particleCount() == 0)
+  {
+    return; // no finite particle
+  }
+  this->LastSpacing = spacing;
+  parafluid::FluidFrame frame;
+  frame.Window = window;
+  frame.State = window->GetState();
+  frame.Renderer = renderer;
+  if (!this->PlaceOnScreen(renderer, actor, frame, in.Buffers.Bounds(), this->KernelRadius * spacing, 1))
+  {
+    return;
+  }
+  const bool transparent = this->GetDisplayMode() == TransparentFluid;
+
+  vtkOpenGLState* state = frame.State;
+  vtkOpenGLState::ScopedglViewport savedViewport(state);
+  vtkOpenGLState::ScopedglScissor savedScissor(state);
+  vtkOpenGLState::ScopedglEnableDisable savedScissorTest(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+  vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
+  vtkOpenGLState::ScopedglColorMask savedColorMask(state);
+  vtkOpenGLState::ScopedglClearColor savedClearColor(state);
+
+  in.Targets.Ensure(window, frame.Size[0], frame.Size[1], 4, false, false);
+  frame.Framebuffer = in.Targets.Framebuffer;
+  {
+    // Refracted rays can leave the fluid's rectangle: transparent fluid reads the whole viewport.
+    parafluid::FluidFrame whole = frame;
+    if (transparent)
+    {
+      whole.RectMin[0] = whole.RectMin[1] = 0;
+      whole.RectMax[0] = frame.Size[0];
+      whole.RectMax[1] = frame.Size[1];
+    }
+    in.Targets.CopyOpaqueScene(whole, transparent);
+  }
+  state->vtkglEnable(GL_SCISSOR_TEST);
+
+  parafluid::RayMarchSettings s;
+  s.DisplayMode = std::min(this->GetDisplayMode(), static_cast<int>(Steps));
+  s.StepLength = this->StepSize * spacing;
+  s.MaxSteps = this->MaxSteps;
+  s.Skipping = this->EmptySpaceSkipping;
+  s.ResolutionScale = this->ResolutionScale;
+  this->GetFluidColor(s.FluidColor);
+  s.AttenuationDistance = this->GetAttenuationDistance();
+  s.RefractiveIndex = this->GetRefractiveIndex();
+  s.Shininess = this->GetShininess();
+  s.SpecularStrength = this->GetSpecularStrength();
+  s.Ambient = this->GetAmbient();
+  s.ColorMix = this->GetColorMix();
+  if (!in.Pass.Run(frame, in.Buffers, in.Targets.OpaqueDepth, in.Targets.OpaqueColor, this->GetEnvironmentTexture(), s))
+  {
+    vtkErrorMacro("The ray-marched fluid shader did not compile (see the messages above).");
+    return;
+  }
+  const GLenum error = glGetError();
+  if (error != GL_NO_ERROR)
+  {
+    vtkErrorMacro("OpenGL error 0x" << std::hex << error << std::dec << " in the ray-marched fluid passes.");
+  }
+}
