@@ -1,9 +1,9 @@
 #include "FluidShadePass.h"
 
-#include "FluidScreenQuad.h"
-#include "FluidScreenTargets.h"
 #include "FluidLighting.h"
 #include "FluidLightingFS.h"
+#include "FluidScreenQuad.h"
+#include "FluidScreenTargets.h"
 #include "FluidShadeFS.h"
 
 #include "vtkCamera.h"
@@ -27,7 +27,6 @@ namespace parafluid
 {
 FluidShadePass::FluidShadePass() = default;
 FluidShadePass::~FluidShadePass() = default;
-
 
 void FluidShadePass::Run(FluidFrame& frame, FluidScreenTargets& targets, const Inputs& inputs, vtkTexture* environment,
                          const FluidShadeSettings& s)

@@ -68,7 +68,9 @@ void RayMarchBuffers::Update(vtkOpenGLRenderWindow* window, vtkPointSet* input, 
   const std::vector<float>& sorted = this->Cells.sortedPositions();
   if (!sorted.empty())
   {
-    double box[6] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+    double box[6] = {
+      VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX
+    };
     for (std::size_t s = 0; s < sorted.size() / 4; ++s)
     {
       for (int k = 0; k < 3; ++k)
@@ -103,8 +105,7 @@ void RayMarchBuffers::Update(vtkOpenGLRenderWindow* window, vtkPointSet* input, 
   }
   std::copy(settings, settings + 3, this->Settings);
   this->Key = key;
-  this->BuildMilliseconds =
-    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  this->BuildMilliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 void RayMarchBuffers::Release(vtkWindow* window)

@@ -4,6 +4,8 @@
 #include "vtkPFRayMarchedFluidMapper.h"
 #include "vtkSmartPointer.h"
 
+#include <cmath>
+
 vtkStandardNewMacro(vtkPFRayMarchedFluidRepresentation);
 
 vtkPFRayMarchedFluidRepresentation::vtkPFRayMarchedFluidRepresentation()
@@ -20,6 +22,11 @@ vtkPFRayMarchedFluidMapper* vtkPFRayMarchedFluidRepresentation::GetRayMarchedMap
 
 void vtkPFRayMarchedFluidRepresentation::SetParticleSpacing(double spacing)
 {
+  if (!std::isfinite(spacing))
+  {
+    vtkWarningMacro(<< "ParticleSpacing = " << spacing << " is ignored: it must be a finite number (0: automatic)");
+    return;
+  }
   // The delivered radius is 0.6 d (automatic from the field data or the bounds when 0), and the
   // mapper takes d = radius / 0.6: one place decides the spacing.
   this->SetParticleRadius(spacing > 0.0 ? 0.6 * spacing : 0.0);

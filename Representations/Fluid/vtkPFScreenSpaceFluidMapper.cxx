@@ -289,8 +289,9 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   frame.Window = window;
   frame.State = window->GetState();
   frame.Renderer = renderer;
-  if (!this->UploadParticles(input, window) || !this->PlaceOnScreen(renderer, actor, frame, in.Particles.Bounds(), in.Particles.MaxRadius(),
-                                                                      this->MaxFilterRadius + 2))
+  if (!this->UploadParticles(input, window) ||
+      !this->PlaceOnScreen(renderer, actor, frame, in.Particles.Bounds(), in.Particles.MaxRadius(),
+                           this->MaxFilterRadius + 2))
   {
     return;
   }

@@ -32,8 +32,10 @@
 #include "vtkTexture.h"
 #include "vtkUniforms.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 using parafluid::kPi;
@@ -124,6 +126,10 @@ int vtkPFGerstnerOceanRepresentation::ProcessViewRequest(vtkInformationRequestKe
                                                          vtkInformation* outInfo)
 {
   const int result = this->Superclass::ProcessViewRequest(request, inInfo, outInfo);
+  if (result && request == vtkPVView::REQUEST_UPDATE())
+  {
+    this->ReportDisplacedBounds(inInfo);
+  }
   if (result && request == vtkPVView::REQUEST_RENDER())
   {
     vtkDataObject* delivered = nullptr;
@@ -137,6 +143,53 @@ int vtkPFGerstnerOceanRepresentation::ProcessViewRequest(vtkInformationRequestKe
     this->UpdateUniforms(view ? view->GetViewTime() : 0.0);
   }
   return result;
+}
+
+void vtkPFGerstnerOceanRepresentation::ReportDisplacedBounds(vtkInformation* inInfo)
+{
+  // The view resets the camera and sets its clipping range from these bounds: the flat input's
+  // would cut off waves higher than the plane is deep (a metre-high sea on ParaView's 1 m plane
+  // drew nothing). Grow them by the largest displacement any point can reach.
+  double bounds[6];
+  if (!vtkGeometryRepresentation::GetBounds(this->GetRenderedDataObject(0), bounds, nullptr))
+  {
+    return;
+  }
+  const parafluid::ocean::OceanParameters p = this->Sea.parameters();
+  double horizontal = 0.0, vertical = 0.0;
+  parafluid::ocean::displacementBound(p, !this->BathymetryArray.empty(), horizontal, vertical);
+  const double grow[3] = { horizontal, horizontal, vertical };
+  for (int i = 0; i < 3; ++i)
+  {
+    bounds[2 * i] -= grow[i];
+    bounds[2 * i + 1] += grow[i];
+  }
+  bounds[4] = std::min(bounds[4], this->Sea.seaLevel - vertical);
+  bounds[5] = std::max(bounds[5], this->Sea.seaLevel + vertical);
+  vtkNew<vtkMatrix4x4> matrix;
+  this->Actor->GetMatrix(matrix);
+  vtkPVRenderView::SetGeometryBounds(inInfo, this, bounds, matrix);
+
+  // Waves much longer than the surface is wide make it tilt as a whole: say what to change.
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const auto& wave : p.waves)
+  {
+    shortest = std::min(shortest, wave.wavelength);
+  }
+  const double across = std::max(bounds[1] - bounds[0] - 2.0 * horizontal, bounds[3] - bounds[2] - 2.0 * horizontal);
+  std::ostringstream key;
+  key << across << ' ' << shortest;
+  if (std::isfinite(shortest) && across < 0.5 * shortest && key.str() != this->SizeWarningKey)
+  {
+    vtkWarningMacro("Gerstner Ocean: the surface is " << across << " m across but the shortest wave is " << shortest
+                                                      << " m long, so the sea shows as a tilting sheet; draw it on a "
+                                                         "plane several wavelengths wide (e.g. Plane with Point1 and "
+                                                         "Point2 "
+                                                      << 4.0 * shortest
+                                                      << " m from the Origin, and enough Resolution), or choose "
+                                                         "shorter Waves.");
+  }
+  this->SizeWarningKey = key.str();
 }
 
 void vtkPFGerstnerOceanRepresentation::UpdateModel(vtkDataObject* delivered)

@@ -118,6 +118,12 @@ private:
   struct Internals;
   std::unique_ptr<Internals> Internal;
 
+  /// Tells the view the input's bounds grown by the waves' largest displacement (so Reset Camera
+  /// and the clipping range see the waves), and warns when the surface is much narrower than the
+  /// shortest wave.
+  void ReportDisplacedBounds(vtkInformation* inInfo);
+  std::string SizeWarningKey;
+
   /// Rebuilds the model (and the bathymetry textures) when parameters or the data changed.
   void UpdateModel(vtkDataObject* delivered);
   void UpdateShaders();

@@ -8,13 +8,16 @@
 // Needs an X display (run under scripts/with-xvfb.sh). Our depth comes from the window's depth
 // buffer, which our mapper writes; vtkOpenGLFluidMapper's from its own eye-z target.
 #include "FluidScenes.h"
+#include "parafluid/surface/ParticleSurface.h"
 #include "vtkPFBrushStrokeFluidMapper.h"
+#include "vtkPFRayMarchedFluidMapper.h"
 #include "vtkPFScreenSpaceFluidActor.h"
 #include "vtkPFScreenSpaceFluidMapper.h"
 #include "vtkPFToonFluidMapper.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -22,8 +25,12 @@
 #include "vtkOpenGLFluidMapper.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkPixelBufferObject.h"
+#include "vtkPointData.h"
 #include "vtkPointGaussianMapper.h"
+#include "vtkPoints.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkPropCollection.h"
+#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
@@ -276,6 +283,88 @@ vtkSmartPointer<vtkProp> gaussianSpheres(vtkPolyData* data, double radius)
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
   return actor;
+}
+
+/// The Ray-Marched Fluid mapper on `data` (spacing d, kernel radius in d, rays per pixel each way).
+vtkSmartPointer<vtkProp> rayMarched(vtkPolyData* data, double spacing, int mode, double kernel, double scale,
+                                    bool skipping = true)
+{
+  auto mapper = vtkSmartPointer<vtkPFRayMarchedFluidMapper>::New();
+  mapper->SetInputDataObject(data);
+  mapper->SetParticleSpacing(spacing);
+  mapper->SetKernelRadius(kernel);
+  mapper->SetDisplayMode(mode);
+  mapper->SetResolutionScale(scale);
+  mapper->SetEmptySpaceSkipping(skipping);
+  auto actor = vtkSmartPointer<vtkPFScreenSpaceFluidActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+/// Particle Surface's mesh of `data` (marching cubes, cell 0.5 d, 10 Taubin pairs: the filter's
+/// defaults but the kernel), drawn by the ordinary polygon mapper; `seconds`: the extraction time.
+vtkSmartPointer<vtkProp> meshSurface(vtkPolyData* data, double spacing, double kernel, double& seconds)
+{
+  const vtkIdType n = data->GetNumberOfPoints();
+  std::vector<float> xyz(static_cast<size_t>(3 * n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double x[3];
+    data->GetPoint(i, x);
+    for (int k = 0; k < 3; ++k)
+    {
+      xyz[3 * i + k] = static_cast<float>(x[k]);
+    }
+  }
+  parafluid::surface::ParticleSurfaceParameters parameters;
+  parameters.particleSpacing = spacing;
+  parameters.kernelRadius = kernel;
+  parameters.smoothingIterations = 10;
+  parafluid::surface::ParticleSurface extractor;
+  const auto start = std::chrono::steady_clock::now();
+  const parafluid::surface::SurfaceMesh mesh = extractor.extract(xyz.data(), static_cast<size_t>(n), parameters);
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.vertexCount()));
+  std::copy(mesh.points.begin(), mesh.points.end(), static_cast<float*>(points->GetVoidPointer(0)));
+  vtkNew<vtkFloatArray> normals;
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(static_cast<vtkIdType>(mesh.vertexCount()));
+  std::copy(mesh.normals.begin(), mesh.normals.end(), normals->GetPointer(0));
+  vtkNew<vtkCellArray> triangles;
+  for (size_t t = 0; t < mesh.triangleCount(); ++t)
+  {
+    const vtkIdType ids[3] = { mesh.triangles[3 * t], mesh.triangles[3 * t + 1], mesh.triangles[3 * t + 2] };
+    triangles->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> surface;
+  surface->SetPoints(points);
+  surface->SetPolys(triangles);
+  surface->GetPointData()->SetNormals(normals);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(surface);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.1, 0.45, 0.75);
+  return actor;
+}
+
+/// Mean samples of the field per pixel over the window, from the Steps display mode (red counts
+/// one level per sample; pixels no ray sampled show the background, counted as 0).
+double meanSamples(Window& w)
+{
+  w.renderer->SetBackground(0.0, 0.0, 0.0);
+  w.Render();
+  vtkNew<vtkUnsignedCharArray> rgb;
+  w.window->GetPixelData(0, 0, w.width - 1, w.height - 1, 0, rgb, 0);
+  double sum = 0.0;
+  for (vtkIdType i = 0; i < rgb->GetNumberOfTuples(); ++i)
+  {
+    sum += rgb->GetComponent(i, 0);
+  }
+  w.renderer->SetBackground(0.3, 0.3, 0.35);
+  return sum / (w.width * w.height);
 }
 
 void show(Window& w, vtkProp* prop)
@@ -586,9 +675,10 @@ int main(int argc, char* argv[])
     }
     else
     {
-      std::fprintf(
-        stderr, "usage: %s [--check] [--width W] [--height H] [--big N] [--csv file] [--only accuracy|speed|big|npr]\n",
-        argv[0]);
+      std::fprintf(stderr,
+                   "usage: %s [--check] [--width W] [--height H] [--big N] [--csv file] [--only "
+                   "accuracy|speed|big|npr|raymarch|raymarch-blocks]\n",
+                   argv[0]);
       return 2;
     }
   }
@@ -661,7 +751,7 @@ int main(int argc, char* argv[])
   //    x3 (vtkOpenGLFluidMapper's defaults), ours also opaque and with passes skipped.
   for (long count : { 100000L, big })
   {
-    if (only == "accuracy" || (only == "big" && count != big))
+    if (only == "accuracy" || only.rfind("raymarch", 0) == 0 || (only == "big" && count != big))
     {
       continue;
     }
@@ -718,6 +808,120 @@ int main(int argc, char* argv[])
         none);
     row(scene.c_str(), "vtkOpenGLFluidMapper", "opaque narrow-range", 3, time(vtkFluid(block, radius, 3, false)), none);
     row(scene.c_str(), "vtkPointGaussianMapper", "spheres", 0, time(gaussianSpheres(block, radius)), none);
+  }
+
+  // 3. The three ways of drawing particle water, side by side: Ray-Marched Fluid, Screen-Space
+  //    Fluid and Particle Surface's mesh drawn by the Surface representation's mapper. Time
+  //    against error on the ball, frame time on the blocks, and where the ray march's time goes.
+  if (only.empty() || only == "raymarch" || only == "raymarch-blocks")
+  {
+    using RM = vtkPFRayMarchedFluidMapper;
+    std::printf("\nthree ways on the ball (error in spacings against the sphere of the particles' volume)\n");
+    const bool ballPart = only != "raymarch-blocks";
+    for (double kernel : { 2.0, 3.0 })
+    {
+      for (double scale : { 1.0, 0.5 })
+      {
+        if (!ballPart)
+        {
+          break;
+        }
+        show(w, rayMarched(ball, h, RM::OpaqueSurface, kernel, scale));
+        const double seconds = w.FrameTime(3);
+        w.Render();
+        const std::string method =
+          "opaque, kernel " + std::to_string(kernel).substr(0, 3) + " d, scale " + std::to_string(scale).substr(0, 4);
+        row("ball", "ray-marched", method.c_str(), 0, seconds, w.MeasureSphere(surface, h));
+      }
+    }
+    if (ballPart)
+    {
+      show(w, ours(ball, r, M::NarrowRange, 3, M::OpaqueSurface));
+      const double seconds = w.FrameTime(3);
+      w.Render();
+      row("ball", "screen-space", "opaque narrow-range", 3, seconds, w.MeasureSphere(surface, h));
+    }
+    for (double kernel : { 2.0, 3.0 })
+    {
+      if (!ballPart)
+      {
+        break;
+      }
+      double build = 0.0;
+      show(w, meshSurface(ball, h, kernel, build));
+      const double seconds = w.FrameTime(3);
+      w.Render();
+      const std::string method = "mesh kernel " + std::to_string(kernel).substr(0, 3) + " d (+" +
+                                 std::to_string(static_cast<int>(1e3 * build)) + " ms to build)";
+      row("ball", "particle-surface", method.c_str(), 10, seconds, w.MeasureSphere(surface, h));
+    }
+    for (long count : { 100000L, big })
+    {
+      double spacing = 0.0;
+      auto block = parafluid_test::damBlock(count, spacing);
+      parafluid_test::addSwirl(block);
+      const std::string scene = "block" + std::to_string(block->GetNumberOfPoints());
+      std::printf("\n%s: %lld particles, spacing %.4f, %dx%d\n", scene.c_str(),
+                  static_cast<long long>(block->GetNumberOfPoints()), spacing, width, height);
+      auto place = [&]()
+      {
+        w.renderer->GetActiveCamera()->SetPosition(1.0, -2.2, 2.4);
+        w.renderer->GetActiveCamera()->SetFocalPoint(1.0, 0.5, 0.3);
+        w.renderer->GetActiveCamera()->SetViewUp(0.0, 0.0, 1.0);
+      };
+      auto time = [&](vtkProp* prop)
+      {
+        show(w, prop);
+        place();
+        w.nearPlane = 0.5;
+        const double seconds = w.FrameTime(5);
+        w.nearPlane = 1.0;
+        return seconds;
+      };
+      const DepthError none;
+      const double ssf = time(ours(block, spacing, M::NarrowRange, 3, M::TransparentFluid));
+      row(scene.c_str(), "screen-space", "transparent narrow-range", 3, ssf, none);
+      for (int mode : { RM::TransparentFluid, RM::OpaqueSurface, RM::Normals })
+      {
+        for (double scale : { 1.0, 0.5, 0.25 })
+        {
+          if (mode == RM::Normals && scale < 1.0)
+          {
+            break; // normals against opaque at full resolution: what the shading costs
+          }
+          const char* names[] = { "opaque", "transparent", "normals" };
+          const double seconds = time(rayMarched(block, spacing, mode, 2.0, scale));
+          const std::string method = std::string(names[mode]) + ", scale " + std::to_string(scale).substr(0, 4);
+          row(scene.c_str(), "ray-marched", method.c_str(), 0, seconds, none);
+          if (mode == RM::TransparentFluid && scale == 1.0)
+          {
+            std::printf("%-36s %17.2f x Screen-Space Fluid's transparent frame\n", "  ratio", seconds / ssf);
+          }
+        }
+      }
+      // The grid build (CPU, once per data change) and the samples per pixel.
+      show(w, rayMarched(block, spacing, RM::Steps, 2.0, 1.0, true));
+      place();
+      w.nearPlane = 0.5;
+      const double skipping = meanSamples(w);
+      auto* mapper = static_cast<RM*>(vtkActor::SafeDownCast(w.renderer->GetViewProps()->GetLastProp())->GetMapper());
+      std::printf("%-36s %10.1f ms (%lld cells, %lld may hold the surface)\n", "  grid build (sort + occupancy)",
+                  mapper->GetLastBuildMilliseconds(), mapper->GetLastCellCount(), mapper->GetLastOccupiedCellCount());
+      show(w, rayMarched(block, spacing, RM::Steps, 2.0, 1.0, false));
+      place();
+      const double brute = meanSamples(w);
+      w.nearPlane = 1.0;
+      std::printf("%-36s %10.2f with skipping, %.2f without (%.1fx)\n", "  samples of the field per pixel", skipping,
+                  brute, brute / skipping);
+      csv << scene << ",ray-marched,samples per pixel skipping," << skipping << ",,,,,\n";
+      csv << scene << ",ray-marched,samples per pixel brute force," << brute << ",,,,,\n";
+      double build = 0.0;
+      const double meshFrame = time(meshSurface(block, spacing, 2.0, build));
+      row(scene.c_str(), "particle-surface", "mesh kernel 2 d, frame", 10, meshFrame, none);
+      std::printf("%-36s %10.1f ms (marching cubes + 10 Taubin pairs, once per data change)\n", "  mesh build",
+                  1e3 * build);
+      csv << scene << ",particle-surface,mesh build,10," << build << ",,,,\n";
+    }
   }
   std::printf("\nCSV: %s\n", csvPath.c_str());
   return 0;

@@ -1,6 +1,8 @@
 """The Gerstner Ocean representation displaces a flat plane exactly as the Gerstner Ocean source
 displaces its grid: both drawn white on black from the same grazing camera at the same time must
-give the same image (up to a few silhouette pixels) and the same depth buffer."""
+give the same image (up to a few silhouette pixels) and the same depth buffer. And the first try a
+new user makes: Show(Plane()) as Gerstner Ocean, Reset Camera: the view's bounds hold the waves'
+height, so the water is drawn, and a warning says the plane is far narrower than the waves."""
 import numpy as np
 from paraview.simple import *
 from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
@@ -136,4 +138,36 @@ set_time(TIME + 0.5)
 later = capture("depth")
 moved = np.nanmedian(np.abs(later[..., 0] - ocean_depth[..., 0])[both])
 pftest.check(moved > 20 * agreement, "%s: 0.5 s later the depth moved by only %g m" % (state, moved))
+
+# First try: ParaView's default 1 m plane, a storm, Reset Camera. The representation's bounds must
+# include the waves (else the clipping range, set from a flat plane, cuts them all away), and a
+# warning must say why the sea looks like a tilting sheet and what to change.
+from vtkmodules.vtkCommonCore import vtkOutputWindow
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.vtkConstants import VTK_STRING
+
+warnings = []
+
+
+@calldata_type(VTK_STRING)
+def keep(caller, event, text=None):
+    warnings.append(str(text))
+
+
+tag = vtkOutputWindow.GetInstance().AddObserver("WarningEvent", keep)
+new_view()
+first = Plane()
+shown = Show(first, view)
+shown.SetRepresentationType("Gerstner Ocean")
+shown.OceanSeaState = "Storm"
+set_time(TIME)
+Render(view)
+view.ResetCamera()
+Render(view)
+vtkOutputWindow.GetInstance().RemoveObserver(tag)
+image = capture("color")
+drawn = (image.max(axis=2) > 0).mean()
+pftest.check(drawn > 0.001, "the ocean on the default plane is drawn after Reset Camera (%.1f %% of pixels)" % (100 * drawn))
+said = " ".join(warnings)
+pftest.check("shortest wave" in said and "Plane" in said, "a warning says the plane is narrower than the waves: %s" % said[:300])
 print("ocean representation: ok")

@@ -39,6 +39,20 @@ void shiftPhase(float s0, float c0, float delta, float& s, float& c)
 }
 } // namespace
 
+void displacementBound(const OceanParameters& p, bool overFloor, double& horizontal, double& vertical)
+{
+  horizontal = vertical = 0.0;
+  for (const GerstnerWave& w : p.waves)
+  {
+    vertical += w.amplitude * (1.0 + p.breakingStretch);
+    horizontal += w.amplitude * (w.steepness + p.breakingShift);
+    if (overFloor)
+    {
+      horizontal += p.maxSteepness * w.wavelength / (2.0 * kPi);
+    }
+  }
+}
+
 void validate(const OceanParameters& p)
 {
   validateWaves(p.waves);

@@ -51,6 +51,13 @@ struct OceanParameters
 /// Throws std::invalid_argument naming the parameter that is out of range.
 void validate(const OceanParameters& parameters);
 
+/// Upper bounds [m] of how far any surface point moves from its rest position, at any time:
+/// vertically sum A (1 + breakingStretch) (orbits shrink with depth, crests rise by the stretch),
+/// horizontally sum A (Q + breakingShift) in deep water; over a floor the orbits' major axes are
+/// capped by maxSteepness, each at most maxSteepness / k, which is added. For the bounds a view
+/// needs (camera reset, clipping range) before any point is evaluated.
+void displacementBound(const OceanParameters& parameters, bool overFloor, double& horizontal, double& vertical);
+
 class GerstnerOcean
 {
 public:
