@@ -8,8 +8,10 @@ import os
 import sys
 
 from paraview.simple import *
-from vtkmodules.vtkImagingCore import vtkImageAppend
+import numpy as np
+from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Testing", "Python"))
 import pftest
@@ -69,16 +71,20 @@ def meshed(view):
     shown.Opacity = 0.7
 
 
-append = vtkImageAppend()
-append.SetAppendAxis(0)
+panels = []
 for name, build in (("ray.png", ray_marched), ("screen.png", screen_space), ("mesh.png", meshed)):
     reader = vtkPNGReader()
     reader.SetFileName(panel(name, build))
     reader.Update()
-    append.AddInputData(reader.GetOutput())
-append.Update()
+    image = reader.GetOutput()
+    w, h, _ = image.GetDimensions()
+    panels.append(vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3])
+joined = np.ascontiguousarray(np.concatenate(panels, axis=1))
+out = vtkImageData()
+out.SetDimensions(joined.shape[1], joined.shape[0], 1)
+out.GetPointData().SetScalars(numpy_to_vtk(joined.reshape(-1, 3), deep=True))
 writer = vtkPNGWriter()
 writer.SetFileName(target)
-writer.SetInputConnection(append.GetOutputPort())
+writer.SetInputData(out)
 writer.Write()
 print("wrote", target)

@@ -2,10 +2,12 @@
 the top of a resting lattice block that fills half the window, seen from straight above, with
 particle radii of 5, 20 and 60 pixels on screen; Screen-Space Fluid (default settings) and
 Ray-Marched Fluid (default settings) from the Normals display mode (colour = 0.5 + 0.5 n, eye
-space). Pixels within 3 particle spacings of the block's edge are left out (the silhouette).
+space). Pixels within 3 particle spacings of the block's edge (at most a quarter of its width) are left
+out (the silhouette).
 
   PARAFLUID_PLUGIN=build/lib/paraview-5.11/plugins/ParaFluid/ParaFluid.so \\
     scripts/with-xvfb.sh pvpython Testing/Benchmarks/fluid_normals_benchmark.py"""
+import builtins  # paraview.simple star-imports min and max over the built-ins
 import math
 import sys
 
@@ -26,18 +28,19 @@ view.UseColorPaletteForBackground = 0
 view.Background = [0.0, 0.0, 0.0]
 d = 0.02
 print("%-22s %8s %12s %12s" % ("representation", "radius", "rms angle", "95th pct"))
+# (Names of proxies made here avoid "block" and "source": paraview.simple rebinds such globals.)
 for radius_px in (5, 20, 60):
     # The block fills half the window's width: n spacings across.
     pixels_per_spacing = radius_px / 0.6
     n = int(round(0.5 * W / pixels_per_spacing))
-    block = ProgrammableSource(OutputDataSetType="vtkPolyData")
-    block.Script = pftest.particle_script("""
+    lattice_block = ProgrammableSource(OutputDataSetType="vtkPolyData")
+    lattice_block.Script = pftest.particle_script("""
 h = %r
 g = lambda a, b: np.arange(a + h / 2, b, h)
 P = np.stack(np.meshgrid(g(0.0, %d * h), g(0.0, %d * h), g(0.0, 6 * h), indexing='ij'), -1).reshape(-1, 3)
 """ % (d, n, n))
     for kind, mode_property in (("Screen-Space Fluid", "FluidDisplayMode"), ("Ray-Marched Fluid", "RayMarchDisplayMode")):
-        shown = Show(block, view)
+        shown = Show(lattice_block, view)
         shown.SetRepresentationType(kind)
         shown.ColorArrayName = [None, ""]
         shown.SetPropertyWithName(mode_property, "Normals")
@@ -56,13 +59,15 @@ P = np.stack(np.meshgrid(g(0.0, %d * h), g(0.0, %d * h), g(0.0, 6 * h), indexing
         rgb = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(H, W, -1)[:, :, :3] / 255.0
         normal = rgb * 2.0 - 1.0
         # Inside the face, 3 spacings from its edges.
-        margin = 3 * pixels_per_spacing
         half = 0.5 * n * pixels_per_spacing
+        margin = builtins.min(3 * pixels_per_spacing, 0.5 * half)
         y, x = np.mgrid[0:H, 0:W]
         inside = (np.abs(x + 0.5 - W / 2) < half - margin) & (np.abs(y + 0.5 - H / 2) < half - margin)
         cosine = np.clip(normal[..., 2] / np.maximum(np.linalg.norm(normal, axis=-1), 1e-9), -1.0, 1.0)
         angle = np.degrees(np.arccos(cosine))[inside]
+        if len(sys.argv) > 1:
+            SaveScreenshot("%s/normals_%s_%d.png" % (sys.argv[1], kind.split("-")[0], radius_px), view)
         print("%-22s %6d px %10.2f deg %10.2f deg" % (kind, radius_px, math.sqrt((angle ** 2).mean()),
                                                     np.percentile(angle, 95)))
-        Hide(block, view)
-    Delete(block)
+        Hide(lattice_block, view)
+    Delete(lattice_block)
