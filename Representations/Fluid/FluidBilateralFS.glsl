@@ -1,6 +1,6 @@
 //=========================================================================
 // Separable bilateral filter, one 1D pass along stepDir: a Gaussian in pixels (width from the
-// particle's projected size, as the narrow-range filter) times a Gaussian in depth of width
+// particle's projected size at any zoom, as the narrow-range filter) times a Gaussian in depth of width
 // rangeFactor particle radii, so samples across a depth jump weigh nothing. Empty pixels are
 // left out.
 //=========================================================================
@@ -8,6 +8,7 @@ uniform ivec2 stepDir;
 uniform float particleRadius;
 uniform float filterSize;
 uniform int maxRadius;
+uniform int strideShift; // the a trous level: strides halved this many times
 uniform float rangeFactor;
 
 //VTK::Output::Dec
@@ -22,7 +23,8 @@ void main()
     return;
   }
   float sigma;
-  int n = filterHalfWidth(d0, particleRadius, filterSize, maxRadius, sigma);
+  int stride;
+  int n = filterTaps(d0, particleRadius, filterSize, maxRadius, strideShift, sigma, stride);
   float inv2s2 = 0.5 / max(sigma * sigma, 1e-6);
   float sd = rangeFactor * particleRadius;
   float inv2sd2 = 0.5 / (sd * sd);
@@ -30,12 +32,12 @@ void main()
   float weights = 0.0;
   for (int i = -n; i <= n; ++i)
   {
-    float d = fetchDepth(p + i * stepDir);
+    float d = fetchDepth(p + i * stride * stepDir);
     if (d <= 0.0)
     {
       continue;
     }
-    float w = exp(-float(i * i) * inv2s2 - (d - d0) * (d - d0) * inv2sd2);
+    float w = exp(-float(i * i * stride * stride) * inv2s2 - (d - d0) * (d - d0) * inv2sd2);
     sum += w * d;
     weights += w;
   }

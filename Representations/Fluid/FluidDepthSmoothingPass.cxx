@@ -9,6 +9,8 @@
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkShaderProgram.h"
 
+#include <algorithm>
+
 namespace parafluid
 {
 FluidDepthSmoothingPass::FluidDepthSmoothingPass() = default;
@@ -37,9 +39,12 @@ int FluidDepthSmoothingPass::Run(FluidFrame& frame, FluidScreenTargets& targets,
   }
   program->SetUniformf("filterSize", static_cast<float>(settings.FilterSize));
   program->SetUniformi("maxRadius", settings.MaxFilterRadius);
+  program->SetUniformi("spreadTaps", settings.SpreadTaps ? 1 : 0);
   const int dx[2] = { 1, 0 }, dy[2] = { 0, 1 };
   for (int i = 0; i < settings.Iterations; ++i)
   {
+    // A trous: the last iteration at the full stride, each earlier one at half the next's.
+    program->SetUniformi("strideShift", std::min(settings.Iterations - 1 - i, 8));
     program->SetUniform2i("stepDir", dx);
     runScreenQuad(frame, quad.get(), targets.Depth[0], targets.Depth[1], "depthTex");
     program->SetUniform2i("stepDir", dy);

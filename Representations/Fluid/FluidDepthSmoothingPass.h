@@ -23,8 +23,9 @@ public:
   {
     int Method = NarrowRange;
     int Iterations = 3;
-    double FilterSize = 4.0;        // narrow-range and bilateral: width in particle radii
-    int MaxFilterRadius = 12;       // ... at most this many pixels each side
+    double FilterSize = 2.0;        // narrow-range and bilateral: width in particle radii
+    int MaxFilterRadius = 12;       // ... at most this many taps each side
+    bool SpreadTaps = true;         // taps spread out (a trous) when the width needs more, else cut
     double DepthRange = 2.0;        // particle radii of depth that count as one surface
     double CurvatureFlowStep = 0.8; // fraction of the explicit scheme's stability limit
   };

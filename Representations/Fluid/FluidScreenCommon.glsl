@@ -46,12 +46,56 @@ vec2 pixelFootprint(float d)
   return parallelProjection != 0 ? perUnit : perUnit * d;
 }
 
-// Half-width in pixels (and Gaussian sigma) of the narrow-range and bilateral filters at depth
-// d0: filterSize particle radii across on screen, at most maxRadius pixels each side.
-int filterHalfWidth(float d0, float particleRadius, float filterSize, int maxRadius, out float sigma)
+// Taps each side, their spacing in pixels (stride) and the Gaussian's sigma [pixels] of the
+// narrow-range and bilateral filters at depth d0: sigma is half of filterSize particle radii on
+// screen at any zoom. At most maxRadius taps each side bound the cost per pixel: when the reach
+// (2 sigma) needs more, the taps spread out (stride > 1) instead of the reach being cut, so close
+// up a particle is still smoothed over its whole width. Earlier iterations use strides halved
+// `strideShift` times (a trous, Dammertz et al. 2010): they take out the splats' creases first, so
+// the sparse taps of the last iterations do not alias the particle lattice.
+// With spreadTaps 0 the reach is cut at maxRadius pixels instead (the styles' look).
+uniform int spreadTaps;
+int filterTaps(float d0, float particleRadius, float filterSize, int maxRadius, int strideShift, out float sigma,
+               out int stride)
 {
   sigma = 0.5 * filterSize * particleRadius / pixelFootprint(d0).x;
-  int n = clamp(int(ceil(2.0 * sigma)), 1, maxRadius);
-  sigma = min(sigma, 0.5 * float(n));
-  return n;
+  int reach = int(ceil(2.0 * sigma));
+  if (spreadTaps == 0)
+  {
+    stride = 1;
+    int n = clamp(reach, 1, maxRadius);
+    sigma = min(sigma, 0.5 * float(n));
+    return n;
+  }
+  stride = max(1, ((reach + maxRadius - 1) / maxRadius) >> strideShift);
+  return clamp((reach + stride - 1) / stride, 1, maxRadius);
+}
+
+// Depth for an empty pixel that lies in a gap between splats along `dir`: where fluid lies within
+// `reach` pixels on both sides at depths within `band` of each other, the depth interpolated
+// between the nearest fluid pixels on each side (a gap between touching spheres, e.g. where four
+// meet on a lattice seen along its axis); else 0 (the fluid's edge, or the gap between a drop
+// and the fluid behind it, stays an edge).
+float gapDepth(ivec2 p, ivec2 dir, int reach, float band)
+{
+  float before = 0.0, after = 0.0;
+  int at = 0, bt = 0;
+  for (int i = 1; i <= reach && (before <= 0.0 || after <= 0.0); ++i)
+  {
+    if (before <= 0.0)
+    {
+      before = fetchDepth(p - i * dir);
+      at = i;
+    }
+    if (after <= 0.0)
+    {
+      after = fetchDepth(p + i * dir);
+      bt = i;
+    }
+  }
+  if (before <= 0.0 || after <= 0.0 || abs(before - after) > band)
+  {
+    return 0.0;
+  }
+  return mix(before, after, float(at) / float(at + bt));
 }

@@ -348,6 +348,7 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     smoothing.Iterations = this->SmoothingIterations;
     smoothing.FilterSize = this->FilterSize;
     smoothing.MaxFilterRadius = this->MaxFilterRadius;
+    smoothing.SpreadTaps = this->SpreadFilterTaps;
     smoothing.DepthRange = this->DepthRange;
     smoothing.CurvatureFlowStep = this->CurvatureFlowStep;
     depth = in.Smoothing.Run(frame, in.Targets, smoothing);

@@ -86,8 +86,9 @@ public:
   //@}
 
   //@{
-  /// Depth smoothing: method, iterations (0: none), filter width in particle radii (narrow-range
-  /// and bilateral; at most MaxFilterRadius pixels each side), the depth band in particle radii
+  /// Depth smoothing: method, iterations (0: none), filter width in particle radii at any zoom
+  /// (narrow-range and bilateral; at most MaxFilterRadius taps each side, spread out a trous when
+  /// the width needs more; gaps between splats narrower than the taps fill in), the depth band in particle radii
   /// (narrow-range mu, bilateral sigma, curvature-flow boundary), and the curvature-flow step as
   /// a fraction of the explicit scheme's stability limit (below 1).
   vtkPFSetClampMacro(SmoothingMethod, int, 0, 2);
@@ -98,6 +99,11 @@ public:
   vtkGetMacro(FilterSize, double);
   vtkPFSetClampMacro(MaxFilterRadius, int, 1, 64);
   vtkGetMacro(MaxFilterRadius, int);
+  /// Whether the filters' taps spread out (a trous) when their width needs more than
+  /// MaxFilterRadius of them (default), so the smoothing follows the particles at any zoom; off,
+  /// the width is cut at MaxFilterRadius pixels (the toon and brush-stroke styles keep this look).
+  vtkSetMacro(SpreadFilterTaps, bool);
+  vtkGetMacro(SpreadFilterTaps, bool);
   vtkPFSetClampMacro(DepthRange, double, 0.01, 100.0);
   vtkGetMacro(DepthRange, double);
   vtkPFSetClampMacro(CurvatureFlowStep, double, 0.001, 0.95);
@@ -199,8 +205,9 @@ private:
   int ChooseThicknessFactor(const parafluid::FluidFrame& frame) const;
   int SmoothingMethod = NarrowRange;
   int SmoothingIterations = 3;
-  double FilterSize = 4.0;
+  double FilterSize = 2.0;
   int MaxFilterRadius = 12;
+  bool SpreadFilterTaps = true;
   double DepthRange = 2.0;
   double CurvatureFlowStep = 0.8;
   int DisplayMode = TransparentFluid;

@@ -26,6 +26,9 @@ vtkStandardNewMacro(vtkPFBrushStrokeFluidMapper);
 vtkPFBrushStrokeFluidMapper::vtkPFBrushStrokeFluidMapper()
   : Strokes(new parafluid::FluidBrushStrokePass)
 {
+  // Toon bands under the strokes: smoothed as the Toon Fluid's (vtkPFToonFluidMapper).
+  this->SetFilterSize(4.0);
+  this->SetSpreadFilterTaps(false);
 }
 
 vtkPFBrushStrokeFluidMapper::~vtkPFBrushStrokeFluidMapper() = default;

@@ -14,6 +14,10 @@ vtkPFToonFluidMapper::vtkPFToonFluidMapper()
 {
   // The opaque surface's passes (no thickness, no refraction), shaded as a toon.
   this->SetDisplayMode(OpaqueSurface);
+  // Bands quantise the normals: the styles keep the smoothing they were drawn with (4 radii,
+  // cut at MaxFilterRadius pixels); spread taps streak the bands at grazing angles.
+  this->SetFilterSize(4.0);
+  this->SetSpreadFilterTaps(false);
 }
 
 vtkPFToonFluidMapper::~vtkPFToonFluidMapper() = default;

@@ -27,7 +27,7 @@ view.OrientationAxesVisibility = 0
 view.UseColorPaletteForBackground = 0
 view.Background = [0.0, 0.0, 0.0]
 d = 0.02
-print("%-22s %8s %12s %12s" % ("representation", "radius", "rms angle", "95th pct"))
+print("%-22s %8s %12s %12s %12s %8s" % ("representation", "radius", "rms angle", "95th pct", "rms on fluid", "holes"))
 # (Names of proxies made here avoid "block" and "source": paraview.simple rebinds such globals.)
 for radius_px in (5, 20, 60):
     # The block fills half the window's width: n spacings across.
@@ -65,9 +65,14 @@ P = np.stack(np.meshgrid(g(0.0, %d * h), g(0.0, %d * h), g(0.0, 6 * h), indexing
         inside = (np.abs(x + 0.5 - W / 2) < half - margin) & (np.abs(y + 0.5 - H / 2) < half - margin)
         cosine = np.clip(normal[..., 2] / np.maximum(np.linalg.norm(normal, axis=-1), 1e-9), -1.0, 1.0)
         angle = np.degrees(np.arccos(cosine))[inside]
+        # Holes (no fluid drawn: the black background) count in the rms as the defect they are;
+        # the rms over drawn pixels alone is printed beside it.
+        hole = (rgb.max(axis=-1) == 0.0)[inside]
+        drawn = angle[~hole]
         if len(sys.argv) > 1:
             SaveScreenshot("%s/normals_%s_%d.png" % (sys.argv[1], kind.split("-")[0], radius_px), view)
-        print("%-22s %6d px %10.2f deg %10.2f deg" % (kind, radius_px, math.sqrt((angle ** 2).mean()),
-                                                    np.percentile(angle, 95)))
+        print("%-22s %6d px %10.2f deg %10.2f deg %10.2f deg %7.2f %%" % (
+            kind, radius_px, math.sqrt((angle ** 2).mean()), np.percentile(angle, 95),
+            math.sqrt((drawn ** 2).mean()) if drawn.size else float("nan"), 100.0 * hole.mean()))
         Hide(lattice_block, view)
     Delete(lattice_block)

@@ -4,7 +4,10 @@ compared with Testing/Fluid/Baselines by VTK's image difference, thresholded err
  - fluid_transparent.png: the same as transparent fluid over a ground plane coloured by x, which
    the fluid refracts and tints by its thickness;
  - fluid_normals.png: the normals display mode;
- - fluid_box.png: a ball of fluid through an opaque box (the depth compositing).
+ - fluid_box.png: a ball of fluid through an opaque box (the depth compositing);
+ - fluid_clear_water.png: default transparent fluid over the coloured ground: a 2 cm sheet the
+   ground shows through almost untinted, beside a 30 cm block tinted by Beer-Lambert, with the
+   sky's Fresnel reflection on its top at a grazing angle.
 To refresh: PARAFLUID_UPDATE_BASELINE=1 ctest -R fluid_images"""
 import os
 
@@ -89,4 +92,24 @@ def ball_in_box(view):
 
 
 render("fluid_box.png", ball_in_box, [0.6, -2.4, 1.0], [0.1, 0.0, 0.0])
+
+SHEET_AND_BLOCK = pftest.particle_script("""
+h = 0.01
+g = lambda a, b: np.arange(a + h / 2, b, h)
+sheet = np.stack(np.meshgrid(g(-0.4, 0.4), g(-0.4, 0.4), g(0.0, 0.02), indexing='ij'), -1).reshape(-1, 3)
+block = np.stack(np.meshgrid(g(0.5, 1.2), g(-0.4, 0.4), g(0.0, 0.3), indexing='ij'), -1).reshape(-1, 3)
+P = np.concatenate([sheet, block])
+""")
+
+
+def clear_water(view):
+    ground(view, True)
+    particles = ProgrammableSource(OutputDataSetType="vtkPolyData")
+    particles.Script = SHEET_AND_BLOCK
+    display = Show(particles, view)
+    display.SetRepresentationType("Screen-Space Fluid")  # every setting at its default
+    display.ColorArrayName = [None, ""]
+
+
+render("fluid_clear_water.png", clear_water, [0.4, -1.6, 1.0], [0.4, 0.2, 0.0])
 print("test_fluid_images: all images match")

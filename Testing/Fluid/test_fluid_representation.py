@@ -225,4 +225,38 @@ image = pixels()
 text = messages()
 pftest.check("draws the points of its input" in text, "a mesh input gives a warning (%s)" % text[:300])
 pftest.check(fluid_pixels(image) > 1000, "a mesh input is drawn as its points")
+Hide(sphere, view)
+
+# A flat face stays flat at any zoom: the top of a lattice block seen from straight above, its
+# particles 20 and 60 pixels in radius on screen (the smoothing's taps spread out, and the gaps
+# where four spheres meet fill in): normals within 3 degrees rms of the face's, and no holes.
+view.ViewSize = [800, 700]
+view.CameraParallelProjection = 1
+# (Names are long: the ProgrammableSource's numpy star import can rebind short globals.)
+for radius_px, face_cells in ((20, 16), (60, 6)):
+    lattice_step = 0.02
+    pixels_per_spacing = radius_px / 0.6
+    top = particles("h = %r\ng = lambda a, b: np.arange(a + h / 2, b, h)\n"
+                    "P = np.stack(np.meshgrid(g(0, %d * h), g(0, %d * h), g(0, 3 * h), indexing='ij'), -1).reshape(-1, 3)\n"
+                    % (lattice_step, face_cells, face_cells))
+    shown = Show(top, view)
+    shown.SetRepresentationType("Screen-Space Fluid")
+    shown.ColorArrayName = [None, ""]
+    shown.FluidDisplayMode = "Normals"
+    shown.FluidParticleRadius = 0.6 * lattice_step  # the automatic radius of a particle_spacing
+    Render(view)
+    centre = 0.5 * face_cells * lattice_step
+    view.CameraPosition = [centre, centre, 5.0]
+    view.CameraFocalPoint = [centre, centre, 0.0]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraParallelScale = 350.0 / pixels_per_spacing * lattice_step
+    normal = pixels() / 255.0 * 2.0 - 1.0
+    half = 0.5 * face_cells * pixels_per_spacing
+    y, x = np.mgrid[0:700, 0:800]
+    inside = (np.abs(x + 0.5 - 400) < 0.5 * half) & (np.abs(y + 0.5 - 350) < 0.5 * half)
+    tilt = np.degrees(np.arccos(np.clip(normal[..., 2] / np.linalg.norm(normal, axis=-1), -1.0, 1.0)))[inside]
+    rms = float(np.sqrt((tilt ** 2).mean()))
+    print("flat face, particles %d px: rms tilt %.2f degrees over %d pixels" % (radius_px, rms, inside.sum()))
+    pftest.check(rms <= 3.0, "a flat face looks flat with %d-pixel particles (rms tilt %.2f degrees)" % (radius_px, rms))
+    Hide(top, view)
 print("test_fluid_representation: all checks passed")
