@@ -66,6 +66,10 @@ float phiAt(vec3 x)
   float rho = kernelRadius / cellSize;
   ivec3 lo = max(ivec3(floor(g - rho)), ivec3(0));
   ivec3 hi = min(ivec3(floor(g + rho)), gridDims - 1);
+  if (any(greaterThan(lo, hi)))
+  {
+    return 0.0; // beyond the grid (rows past its end must not be read)
+  }
   float inv2 = 1.0 / (kernelRadius * kernelRadius);
   float sum = 0.0;
   for (int z = lo.z; z <= hi.z; ++z)
@@ -94,6 +98,11 @@ vec3 outwardNormal(vec3 x, out vec3 color)
   float rho = kernelRadius / cellSize;
   ivec3 lo = max(ivec3(floor(g - rho)), ivec3(0));
   ivec3 hi = min(ivec3(floor(g + rho)), gridDims - 1);
+  color = fluidColor;
+  if (any(greaterThan(lo, hi)))
+  {
+    return vec3(0.0, 0.0, 1.0);
+  }
   float inv2 = 1.0 / (kernelRadius * kernelRadius);
   vec3 toward = vec3(0.0);
   vec4 weighted = vec4(0.0);

@@ -204,6 +204,10 @@ double DensityCellGrid::evaluate(const double p[3], double gradient[3]) const
   {
     lo[a] = std::max(0, static_cast<int>(std::floor((p[a] - r - this->Origin[a]) / this->CellSize)));
     hi[a] = std::min(this->Dims[a] - 1, static_cast<int>(std::floor((p[a] + r - this->Origin[a]) / this->CellSize)));
+    if (lo[a] > hi[a])
+    {
+      return 0.0; // beyond the grid along this axis: no particle within reach
+    }
   }
   double sum = 0.0;
   for (int z = lo[2]; z <= hi[2]; ++z)
