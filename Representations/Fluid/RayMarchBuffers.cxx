@@ -86,6 +86,7 @@ void RayMarchBuffers::Update(vtkOpenGLRenderWindow* window, vtkPointSet* input, 
   const std::vector<std::uint8_t>& blocks = this->Cells.blockOccupied();
   upload(window, this->Buffers[2], this->Textures[2], std::vector<std::uint32_t>(blocks.begin(), blocks.end()), 1,
          VTK_UNSIGNED_INT, GL_R32UI);
+  upload(window, this->Buffers[4], this->Textures[4], this->Cells.splatCells(), 4, VTK_FLOAT, GL_RGBA32F);
   this->Colored = colors != nullptr;
   if (colors)
   {
@@ -110,7 +111,7 @@ void RayMarchBuffers::Update(vtkOpenGLRenderWindow* window, vtkPointSet* input, 
 
 void RayMarchBuffers::Release(vtkWindow* window)
 {
-  for (int i = 0; i < 4; ++i)
+  for (int i = 0; i < 5; ++i)
   {
     if (this->Textures[i])
     {

@@ -2,7 +2,8 @@
 // The ray-marched fluid's particles on the GPU: parafluid::surface::DensityCellGrid built on the CPU
 // when the particles or the field's settings change, and its tables as texture buffers the march
 // reads: sorted positions (RGBA32F), each cell's first slot with its occupancy bit (R32UI), the
-// blocks' occupancy (R32UI) and, when colouring by an array, the sorted colours (RGBA8).
+// blocks' occupancy (R32UI), the cells splatted for the start/stop depths (RGBA32F) and, when
+// colouring by an array, the sorted colours (RGBA8).
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
@@ -30,6 +31,7 @@ public:
   vtkTextureObject* CellStart() const { return this->Textures[1]; }
   vtkTextureObject* Blocks() const { return this->Textures[2]; }
   vtkTextureObject* Colors() const { return this->Colored ? this->Textures[3].Get() : nullptr; }
+  vtkTextureObject* SplatCells() const { return this->Textures[4]; }
   /// Of the finite particle centres (uninitialised when there are none).
   const double* Bounds() const { return this->CentreBounds; }
   /// CPU time of the last rebuild (sort, occupancy and upload) [ms].
@@ -39,8 +41,8 @@ public:
 
 private:
   surface::DensityCellGrid Cells;
-  vtkSmartPointer<vtkOpenGLBufferObject> Buffers[4];
-  vtkSmartPointer<vtkTextureObject> Textures[4];
+  vtkSmartPointer<vtkOpenGLBufferObject> Buffers[5];
+  vtkSmartPointer<vtkTextureObject> Textures[5];
   vtkMTimeType Key = 0;
   double Settings[3] = { 0, 0, 0 };
   bool Colored = false;

@@ -7,6 +7,10 @@
 // Empty-space skipping (Wu et al. 2022): a block or cell whose conservative bound of phi is below
 // the iso value (DensityCellGrid) is crossed in one stride, so small steps are taken only near
 // the fluid; a ray through spray samples only the cells around the spray, then strides on.
+// Start/stop depth from splats (SPLAT_BOUNDS; after Xiao et al. 2017, RayMarchBoundsPass): the
+// surface lies within the kernel-radius spheres of the particles near it, so a ray samples only
+// between their nearest and farthest depth over its pixel; splash and bulk have a pair each, and a
+// ray through spray marches the spray's span, then jumps to the bulk's.
 // Hit refinement: bisection of the last step, then a secant step, so the surface does not band.
 // Inside the fluid the march strides 8 steps at a time (it only needs the exit).
 // Normals: phi's analytic gradient. Shading: Schlick's Fresnel reflection of the environment;
@@ -24,6 +28,9 @@ uniform samplerBuffer particleColors; // per sorted slot
 uniform float colorMix;
 #endif
 uniform sampler2D opaqueDepthTex;    // window depth of the opaque scene (full resolution)
+#ifdef SPLAT_BOUNDS
+uniform sampler2D boundsTex; // per BOUNDS_PIXELS march pixels: splash near, -far, bulk near, -far [view depth]
+#endif
 #ifdef TRANSPARENT_FLUID
 uniform sampler2D opaqueColor;
 #endif
@@ -166,12 +173,19 @@ float refine(vec3 O, vec3 D, float t0, float t1, bool entering)
 }
 
 // March from t to tEnd; returns the ray parameter where phi first crosses the iso value
-// (entering: rising through it, else falling), or -1. Skips empty space when entering.
-float march(vec3 O, vec3 D, float t, float tEnd, bool entering)
+// (entering: rising through it, else falling), or -1. Entering, the samples lie on the lattice
+// tOrigin + k stepLength whatever was skipped (empty cells and blocks, spans outside the splats),
+// so skipping only leaves out samples where phi is below the iso value and finds the very hit
+// the brute-force march finds.
+float march(vec3 O, vec3 D, float t, float tEnd, bool entering, float tOrigin)
 {
   vec3 invD = 1.0 / vec3(abs(D.x) > 1e-20 ? D.x : 1e-20, abs(D.y) > 1e-20 ? D.y : 1e-20, abs(D.z) > 1e-20 ? D.z : 1e-20);
   float tPrev = t;
-  float nudge = 1e-4 * cellSize;
+  if (entering)
+  {
+    t = tOrigin + ceil((t - tOrigin) / stepLength) * stepLength;
+    tPrev = t - stepLength;
+  }
   int budget = samples + maxSteps;
   for (int iteration = 0; iteration < 8 * maxSteps && t < tEnd && samples < budget; ++iteration)
   {
@@ -180,16 +194,20 @@ float march(vec3 O, vec3 D, float t, float tEnd, bool entering)
     {
       ivec3 c = clamp(ivec3(floor((x - gridOrigin) / cellSize)), ivec3(0), gridDims - 1);
       ivec3 b = c / blockCells;
+      float tExit = -1.0;
       if (texelFetch(blockOccupied, (b.z * blockDims.y + b.y) * blockDims.x + b.x).r == 0u)
       {
-        tPrev = boxExit(O, invD, b * blockCells, (b + 1) * blockCells);
-        t = tPrev + nudge;
-        continue;
+        tExit = boxExit(O, invD, b * blockCells, (b + 1) * blockCells);
       }
-      if ((texelFetch(cellStart, (c.z * gridDims.y + c.y) * gridDims.x + c.x).r & 0x80000000u) == 0u)
+      else if ((texelFetch(cellStart, (c.z * gridDims.y + c.y) * gridDims.x + c.x).r & 0x80000000u) == 0u)
       {
-        tPrev = boxExit(O, invD, c, c + 1);
-        t = tPrev + nudge;
+        tExit = boxExit(O, invD, c, c + 1);
+      }
+      if (tExit >= 0.0)
+      {
+        // On to the first lattice sample past the empty box (at least one step on).
+        t = max(tOrigin + ceil((tExit - tOrigin) / stepLength) * stepLength, t + stepLength);
+        tPrev = t - stepLength;
         continue;
       }
     }
@@ -224,6 +242,26 @@ vec2 toViewportPixel(vec3 eye)
   return (clip.xy / clip.w * 0.5 + 0.5) * viewportSize;
 }
 
+#ifdef SPLAT_BOUNDS
+// Ray parameter [model units] where the ray of viewport pixel `pixel` reaches view depth z.
+float tAtDepth(vec2 pixel, vec3 O, vec3 D, float z)
+{
+  vec3 m = (eyeToModel * vec4(eyePosition(pixel, z), 1.0)).xyz;
+  return dot(m - O, D);
+}
+
+// The ray's span [t0, t1] between view depths near and far, within [tNear, tFar]; empty (t0 > t1)
+// where no sphere lies.
+vec2 spanOf(vec2 pixel, vec3 O, vec3 D, float near, float far, float tNear, float tFar)
+{
+  if (near > 1e29)
+  {
+    return vec2(1e30, -1e30);
+  }
+  return vec2(max(tAtDepth(pixel, O, D, near), tNear), min(tAtDepth(pixel, O, D, far), tFar));
+}
+#endif
+
 void main()
 {
   vec2 pixel = (floor(texCoord * vec2(marchSize)) + 0.5) * pixelScale;
@@ -248,7 +286,33 @@ void main()
   {
     discard;
   }
-  float tHit = march(O, D, tNear, tFar, true);
+#ifdef SPLAT_BOUNDS
+  vec4 bounds = texelFetch(boundsTex, ivec2(floor(texCoord * vec2(marchSize))) / BOUNDS_PIXELS, 0);
+  vec2 first = spanOf(pixel, O, D, bounds.x, -bounds.y, tNear, tFar);
+  vec2 second = spanOf(pixel, O, D, bounds.z, -bounds.w, tNear, tFar);
+  if (second.x < first.x)
+  {
+    vec2 swap = first;
+    first = second;
+    second = swap;
+  }
+  if (second.x <= first.y)
+  {
+    first.y = max(first.y, second.y); // overlapping: one span
+    second = vec2(1e30, -1e30);
+  }
+  if (first.x >= first.y && second.x >= second.y)
+  {
+    discard; // no sphere over this pixel in front of the opaque scene: nothing to march
+  }
+  float tHit = first.x < first.y ? march(O, D, first.x, first.y, true, tNear) : -1.0;
+  if (tHit < 0.0 && second.x < second.y)
+  {
+    tHit = march(O, D, second.x, second.y, true, tNear);
+  }
+#else
+  float tHit = march(O, D, tNear, tFar, true, tNear);
+#endif
   if (displayMode == 3)
   {
     // Steps: red counts the samples of phi (one level each, up to 255), green shows up to 64.
@@ -303,7 +367,7 @@ void main()
 #ifdef TRANSPARENT_FLUID
   // Into the fluid by Snell's law, along the refracted ray to where phi falls below the iso value.
   vec3 T = refract(D, Nm, 1.0 / refractiveIndex);
-  float tOut = march(P, T, 0.25 * stepLength, 1e30, false);
+  float tOut = march(P, T, 0.25 * stepLength, 1e30, false, 0.0);
   float path = 0.0;
   vec3 behind;
   if (tOut < 0.0)

@@ -3,6 +3,7 @@
 #include "FluidLighting.h"
 #include "FluidLightingFS.h"
 #include "FluidScreenTargets.h"
+#include "RayMarchBoundsPass.h"
 #include "RayMarchBuffers.h"
 #include "RayMarchFS.h"
 #include "RayMarchUpsampleFS.h"
@@ -30,7 +31,8 @@ enum Variant
   Transparent = 1,
   ParticleColors = 2,
   LowResolution = 4,
-  CubeMap = 8
+  CubeMap = 8,
+  SplatBounds = 16
 };
 
 std::string defines(int variant)
@@ -40,6 +42,9 @@ std::string defines(int variant)
   d += (variant & ParticleColors) ? "#define PARTICLE_COLORS\n" : "";
   d += (variant & LowResolution) ? "#define LOW_RESOLUTION\n" : "";
   d += (variant & CubeMap) ? "#define FLUID_CUBEMAP\n" : "";
+  d += (variant & SplatBounds)
+         ? "#define SPLAT_BOUNDS\n#define BOUNDS_PIXELS " + std::to_string(RayMarchBoundsPass::BoundsPixels) + "\n"
+         : "";
   return d;
 }
 
@@ -94,17 +99,28 @@ void RayMarchPass::EnsureLowResolution(FluidFrame& frame, int width, int height)
   }
 }
 
+int RayMarchPass::MarchSize(const FluidFrame& frame, double resolutionScale, int axis)
+{
+  return static_cast<int>(std::ceil(frame.Size[axis] * ChooseScale(resolutionScale)));
+}
+
+double RayMarchPass::ChooseScale(double resolutionScale)
+{
+  return resolutionScale >= 1.0 ? 1.0 : (resolutionScale >= 0.5 ? 0.5 : 0.25);
+}
+
 bool RayMarchPass::Run(FluidFrame& frame, const RayMarchBuffers& buffers, vtkTextureObject* opaqueDepth,
-                       vtkTextureObject* opaqueColor, vtkTexture* environment, const RayMarchSettings& s)
+                       vtkTextureObject* opaqueColor, vtkTextureObject* bounds, vtkTexture* environment,
+                       const RayMarchSettings& s)
 {
   vtkOpenGLState* state = frame.State;
   vtkRenderer* renderer = frame.Renderer;
   environment = chooseFluidEnvironment(renderer, environment);
-  const double scale = s.ResolutionScale >= 1.0 ? 1.0 : (s.ResolutionScale >= 0.5 ? 0.5 : 0.25);
+  const double scale = ChooseScale(s.ResolutionScale);
   const bool low = scale < 1.0;
   const bool transparent = s.DisplayMode == 1;
   const int variant = (transparent ? Transparent : 0) | (buffers.Colors() ? ParticleColors : 0) |
-                      (low ? LowResolution : 0) | (environment ? CubeMap : 0);
+                      (low ? LowResolution : 0) | (environment ? CubeMap : 0) | (bounds ? SplatBounds : 0);
   std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->March[variant];
   const std::string body = std::string(FluidLightingFS) + RayMarchFS;
   vtkShaderProgram* march = readyScreenQuad(quad, frame, body.c_str(), defines(variant).c_str());
@@ -148,8 +164,7 @@ bool RayMarchPass::Run(FluidFrame& frame, const RayMarchBuffers& buffers, vtkTex
   march->SetUniformf("ambient", static_cast<float>(s.Ambient));
   march->SetUniformf("colorMix", static_cast<float>(s.ColorMix));
   setFluidLighting(march, renderer, environment);
-  const int lowSize[2] = { static_cast<int>(std::ceil(frame.Size[0] * scale)),
-                           static_cast<int>(std::ceil(frame.Size[1] * scale)) };
+  const int lowSize[2] = { MarchSize(frame, scale, 0), MarchSize(frame, scale, 1) };
   march->SetUniform2i("marchSize", low ? lowSize : frame.Size);
   march->SetUniformf("pixelScale", static_cast<float>(1.0 / scale));
   {
@@ -158,6 +173,10 @@ bool RayMarchPass::Run(FluidFrame& frame, const RayMarchBuffers& buffers, vtkTex
     bound.Bind(buffers.CellStart(), "cellStart");
     bound.Bind(buffers.Blocks(), "blockOccupied");
     bound.Bind(opaqueDepth, "opaqueDepthTex");
+    if (bounds)
+    {
+      bound.Bind(bounds, "boundsTex");
+    }
     if (buffers.Colors())
     {
       bound.Bind(buffers.Colors(), "particleColors");

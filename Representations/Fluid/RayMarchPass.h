@@ -41,8 +41,15 @@ public:
   /// Draws the fluid into the window's framebuffer (bound by the caller) over the frame's
   /// rectangle with depth test and writes. `opaqueDepth`/`opaqueColor`: the scene drawn so far
   /// (full resolution; colour only read by transparent fluid). False when a program did not build.
+  /// `bounds`: RayMarchBoundsPass's start/stop depths for this march (null: rays start at the
+  /// grid's box).
   bool Run(FluidFrame& frame, const RayMarchBuffers& buffers, vtkTextureObject* opaqueDepth,
-           vtkTextureObject* opaqueColor, vtkTexture* environment, const RayMarchSettings& settings);
+           vtkTextureObject* opaqueColor, vtkTextureObject* bounds, vtkTexture* environment,
+           const RayMarchSettings& settings);
+  /// The resolution scale used for `resolutionScale` (1, 0.5 or 0.25), and the march's pixels
+  /// along `axis` at it.
+  static double ChooseScale(double resolutionScale);
+  static int MarchSize(const FluidFrame& frame, double resolutionScale, int axis);
   void Release(vtkWindow* window);
 
 private:

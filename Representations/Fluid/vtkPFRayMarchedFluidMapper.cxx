@@ -2,6 +2,7 @@
 
 #include "FluidFrame.h"
 #include "FluidScreenTargets.h"
+#include "RayMarchBoundsPass.h"
 #include "RayMarchBuffers.h"
 #include "RayMarchPass.h"
 
@@ -16,6 +17,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 
 vtkStandardNewMacro(vtkPFRayMarchedFluidMapper);
@@ -26,11 +28,13 @@ struct vtkPFRayMarchedFluidMapper::Internals
   vtkOpenGLRenderWindow* Context = nullptr;
   parafluid::RayMarchBuffers Buffers;
   parafluid::FluidScreenTargets Targets;
+  parafluid::RayMarchBoundsPass Bounds;
   parafluid::RayMarchPass Pass;
 
   void Release(vtkWindow* window)
   {
     this->Buffers.Release(window);
+    this->Bounds.Release(window);
     this->Targets.Release(window);
     this->Pass.Release(window);
     this->Context = nullptr;
@@ -55,6 +59,8 @@ void vtkPFRayMarchedFluidMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxSteps: " << this->MaxSteps << "\n";
   os << indent << "ResolutionScale: " << this->ResolutionScale << "\n";
   os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << "\n";
+  os << indent << "StartStopSplats: " << this->StartStopSplats << "\n";
+  os << indent << "SeparateSplash: " << this->SeparateSplash << "\n";
 }
 
 double vtkPFRayMarchedFluidMapper::EffectiveSpacing()
@@ -71,6 +77,16 @@ long long vtkPFRayMarchedFluidMapper::GetLastCellCount() const
 long long vtkPFRayMarchedFluidMapper::GetLastOccupiedCellCount() const
 {
   return static_cast<long long>(this->March->Buffers.Grid().occupiedCells());
+}
+
+long long vtkPFRayMarchedFluidMapper::GetLastSplashCount() const
+{
+  return static_cast<long long>(this->March->Buffers.Grid().splashParticles());
+}
+
+long long vtkPFRayMarchedFluidMapper::GetLastUnsplattedCount() const
+{
+  return static_cast<long long>(this->March->Buffers.Grid().unsplattedParticles());
 }
 
 double vtkPFRayMarchedFluidMapper::GetLastBuildMilliseconds() const
@@ -164,6 +180,23 @@ void vtkPFRayMarchedFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   vtkOpenGLState::ScopedglColorMask savedColorMask(state);
   vtkOpenGLState::ScopedglClearColor savedClearColor(state);
 
+  std::fill(this->PassMilliseconds, this->PassMilliseconds + 3, 0.0);
+  auto lap = std::chrono::steady_clock::now();
+  auto timePass = [&](int pass)
+  {
+    if (this->TimePasses)
+    {
+      glFinish();
+      const auto now = std::chrono::steady_clock::now();
+      this->PassMilliseconds[pass] = std::chrono::duration<double, std::milli>(now - lap).count();
+      lap = now;
+    }
+  };
+  if (this->TimePasses)
+  {
+    glFinish();
+    lap = std::chrono::steady_clock::now();
+  }
   in.Targets.Ensure(window, frame.Size[0], frame.Size[1], 4, false, false);
   frame.Framebuffer = in.Targets.Framebuffer;
   {
@@ -178,6 +211,22 @@ void vtkPFRayMarchedFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     in.Targets.CopyOpaqueScene(whole, transparent);
   }
   state->vtkglEnable(GL_SCISSOR_TEST);
+  timePass(0);
+
+  vtkTextureObject* bounds = nullptr;
+  if (this->EmptySpaceSkipping && this->StartStopSplats)
+  {
+    const int marchSize[2] = { parafluid::RayMarchPass::MarchSize(frame, this->ResolutionScale, 0),
+                               parafluid::RayMarchPass::MarchSize(frame, this->ResolutionScale, 1) };
+    const double pixelScale = 1.0 / parafluid::RayMarchPass::ChooseScale(this->ResolutionScale);
+    if (!in.Bounds.Run(frame, in.Buffers, in.Targets.EmptyVAO, marchSize, pixelScale, this->SeparateSplash))
+    {
+      vtkErrorMacro("The ray-marched fluid's splat shader did not compile (see the messages above).");
+      return;
+    }
+    bounds = in.Bounds.Bounds();
+  }
+  timePass(1);
 
   parafluid::RayMarchSettings s;
   s.DisplayMode = std::min(this->GetDisplayMode(), static_cast<int>(Steps));
@@ -192,11 +241,13 @@ void vtkPFRayMarchedFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   s.SpecularStrength = this->GetSpecularStrength();
   s.Ambient = this->GetAmbient();
   s.ColorMix = this->GetColorMix();
-  if (!in.Pass.Run(frame, in.Buffers, in.Targets.OpaqueDepth, in.Targets.OpaqueColor, this->GetEnvironmentTexture(), s))
+  if (!in.Pass.Run(frame, in.Buffers, in.Targets.OpaqueDepth, in.Targets.OpaqueColor, bounds,
+                   this->GetEnvironmentTexture(), s))
   {
     vtkErrorMacro("The ray-marched fluid shader did not compile (see the messages above).");
     return;
   }
+  timePass(2);
   const GLenum error = glGetError();
   if (error != GL_NO_ERROR)
   {

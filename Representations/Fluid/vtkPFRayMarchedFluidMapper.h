@@ -9,13 +9,15 @@
  *  1. RayMarchBuffers: the particles sorted into kernel-wide cells, with a conservative occupancy
  *     map of cells and blocks (Filters/Surface/Core DensityCellGrid), to the GPU when they changed;
  *  2. where the fluid lands on screen (FluidFootprint), and a copy of the opaque scene drawn so far;
- *  3. RayMarchPass: per pixel, a ray through the fluid's rectangle that strides over empty blocks
- *     and cells, samples phi in small steps (StepSize particle spacings) only where it can reach
- *     the iso value, refines the crossing, and shades it (normals from phi's analytic gradient,
- *     Fresnel reflection; for transparent fluid Snell refraction, the path inside the fluid to its
- *     exit and Beer-Lambert absorption along it); at ResolutionScale < 1 into a reduced target that
- *     a depth-aware upsampling pass draws into the view.
- * The fluid writes its surface's depth, so it composites with the opaque scene from any camera.
+ *  3. RayMarchBoundsPass (with EmptySpaceSkipping and StartStopSplats): the particles near the
+ *     surface splatted as kernel-radius spheres onto a coarse target that keeps, per pixel, their
+ *     nearest and farthest depth, for splash and bulk apart (Xiao et al. 2017);
+ *  4. RayMarchPass: per pixel, a ray through the fluid's rectangle, between those depths, that strides over empty
+ * blocks and cells, samples phi in small steps (StepSize particle spacings) only where it can reach the iso value,
+ * refines the crossing, and shades it (normals from phi's analytic gradient, Fresnel reflection; for transparent fluid
+ * Snell refraction, the path inside the fluid to its exit and Beer-Lambert absorption along it); at ResolutionScale < 1
+ * into a reduced target that a depth-aware upsampling pass draws into the view. The fluid writes its surface's depth,
+ * so it composites with the opaque scene from any camera.
  *
  * It shares the Screen-Space Fluid mapper's appearance settings (FluidColor, AttenuationDistance,
  * RefractiveIndex, Shininess, SpecularStrength, Ambient, ColorMix, EnvironmentTexture, colouring
@@ -71,6 +73,20 @@ public:
   vtkSetMacro(EmptySpaceSkipping, bool);
   vtkBooleanMacro(EmptySpaceSkipping, bool);
   vtkGetMacro(EmptySpaceSkipping, bool);
+  /// With EmptySpaceSkipping: start and stop each ray at the nearest and farthest depth of the
+  /// kernel spheres of the particles over its pixel (a splat pass), splash and bulk apart.
+  vtkSetMacro(StartStopSplats, bool);
+  vtkBooleanMacro(StartStopSplats, bool);
+  vtkGetMacro(StartStopSplats, bool);
+  /// Separate start/stop depths for splash and bulk particles (off: one pair for all; for
+  /// comparison).
+  vtkSetMacro(SeparateSplash, bool);
+  vtkBooleanMacro(SeparateSplash, bool);
+  vtkGetMacro(SeparateSplash, bool);
+  /// Finish the GPU's work after each pass and time it (GetLastPassMilliseconds; for benchmarks:
+  /// it stalls the pipeline).
+  vtkSetMacro(TimePasses, bool);
+  vtkGetMacro(TimePasses, bool);
   //@}
 
   void Render(vtkRenderer* renderer, vtkActor* actor) override;
@@ -85,6 +101,13 @@ public:
   long long GetLastCellCount() const;
   long long GetLastOccupiedCellCount() const;
   double GetLastBuildMilliseconds() const;
+  /// Particles of the last grid in the splash class, and those never splatted (their field cannot
+  /// reach the iso value).
+  long long GetLastSplashCount() const;
+  long long GetLastUnsplattedCount() const;
+  /// With TimePasses: wall time of the last frame's passes [ms]: 0 copy of the opaque scene,
+  /// 1 start/stop splats, 2 march and shading (with the upsampling).
+  double GetLastPassMilliseconds(int pass) const { return pass >= 0 && pass < 3 ? this->PassMilliseconds[pass] : 0.0; }
   //@}
 
 protected:
@@ -106,5 +129,9 @@ private:
   int MaxSteps = 256;
   double ResolutionScale = 1.0;
   bool EmptySpaceSkipping = true;
+  bool StartStopSplats = true;
+  bool SeparateSplash = true;
+  bool TimePasses = false;
   double LastSpacing = 0.0;
+  double PassMilliseconds[3] = { 0, 0, 0 };
 };

@@ -61,3 +61,8 @@ void vtkPFRayMarchedFluidRepresentation::SetEmptySpaceSkipping(bool skip)
 {
   this->GetRayMarchedMapper()->SetEmptySpaceSkipping(skip);
 }
+
+void vtkPFRayMarchedFluidRepresentation::SetStartStopSplats(bool splats)
+{
+  this->GetRayMarchedMapper()->SetStartStopSplats(splats);
+}

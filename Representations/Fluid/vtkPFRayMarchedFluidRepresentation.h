@@ -29,6 +29,7 @@ public:
   void SetMaxSteps(int steps);
   void SetResolutionScale(double scale);
   void SetEmptySpaceSkipping(bool skip);
+  void SetStartStopSplats(bool splats);
   //@}
 
   vtkPFRayMarchedFluidMapper* GetRayMarchedMapper() const;

@@ -285,9 +285,19 @@ vtkSmartPointer<vtkProp> gaussianSpheres(vtkPolyData* data, double radius)
   return actor;
 }
 
+/// How the ray march skips empty space: none (brute force), the occupancy grid only, or with the
+/// start/stop splats, one pair for all particles or splash and bulk apart (the default).
+enum class Skip
+{
+  None,
+  Occupancy,
+  SplatsMerged,
+  Splats
+};
+
 /// The Ray-Marched Fluid mapper on `data` (spacing d, kernel radius in d, rays per pixel each way).
 vtkSmartPointer<vtkProp> rayMarched(vtkPolyData* data, double spacing, int mode, double kernel, double scale,
-                                    bool skipping = true)
+                                    Skip skip = Skip::Splats)
 {
   auto mapper = vtkSmartPointer<vtkPFRayMarchedFluidMapper>::New();
   mapper->SetInputDataObject(data);
@@ -295,7 +305,9 @@ vtkSmartPointer<vtkProp> rayMarched(vtkPolyData* data, double spacing, int mode,
   mapper->SetKernelRadius(kernel);
   mapper->SetDisplayMode(mode);
   mapper->SetResolutionScale(scale);
-  mapper->SetEmptySpaceSkipping(skipping);
+  mapper->SetEmptySpaceSkipping(skip != Skip::None);
+  mapper->SetStartStopSplats(skip == Skip::SplatsMerged || skip == Skip::Splats);
+  mapper->SetSeparateSplash(skip == Skip::Splats);
   auto actor = vtkSmartPointer<vtkPFScreenSpaceFluidActor>::New();
   actor->SetMapper(mapper);
   return actor;
@@ -900,14 +912,14 @@ int main(int argc, char* argv[])
         }
       }
       // The grid build (CPU, once per data change) and the samples per pixel.
-      show(w, rayMarched(block, spacing, RM::Steps, 2.0, 1.0, true));
+      show(w, rayMarched(block, spacing, RM::Steps, 2.0, 1.0));
       place();
       w.nearPlane = 0.5;
       const double skipping = meanSamples(w);
       auto* mapper = static_cast<RM*>(vtkActor::SafeDownCast(w.renderer->GetViewProps()->GetLastProp())->GetMapper());
       std::printf("%-36s %10.1f ms (%lld cells, %lld may hold the surface)\n", "  grid build (sort + occupancy)",
                   mapper->GetLastBuildMilliseconds(), mapper->GetLastCellCount(), mapper->GetLastOccupiedCellCount());
-      show(w, rayMarched(block, spacing, RM::Steps, 2.0, 1.0, false));
+      show(w, rayMarched(block, spacing, RM::Steps, 2.0, 1.0, Skip::None));
       place();
       const double brute = meanSamples(w);
       w.nearPlane = 1.0;
@@ -915,6 +927,44 @@ int main(int argc, char* argv[])
                   brute, brute / skipping);
       csv << scene << ",ray-marched,samples per pixel skipping," << skipping << ",,,,,\n";
       csv << scene << ",ray-marched,samples per pixel brute force," << brute << ",,,,,\n";
+      // Where a transparent frame's time goes, pass by pass (the GPU finished after each).
+      {
+        auto prop = rayMarched(block, spacing, RM::TransparentFluid, 2.0, 1.0);
+        auto* timed = static_cast<RM*>(vtkActor::SafeDownCast(prop)->GetMapper());
+        timed->SetTimePasses(true);
+        time(prop);
+        std::printf("%-36s %10.1f ms copy of the scene, %.1f ms start/stop splats, %.1f ms march + shading\n",
+                    "  transparent frame by pass", timed->GetLastPassMilliseconds(0), timed->GetLastPassMilliseconds(1),
+                    timed->GetLastPassMilliseconds(2));
+        csv << scene << ",ray-marched,pass copy," << timed->GetLastPassMilliseconds(0) << ",,,,,\n";
+        csv << scene << ",ray-marched,pass splats," << timed->GetLastPassMilliseconds(1) << ",,,,,\n";
+        csv << scene << ",ray-marched,pass march," << timed->GetLastPassMilliseconds(2) << ",,,,,\n";
+      }
+      // The skipping's parts, on the block and on the block with 5 % of its particles as spray
+      // droplets (2 x 2 x 2 particles each, with a surface of their own) in the air above it.
+      auto spray = parafluid_test::withDroplets(block, spacing, 0.05, 7);
+      for (vtkPolyData* data : { block.Get(), spray.Get() })
+      {
+        const char* which = data == block.Get() ? "block" : "block + 5 % droplets";
+        const char* names[] = { "brute force", "occupancy grid", "+ splats, one pair", "+ splats, splash apart" };
+        for (Skip skip : { Skip::None, Skip::Occupancy, Skip::SplatsMerged, Skip::Splats })
+        {
+          if (skip == Skip::None && data == block.Get())
+          {
+            continue; // measured above
+          }
+          const double seconds = time(rayMarched(data, spacing, RM::TransparentFluid, 2.0, 1.0, skip));
+          show(w, rayMarched(data, spacing, RM::Steps, 2.0, 1.0, skip));
+          place();
+          w.nearPlane = 0.5;
+          const double samples = meanSamples(w);
+          w.nearPlane = 1.0;
+          std::printf("  %-22s %-24s %8.1f ms transparent, %.2f samples per pixel\n", which,
+                      names[static_cast<int>(skip)], 1e3 * seconds, samples);
+          csv << scene << ",ray-marched," << which << " " << names[static_cast<int>(skip)] << "," << seconds
+              << ",,,,,\n";
+        }
+      }
       double build = 0.0;
       const double meshFrame = time(meshSurface(block, spacing, 2.0, build));
       row(scene.c_str(), "particle-surface", "mesh kernel 2 d, frame", 10, meshFrame, none);

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 namespace parafluid_test
 {
@@ -86,6 +87,35 @@ inline vtkSmartPointer<vtkPolyData> damBlock(long count, double& spacing)
       {
         points->SetPoint(id++, (i + 0.5) * spacing, (j + 0.5) * spacing, (k + 0.5) * spacing);
       }
+    }
+  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  return data;
+}
+
+/// `block` plus droplets of 2 x 2 x 2 particles (spacing apart) holding `fraction` of its
+/// particle count, at random in the air above it (z 1.2 to 2), seeded by `seed`; no point arrays.
+inline vtkSmartPointer<vtkPolyData> withDroplets(vtkPolyData* block, double spacing, double fraction, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> x(0.0, 2.0), y(0.0, 1.0), z(1.2, 2.0);
+  const vtkIdType n = block->GetNumberOfPoints();
+  const vtkIdType drops = static_cast<vtkIdType>(fraction * n / 8);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(n + 8 * drops);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->SetPoint(i, block->GetPoint(i));
+  }
+  for (vtkIdType d = 0; d < drops; ++d)
+  {
+    const double c[3] = { x(rng), y(rng), z(rng) };
+    for (int k = 0; k < 8; ++k)
+    {
+      points->SetPoint(n + 8 * d + k, c[0] + (k & 1) * spacing, c[1] + ((k >> 1) & 1) * spacing,
+                       c[2] + ((k >> 2) & 1) * spacing);
     }
   }
   auto data = vtkSmartPointer<vtkPolyData>::New();

@@ -2,8 +2,10 @@
  - accuracy: on a lattice ball the ray-marched surface's depth lies within 0.1 d of the sphere
    holding the particles' volume and within 0.05 d of Particle Surface's marching-cubes mesh of
    the same field (rendered by the Surface representation from the same camera);
- - empty-space skipping changes no pixel by more than 1/255 and cuts the mean samples per pixel
-   by at least 5x on a dam-break block with 5 % spray (counted by the Steps display mode);
+ - empty-space skipping (the occupancy grid, and with it the start/stop splats) changes no pixel
+   by more than 1/255 against the brute-force march, from afar and close up, and cuts the mean
+   samples per pixel by at least 5x on a dam-break block with 5 % spray droplets (counted by the
+   Steps display mode); the splats never add samples;
  - refraction: a slab over stripes shifts the stripe edges by what Snell's law gives for its
    thickness (within 1 pixel); Beer-Lambert: a slab's transmittance is exp(-sigma L) within 2 %;
  - depth compositing with an opaque box, every display mode, reduced resolution, colouring by an
@@ -167,35 +169,59 @@ for name, particle_set in (("lattice ball", lattice), ("shell ball", shells)):
 view.CameraParallelProjection = 0
 
 # --- Empty-space skipping: same picture, far fewer samples ---------------------------------------
+# A block with 5 % of its particles as spray droplets of 2 x 2 x 2 particles (each with a surface
+# of its own) in the air above it. Three ways: brute force (no skipping), the occupancy grid only,
+# and the occupancy grid with the start/stop splats (splash and bulk apart; the default).
 dam = particles("""
 h = 0.025
 g = lambda a, b: np.arange(a + h / 2, b, h)
 block = np.stack(np.meshgrid(g(0.0, 1.0), g(0.0, 0.5), g(0.0, 0.5), indexing='ij'), -1).reshape(-1, 3)
 rng = np.random.default_rng(3)
-spray = rng.uniform([0.0, 0.0, 0.7], [2.0, 0.5, 1.5], (len(block) // 19, 3))
-P = np.concatenate([block, spray])
+centres = rng.uniform([0.0, 0.0, 0.7], [2.0, 0.5, 1.5], (len(block) // 20 // 8, 3))
+corners = np.stack(np.meshgrid([0, h], [0, h], [0, h], indexing='ij'), -1).reshape(-1, 3)
+P = np.concatenate([block, (centres[:, None, :] + corners[None, :, :]).reshape(-1, 3)])
 """)
 shown = fluid(dam, spacing=0.025)
 Render(view)
+WAYS = {"brute force": (0, 0), "occupancy grid": (1, 0), "occupancy grid + splats": (1, 1)}
+
+
+def compare_ways(label):
+    images, steps = {}, {}
+    for way, (skipping, splats) in WAYS.items():
+        shown.RayMarchEmptySpaceSkipping = skipping
+        shown.RayMarchStartStopSplats = splats
+        shown.RayMarchDisplayMode = "Opaque Surface"
+        images[way] = grab()
+        shown.RayMarchDisplayMode = "Steps"
+        steps[way] = grab()[:, :, 0].mean()  # samples per pixel (red, one level each; 0 where no ray sampled)
+    pftest.check(messages() == "", "no error in the skipping comparison (%s)" % label)
+    for way in ("occupancy grid", "occupancy grid + splats"):
+        difference = np.abs(images[way] - images["brute force"]).max()
+        print("%s, %s: mean samples per pixel %.2f (brute force %.2f, %.1fx fewer); largest pixel difference %d"
+              % (label, way, steps[way], steps["brute force"], steps["brute force"] / builtins.max(steps[way], 1e-9),
+                 difference))
+        pftest.check(difference <= 1, "%s (%s) changes no pixel by more than 1/255 (largest %d)" % (way, label, difference))
+    pftest.check(images["brute force"][:, :, :3].max() > 0, "the fluid is drawn (%s)" % label)
+    return steps
+
+
 view.CameraPosition = [1.0, -2.6, 1.4]
 view.CameraFocalPoint = [1.0, 0.25, 0.5]
 view.CameraViewUp = [0.0, 0.0, 1.0]
-images, steps = {}, {}
-for skipping in (1, 0):
-    shown.RayMarchEmptySpaceSkipping = skipping
-    shown.RayMarchDisplayMode = "Opaque Surface"
-    images[skipping] = grab()
-    shown.RayMarchDisplayMode = "Steps"
-    steps[skipping] = grab()[:, :, 0]  # samples per pixel (red, one level each; 0 where no ray sampled)
-pftest.check(messages() == "", "no error in the skipping comparison")
-difference = np.abs(images[1] - images[0]).max()
-ratio = steps[0].mean() / np.maximum(steps[1].mean(), 1e-9)
-print("dam break + 5 %% spray: mean samples per pixel %.2f skipping, %.2f brute force (%.1fx); largest pixel difference %d"
-      % (steps[1].mean(), steps[0].mean(), ratio, difference))
-pftest.check(difference <= 1, "skipping changes no pixel by more than 1/255 (largest %d)" % difference)
+steps = compare_ways("whole scene")
+ratio = steps["brute force"] / builtins.max(steps["occupancy grid + splats"], 1e-9)
 pftest.check(ratio >= 5.0, "skipping cuts the mean samples per pixel by at least 5x (%.1fx)" % ratio)
+pftest.check(steps["occupancy grid + splats"] <= steps["occupancy grid"] + 1e-9,
+             "the splats' start and stop never add samples (%.2f against %.2f)"
+             % (steps["occupancy grid + splats"], steps["occupancy grid"]))
+# Close up, the fluid reaches past the window's edges: the splats are drawn as quads, not points.
+view.CameraPosition = [0.6, -0.45, 0.75]
+view.CameraFocalPoint = [0.7, 0.25, 0.4]
+compare_ways("close up")
 Hide(dam, view)
 shown.RayMarchEmptySpaceSkipping = 1
+shown.RayMarchStartStopSplats = 1
 
 
 # --- Refraction and Beer-Lambert on slabs ----------------------------------------------------------

@@ -175,3 +175,90 @@ TEST(DensityCellGrid, EmptyInputAndBadParametersAreClear)
   EXPECT_THROW(grid.build(one, 1, 0.01, std::nan(""), 0.5), std::invalid_argument);
   EXPECT_THROW(grid.build(one, 1, 0.01, 0.02, -1.0), std::invalid_argument);
 }
+
+TEST(DensityCellGrid, EveryParticleNearTheSurfaceIsSplattedAndSprayIsSplash)
+{
+  // Block, isolated droplets (spaced 3 d: no surface of their own), and a clump of 2 x 2 x 2
+  // particles (a splash drop with a surface: phi 0.84 at its centre) far from the block.
+  const double d = 0.02, r = 2.0 * d;
+  std::vector<float> xyz = blockWithSpray(d, 12, 10, 8, 3);
+  const std::size_t blockCount = 12 * 10 * 8;
+  const std::size_t clumpFirst = xyz.size() / 3;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i)
+      {
+        xyz.push_back(static_cast<float>(0.5 + i * d));
+        xyz.push_back(static_cast<float>(0.1 + j * d));
+        xyz.push_back(static_cast<float>(0.1 + k * d));
+      }
+  DensityCellGrid grid;
+  grid.build(xyz.data(), xyz.size() / 3, d, r, 0.5);
+  const std::vector<float>& sorted = grid.sortedPositions();
+  const std::vector<std::uint32_t>& order = grid.order();
+  std::vector<float> classOf(xyz.size() / 3);
+  for (std::size_t s = 0; s < order.size(); ++s)
+  {
+    classOf[order[s]] = sorted[4 * s + 3];
+  }
+  // The block's core is bulk, the droplets are never splatted, the clump is splash.
+  EXPECT_EQ(classOf[(4 * 10 + 5) * 12 + 6], DensityCellGrid::SplatBulk);
+  for (std::size_t i = blockCount; i < clumpFirst; ++i)
+  {
+    EXPECT_EQ(classOf[i], DensityCellGrid::SplatNone) << "droplet " << i;
+  }
+  for (std::size_t i = clumpFirst; i < classOf.size(); ++i)
+  {
+    EXPECT_EQ(classOf[i], DensityCellGrid::SplatSplash) << "clump particle " << i;
+  }
+  EXPECT_EQ(grid.unsplattedParticles(), clumpFirst - blockCount);
+  EXPECT_GE(grid.splashParticles(), 8u);
+  // The splat cells are the cells of the splatted particles, with their class.
+  std::size_t splatted = 0;
+  const std::vector<float>& cells = grid.splatCells();
+  for (std::size_t s = 0; s < order.size(); ++s)
+  {
+    if (sorted[4 * s + 3] == DensityCellGrid::SplatNone)
+    {
+      continue;
+    }
+    ++splatted;
+    bool found = false;
+    for (std::size_t c = 0; c < cells.size() / 4 && !found; ++c)
+    {
+      bool inside = cells[4 * c + 3] == sorted[4 * s + 3];
+      for (int a = 0; a < 3; ++a)
+      {
+        inside = inside && sorted[4 * s + a] >= cells[4 * c + a] - 1e-6 &&
+                 sorted[4 * s + a] <= cells[4 * c + a] + grid.cellSize() + 1e-6;
+      }
+      found = inside;
+    }
+    ASSERT_TRUE(found) << "splatted particle " << s << " lies in no splat cell of its class";
+  }
+  EXPECT_EQ(splatted, order.size() - grid.unsplattedParticles());
+  EXPECT_LT(cells.size() / 4, splatted / 2) << "fewer splat cells than splatted particles";
+  // Conservative: every particle within the kernel of a point where phi >= iso is splatted.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-0.1, 0.6);
+  int checked = 0;
+  for (int s = 0; s < 100000 && checked < 3000; ++s)
+  {
+    const double p[3] = { u(rng), u(rng) * 0.5, u(rng) * 0.5 };
+    double g[3];
+    if (grid.evaluate(p, g) < 0.5)
+    {
+      continue;
+    }
+    ++checked;
+    for (std::size_t k = 0; k < order.size(); ++k)
+    {
+      const double dx = sorted[4 * k] - p[0], dy = sorted[4 * k + 1] - p[1], dz = sorted[4 * k + 2] - p[2];
+      if (dx * dx + dy * dy + dz * dz < r * r)
+      {
+        ASSERT_NE(sorted[4 * k + 3], DensityCellGrid::SplatNone) << "a particle near the surface is not splatted";
+      }
+    }
+  }
+  EXPECT_GT(checked, 500);
+}

@@ -35,9 +35,11 @@ void DensityCellGrid::build(const float* xyz, std::size_t n, double spacing, dou
   // poly6: W(s) = 315 / (64 pi r^9) (r^2 - s^2)^3, times the particle volume d^3.
   this->Scale = spacing * spacing * spacing * 315.0 / (64.0 * parafluid::kPi * std::pow(kernelRadius, 9));
   this->Sorted.clear();
+  this->SplatCells.clear();
   this->Order.clear();
   this->Skipped = 0;
   this->OccupiedCells = 0;
+  this->SplashParticles = this->UnsplattedParticles = 0;
 
   double lo[3] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
                    std::numeric_limits<double>::max() };
@@ -126,6 +128,69 @@ void DensityCellGrid::build(const float* xyz, std::size_t n, double spacing, dou
     this->Order[slot] = finite[k];
   }
   this->markOccupancy();
+  this->classifySplats(spacing);
+}
+
+void DensityCellGrid::classifySplats(double spacing)
+{
+  const int nx = this->Dims[0], ny = this->Dims[1], nz = this->Dims[2];
+  const double perCell = std::pow(this->CellSize / spacing, 3);
+  const double splashBelow = 27.0 * perCell / 8.0;
+  const long long cells = static_cast<long long>(nx) * ny * nz;
+  std::size_t splash = 0, none = 0;
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : splash, none)
+  for (long long id = 0; id < cells; ++id)
+  {
+    const std::uint32_t first = this->CellStart[static_cast<std::size_t>(id)] & ~OccupiedBit;
+    const std::uint32_t last = this->CellStart[static_cast<std::size_t>(id) + 1] & ~OccupiedBit;
+    if (first == last)
+    {
+      continue;
+    }
+    const int i = static_cast<int>(id % nx), j = static_cast<int>((id / nx) % ny), k = static_cast<int>(id / nx / ny);
+    std::size_t around = 0;
+    bool occupied = false;
+    for (int z = std::max(k - 1, 0); z <= std::min(k + 1, nz - 1); ++z)
+    {
+      for (int y = std::max(j - 1, 0); y <= std::min(j + 1, ny - 1); ++y)
+      {
+        const std::size_t row = (static_cast<std::size_t>(z) * ny + y) * nx;
+        for (int x = std::max(i - 1, 0); x <= std::min(i + 1, nx - 1); ++x)
+        {
+          const std::uint32_t entry = this->CellStart[row + x];
+          occupied = occupied || (entry & OccupiedBit) != 0;
+        }
+        around += (this->CellStart[row + std::min(i + 1, nx - 1) + 1] & ~OccupiedBit) -
+                  (this->CellStart[row + std::max(i - 1, 0)] & ~OccupiedBit);
+      }
+    }
+    const float splatClass =
+      !occupied ? SplatNone : (static_cast<double>(around) < splashBelow ? SplatSplash : SplatBulk);
+    for (std::uint32_t s = first; s < last; ++s)
+    {
+      this->Sorted[4 * s + 3] = splatClass;
+    }
+    const std::size_t count = last - first;
+    splash += splatClass == SplatSplash ? count : 0;
+    none += splatClass == SplatNone ? count : 0;
+  }
+  this->SplashParticles = splash;
+  this->UnsplattedParticles = none;
+  this->SplatCells.clear();
+  for (long long id = 0; id < cells; ++id)
+  {
+    const std::uint32_t first = this->CellStart[static_cast<std::size_t>(id)] & ~OccupiedBit;
+    const std::uint32_t last = this->CellStart[static_cast<std::size_t>(id) + 1] & ~OccupiedBit;
+    if (first == last || this->Sorted[4 * first + 3] == SplatNone)
+    {
+      continue;
+    }
+    const int i = static_cast<int>(id % nx), j = static_cast<int>((id / nx) % ny), k = static_cast<int>(id / nx / ny);
+    const float corner[4] = { static_cast<float>(this->Origin[0] + i * this->CellSize),
+                              static_cast<float>(this->Origin[1] + j * this->CellSize),
+                              static_cast<float>(this->Origin[2] + k * this->CellSize), this->Sorted[4 * first + 3] };
+    this->SplatCells.insert(this->SplatCells.end(), corner, corner + 4);
+  }
 }
 
 void DensityCellGrid::markOccupancy()

@@ -11,6 +11,16 @@
 // the poly6 kernel falls with distance and dist(x_j, C) <= |x - x_j|. A cell whose bound is
 // below the iso value holds no point of the surface and no fluid; a block of BlockCells^3 cells
 // is empty when all its cells are.
+//
+// Splat classes (for start/stop depth maps from splats, Xiao et al. 2017): every point where phi
+// reaches the iso value lies in an occupied cell and within kernelRadius of a particle, whose cell
+// is one of the 27 around it (cells are at least kernelRadius wide). So a particle with no
+// occupied cell among its 27 never bounds the surface (SplatNone: isolated droplets whose field
+// stays below the iso value). The others are Splash when their 27 cells hold fewer than an eighth
+// of the particles a full lattice of the spacing would put there (spray, thin sheets), else Bulk.
+// Separate depth maps for the two let a ray through spray skip the gap down to the bulk. A cell's
+// box grown by kernelRadius holds the kernel spheres of all its particles, so splatting those
+// boxes (splatCells(): far fewer than particles) bounds the surface as the spheres do.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -22,6 +32,8 @@ class DensityCellGrid
 public:
   static constexpr int BlockCells = 4;                      // cells per block edge (the coarse level of the occupancy)
   static constexpr std::uint32_t OccupiedBit = 0x80000000u; // in cellStart(): the cell may hold phi >= iso
+  /// The fourth float of each sorted particle (sortedPositions()).
+  static constexpr float SplatBulk = 0.0f, SplatSplash = 1.0f, SplatNone = -1.0f;
 
   /// Sorts n particles (x, y, z interleaved) of spacing `spacing` [m] (particle volume spacing^3)
   /// for the poly6 kernel of support `kernelRadius` [m], and marks where phi can reach
@@ -43,7 +55,8 @@ public:
   /// phi = kernelScale() * sum_j (r^2 - s^2)^3 with s, r in metres (r: kernelRadius()).
   double kernelScale() const { return this->Scale; }
 
-  /// x, y, z, 0 of each sorted particle [m] (four floats: one RGBA texel each).
+  /// x, y, z [m] and the splat class (SplatBulk, SplatSplash, SplatNone) of each sorted particle
+  /// (four floats: one RGBA texel each).
   const std::vector<float>& sortedPositions() const { return this->Sorted; }
   /// Original index of each sorted particle.
   const std::vector<std::uint32_t>& order() const { return this->Order; }
@@ -55,18 +68,25 @@ public:
   const std::vector<std::uint8_t>& blockOccupied() const { return this->BlockOccupied; }
   bool cellOccupied(int i, int j, int k) const;
   std::size_t occupiedCells() const { return this->OccupiedCells; }
+  /// x, y, z of the lower corner [m] and the splat class of each cell that holds particles of
+  /// class SplatBulk or SplatSplash (four floats per cell).
+  const std::vector<float>& splatCells() const { return this->SplatCells; }
+  /// Particles of each splat class.
+  std::size_t splashParticles() const { return this->SplashParticles; }
+  std::size_t unsplattedParticles() const { return this->UnsplattedParticles; }
 
   /// phi and its gradient [1/m] at p [m], summed over the particles of the cells around p.
   double evaluate(const double p[3], double gradient[3]) const;
 
 private:
   void markOccupancy();
+  void classifySplats(double spacing);
 
   double Origin[3] = { 0, 0, 0 };
   double CellSize = 1, KernelRadius = 1, IsoValue = 0.5, Scale = 0;
   int Dims[3] = { 0, 0, 0 }, BlockDims[3] = { 0, 0, 0 };
-  std::size_t Skipped = 0, OccupiedCells = 0;
-  std::vector<float> Sorted;
+  std::size_t Skipped = 0, OccupiedCells = 0, SplashParticles = 0, UnsplattedParticles = 0;
+  std::vector<float> Sorted, SplatCells;
   std::vector<std::uint32_t> Order, CellStart;
   std::vector<std::uint8_t> BlockOccupied;
 };
