@@ -40,6 +40,21 @@ int FluidDepthSmoothingPass::Run(FluidFrame& frame, FluidScreenTargets& targets,
   program->SetUniformf("filterSize", static_cast<float>(settings.FilterSize));
   program->SetUniformi("maxRadius", settings.MaxFilterRadius);
   program->SetUniformi("spreadTaps", settings.SpreadTaps ? 1 : 0);
+  this->Factor = 1;
+  if (method == NarrowRange && settings.SpreadTaps)
+  {
+    // The filter's reach (2 sigma = FilterSize radii) in pixels at the fluid's nearest depth.
+    const double perUnit = 0.5 * frame.Size[0] * frame.ProjectionCoefficients[0];
+    const double nearest = std::max(frame.Nearest, frame.NearDistance);
+    const double radius = frame.MaxRadius * (frame.Parallel ? perUnit : perUnit / std::max(nearest, 1e-12));
+    this->Factor = FluidReducedSmoothing::ChooseFactor(settings.FilterSize * radius, settings.MaxFilterRadius);
+    if (this->Factor > 1)
+    {
+      this->Reduced.Run(frame, targets, quad.get(), settings.Iterations, settings.FilterSize, this->Factor,
+                        settings.DepthRange * frame.MaxRadius);
+      return 1;
+    }
+  }
   const int dx[2] = { 1, 0 }, dy[2] = { 0, 1 };
   for (int i = 0; i < settings.Iterations; ++i)
   {
@@ -55,6 +70,7 @@ int FluidDepthSmoothingPass::Run(FluidFrame& frame, FluidScreenTargets& targets,
 
 void FluidDepthSmoothingPass::Release(vtkWindow* window)
 {
+  this->Reduced.Release(window);
   for (auto& quad : this->Quads)
   {
     releaseScreenQuad(quad, window);

@@ -30,6 +30,7 @@ uniform float shininess;
 uniform float specularStrength;
 uniform float ambient;
 uniform vec2 depthRange; // particle depth mode: nearest and farthest distance of the fluid
+uniform float silhouetteRadius; // particle radius [world units] the silhouette is smoothed over; 0: as splatted
 
 //VTK::Output::Dec
 
@@ -57,16 +58,94 @@ vec3 tangent(ivec2 p, vec3 centre, ivec2 step)
   return vec3(step, 0.0);
 }
 
+// Smoothed silhouettes. The splats' outline is a union of discs, scalloped one particle at a
+// time. Its coverage blurred by a Gaussian of half a particle radius (48 taps on a Vogel spiral
+// out to one radius, scaled by the radius in pixels at this depth, so the same at any zoom) is
+// smooth, and its 0.5 level runs between the discs' tops and the notches between them: pixels
+// below it are dropped (the tops), empty pixels above it are filled (the notches) with the depth
+// of the fluid around them. A tap counts as covered when it holds fluid no more than `band`
+// behind this pixel (fluid in front hides this surface's edge anyway, so a surface does not
+// fray where a nearer one crosses it; fluid far behind is another surface, and this is its edge).
+float silhouetteCoverage(ivec2 p, float d, float band, out float fill, out vec2 outward)
+{
+  outward = vec2(0.0);
+  float radiusPx = silhouetteRadius / pixelFootprint(d > 0.0 ? d : depthRange.x).x;
+  fill = d;
+  if (d > 0.0)
+  {
+    // Well inside: fluid a radius away on all four sides.
+    int r = int(radiusPx + 0.5);
+    bool inside = true;
+    for (int k = 0; k < 4 && inside; ++k)
+    {
+      ivec2 q = p + r * ivec2(k == 0 ? 1 : (k == 1 ? -1 : 0), k == 2 ? 1 : (k == 3 ? -1 : 0));
+      float dq = fetchDepth(q);
+      inside = dq > 0.0 && dq < d + band;
+    }
+    if (inside)
+    {
+      return 1.0;
+    }
+  }
+  const int taps = 48;
+  const float golden = 2.39996323; // radians
+  float sigma2 = 0.25 * radiusPx * radiusPx;
+  float covered = 0.0, total = 0.0, depthSum = 0.0, nearest = 1e30;
+  for (int i = 0; i < taps; ++i)
+  {
+    float rho = radiusPx * sqrt((float(i) + 0.5) / float(taps));
+    float angle = float(i) * golden;
+    ivec2 q = p + ivec2(floor(rho * vec2(cos(angle), sin(angle)) + 0.5));
+    float w = exp(-0.5 * rho * rho / max(sigma2, 1e-6));
+    float dq = fetchDepth(q);
+    total += w;
+    if (dq > 0.0 && (d <= 0.0 || dq < d + band))
+    {
+      covered += w;
+      depthSum += w * dq;
+      nearest = min(nearest, dq);
+    }
+    else
+    {
+      outward += w * vec2(q - p);
+    }
+  }
+  if (d <= 0.0 && covered > 0.0)
+  {
+    // An empty pixel takes the mean depth around it, or the nearest where surfaces differ.
+    float mean = depthSum / covered;
+    fill = mean - nearest < band ? mean : nearest;
+  }
+  return covered / total;
+}
+
 void main()
 {
   ivec2 p = targetPixel();
   float d = fetchDepth(p);
+  bool filled = false;
+  vec2 outward = vec2(0.0);
+  if (silhouetteRadius > 0.0)
+  {
+    float fill;
+    if (silhouetteCoverage(p, d, 2.0 * silhouetteRadius, fill, outward) < 0.5)
+    {
+      discard;
+    }
+    filled = d <= 0.0;
+    d = fill;
+  }
   if (d <= 0.0)
   {
     discard;
   }
   vec3 P = eyePosition(vec2(p) + 0.5, d);
   vec3 N = normalize(cross(tangent(p, P, ivec2(1, 0)), tangent(p, P, ivec2(0, 1))));
+  if (filled && dot(outward, outward) > 0.0)
+  {
+    // A filled notch of the silhouette faces outward, across the view, as the edge around it.
+    N = normalize(vec3(normalize(outward), 0.35));
+  }
   vec3 V = parallelProjection != 0 ? vec3(0.0, 0.0, 1.0) : normalize(-P);
   if (dot(N, V) < 0.0)
   {

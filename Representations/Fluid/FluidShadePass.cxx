@@ -60,6 +60,7 @@ void FluidShadePass::Run(FluidFrame& frame, FluidScreenTargets& targets, const I
   const float depthRange[2] = { static_cast<float>(std::max(frame.Nearest, frame.NearDistance)),
                                 static_cast<float>(frame.Farthest) };
   shade->SetUniform2f("depthRange", depthRange);
+  shade->SetUniformf("silhouetteRadius", s.SmoothSilhouettes ? static_cast<float>(frame.MaxRadius) : 0.0f);
 
   setFluidLighting(shade, renderer, environment);
   // The targets read, bound while the pass draws.

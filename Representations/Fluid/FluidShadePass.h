@@ -25,6 +25,7 @@ struct FluidShadeSettings
   int ToonBands;
   double LineColor[3];
   double DepthContourSpacing; // particle radii
+  bool SmoothSilhouettes;
 };
 
 class FluidShadePass

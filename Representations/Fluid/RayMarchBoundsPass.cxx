@@ -13,7 +13,6 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
-
 namespace parafluid
 {
 bool RayMarchBoundsPass::Run(FluidFrame& frame, const RayMarchBuffers& buffers, unsigned int emptyVAO,

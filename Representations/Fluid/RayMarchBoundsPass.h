@@ -3,8 +3,9 @@
 // cells of the particles that can bound the surface, each box grown by the kernel's radius (it
 // holds its particles' kernel spheres), drawn onto a coarse target (one pixel per BoundsPixels
 // march pixels each way) that keeps, per pixel, the nearest and farthest view depth of the boxes
-// over it, for splash and bulk apart (RayMarchBoundsVS.glsl, RayMarchBoundsFS.glsl). The march (RayMarchFS.glsl) then samples only between those depths: no
-// ray where no sphere lies, and a ray through spray jumps from the spray's far side to the bulk.
+// over it, for splash and bulk apart (RayMarchBoundsVS.glsl, RayMarchBoundsFS.glsl). The march (RayMarchFS.glsl) then
+// samples only between those depths: no ray where no sphere lies, and a ray through spray jumps from the spray's far
+// side to the bulk.
 #include "FluidScreenQuad.h" // the passes' shared declarations
 
 #include "vtkSmartPointer.h"

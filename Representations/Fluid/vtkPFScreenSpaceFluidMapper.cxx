@@ -341,6 +341,7 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     in.ThicknessBlur.Run(frame, in.Targets, this->MaxFilterRadius);
   }
   int depth = 0; // the target holding the depth the shading reads
+  this->LastSmoothingFactor = 1;
   if (smooth)
   {
     parafluid::FluidDepthSmoothingPass::Settings smoothing;
@@ -352,6 +353,7 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
     smoothing.DepthRange = this->DepthRange;
     smoothing.CurvatureFlowStep = this->CurvatureFlowStep;
     depth = in.Smoothing.Run(frame, in.Targets, smoothing);
+    this->LastSmoothingFactor = in.Smoothing.LastFactor();
   }
   this->RunStylePasses(frame, in.Targets, depth);
   frame.Framebuffer->RemoveColorAttachment(0);
@@ -393,6 +395,8 @@ void vtkPFScreenSpaceFluidMapper::ReleaseStyle(vtkWindow*) {}
 void vtkPFScreenSpaceFluidMapper::FillShading(parafluid::FluidShadeSettings& shading) const
 {
   shading.DisplayMode = this->DisplayMode;
+  shading.SmoothSilhouettes =
+    this->SmoothSilhouettes && this->DisplayMode != ParticleDepth && this->SmoothingIterations > 0;
   std::copy(this->FluidColor, this->FluidColor + 3, shading.FluidColor);
   shading.AttenuationDistance = this->AttenuationDistance;
   shading.RefractiveIndex = this->RefractiveIndex;

@@ -104,6 +104,11 @@ public:
   /// the width is cut at MaxFilterRadius pixels (the toon and brush-stroke styles keep this look).
   vtkSetMacro(SpreadFilterTaps, bool);
   vtkGetMacro(SpreadFilterTaps, bool);
+  /// Whether the silhouette is smoothed over half a particle radius (default; only when the depth
+  /// is smoothed) instead of showing each particle's disc (the toon and brush-stroke styles keep
+  /// the discs).
+  vtkSetMacro(SmoothSilhouettes, bool);
+  vtkGetMacro(SmoothSilhouettes, bool);
   vtkPFSetClampMacro(DepthRange, double, 0.01, 100.0);
   vtkGetMacro(DepthRange, double);
   vtkPFSetClampMacro(CurvatureFlowStep, double, 0.001, 0.95);
@@ -150,6 +155,9 @@ public:
   /// shading), the screen rectangle they covered (x0, y0, x1, y1 in viewport pixels), and how
   /// the splats were drawn.
   int GetLastPassCount() const { return this->LastPassCount; }
+  /// The reduction each way of the last narrow-range smoothing (1: at full resolution; more when
+  /// the particles were so large on screen that the filter ran at reduced resolution).
+  int GetLastSmoothingFactor() const { return this->LastSmoothingFactor; }
   const int* GetLastScreenRect() const { return this->LastScreenRect; }
   /// Whether the splats were drawn as one point sprite per particle (true) or as six-vertex
   /// quads (when a sphere's centre is off screen or its box exceeds the largest point size).
@@ -208,6 +216,7 @@ private:
   double FilterSize = 2.0;
   int MaxFilterRadius = 12;
   bool SpreadFilterTaps = true;
+  bool SmoothSilhouettes = true;
   double DepthRange = 2.0;
   double CurvatureFlowStep = 0.8;
   int DisplayMode = TransparentFluid;
@@ -220,6 +229,7 @@ private:
   double Ambient = 0.2;
   double ColorMix = 0.8;
   int LastPassCount = 0;
+  int LastSmoothingFactor = 1;
   int LastScreenRect[4] = { 0, 0, 0, 0 };
   bool LastUsedPointSprites = false;
   int LastThicknessFactor = 0;

@@ -29,6 +29,7 @@ vtkPFBrushStrokeFluidMapper::vtkPFBrushStrokeFluidMapper()
   // Toon bands under the strokes: smoothed as the Toon Fluid's (vtkPFToonFluidMapper).
   this->SetFilterSize(4.0);
   this->SetSpreadFilterTaps(false);
+  this->SetSmoothSilhouettes(false);
 }
 
 vtkPFBrushStrokeFluidMapper::~vtkPFBrushStrokeFluidMapper() = default;

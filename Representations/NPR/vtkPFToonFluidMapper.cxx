@@ -18,6 +18,7 @@ vtkPFToonFluidMapper::vtkPFToonFluidMapper()
   // cut at MaxFilterRadius pixels); spread taps streak the bands at grazing angles.
   this->SetFilterSize(4.0);
   this->SetSpreadFilterTaps(false);
+  this->SetSmoothSilhouettes(false);
 }
 
 vtkPFToonFluidMapper::~vtkPFToonFluidMapper() = default;
