@@ -21,6 +21,10 @@ FluidReducedSmoothing::~FluidReducedSmoothing() = default;
 
 int FluidReducedSmoothing::ChooseFactor(double reach, int maxTaps)
 {
+  if (reach <= 2.0 * maxTaps)
+  {
+    return 1; // taps spread to every other pixel at most: the a trous filter is still clean
+  }
   int factor = 1;
   while (factor < 16 && reach / factor > maxTaps)
   {

@@ -17,7 +17,8 @@ public:
   FluidReducedSmoothing();
   ~FluidReducedSmoothing(); // where vtkOpenGLQuadHelper is complete
   /// The reduction for a filter `reach` pixels wide each side at the fluid's nearest depth, with
-  /// at most `maxTaps` taps each side: 1 (none needed), else a power of two up to 16.
+  /// at most `maxTaps` taps each side: 1 up to twice maxTaps (a trous taps at most every other
+  /// pixel are still clean), else a power of two up to 16.
   static int ChooseFactor(double reach, int maxTaps);
   /// Filters targets.Depth[0] with `narrowRange` (its program readied with the frame's
   /// uniforms: `iterations` pairs of 1D passes, the last `filterSize` particle radii wide, each
