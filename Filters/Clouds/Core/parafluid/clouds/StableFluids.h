@@ -1,0 +1,62 @@
+#pragma once
+// Stam's stable fluids (SIGGRAPH 1999) for clouds and smoke on a StaggeredGrid, one step:
+//  1. sources: inside the emitter box, density and temperature raised to the emitter's values
+//     and the vertical velocity to its speed;
+//  2. forces: buoyancy w += dt (-alpha density + beta (T - ambient)) (Fedkiw, Stam & Jensen
+//     2001), and vorticity confinement f = epsilon h (N x omega), N the unit gradient of |omega|
+//     (same paper), which puts back the small swirls the grid's numerical diffusion takes out;
+//  3. advection of velocity, density and temperature (semi-Lagrangian, optionally MacCormack);
+//  4. implicit diffusion (viscosity of the velocity, diffusivity of the scalars);
+//  5. projection to zero divergence (closed walls).
+// Unconditionally stable in dt: the tracing reads values that exist, the solves are implicit.
+#include "parafluid/clouds/GridSolvers.h"
+#include "parafluid/clouds/StaggeredGrid.h"
+
+namespace parafluid::clouds
+{
+struct StableFluidsParameters
+{
+  int resolution[3] = { 32, 32, 32 }; // cells per axis
+  double cellSize = 0.1;              // [m]
+  double origin[3] = { 0.0, 0.0, 0.0 };
+  bool macCormack = true;
+  double viscosity = 0.0;          // kinematic [m^2/s]; 0: no diffusion solve
+  double diffusivity = 0.0;        // of density and temperature [m^2/s]
+  double buoyancyDensity = 0.05;   // alpha [m/s^2 per unit density]: density weighs the air down
+  double buoyancyHeat = 0.2;       // beta [m/s^2 per K]: heat lifts it
+  double ambientTemperature = 0.0; // [K] (relative)
+  double vorticity = 0.0;          // epsilon [1]
+  double gravityDirection[3] = { 0.0, 0.0, -1.0 };
+  bool emitter = false;
+  double emitterBox[6] = { 0, 0, 0, 0, 0, 0 }; // xmin, xmax, ymin, ymax, zmin, zmax [m]
+  double emitterDensity = 1.0;
+  double emitterTemperature = 10.0; // [K] above ambient
+  double emitterSpeed = 0.0;        // [m/s] along minus gravity
+  double projectionTolerance = 1e-8;
+  int projectionIterations = 1000;
+};
+
+class StableFluids
+{
+public:
+  /// Throws std::invalid_argument for a resolution below 2 or above 1024 per axis (or more
+  /// than 2^27 cells), a non-positive or non-finite cell size, dt, or negative coefficients.
+  explicit StableFluids(const StableFluidsParameters& parameters);
+  void step(double dt);
+  const StaggeredGrid& grid() const { return this->Grid; }
+  StaggeredGrid& grid() { return this->Grid; }
+  const SolveReport& lastProjection() const { return this->Projection; }
+  /// Sum of density over the cells times a cell's volume.
+  double totalDensity() const;
+  /// 1/2 sum of the squared face velocities times a cell's volume (each face's share).
+  double kineticEnergy() const;
+
+private:
+  void applySources(double dt);
+  void applyForces(double dt);
+  void confineVorticity(double dt);
+  StableFluidsParameters P;
+  StaggeredGrid Grid;
+  SolveReport Projection;
+};
+} // namespace parafluid::clouds
