@@ -4,40 +4,15 @@ missing or wrong velocity array, zero and NaN particles); zero particles, one pa
 warning), two fluids in one view, a window resize, the camera inside the fluid, all without an
 error; colouring by an array changes the picture; the depth of the fluid hides and is hidden by
 opaque geometry."""
-import atexit
 
 import numpy as np
 from paraview.simple import *
-from vtkmodules.vtkCommonCore import vtkOutputWindow
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.util.numpy_support import vtk_to_numpy
 import pftest
 
 pftest.load(globals())
 # Errors and warnings reach ParaView's output window; collect what our renders say there.
-collected = []
-
-
-@calldata_type(VTK_STRING)
-def collect(caller, event, text=None):
-    collected.append("%s: %s" % (event, text))
-
-
-tags = [vtkOutputWindow.GetInstance().AddObserver(event, collect) for event in ("ErrorEvent", "WarningEvent")]
-
-
-@atexit.register
-def stop_collecting():
-    # A Python observer must not outlive the interpreter's shutdown.
-    for tag in tags:
-        vtkOutputWindow.GetInstance().RemoveObserver(tag)
-
-
-def messages():
-    text = "\n".join(collected)
-    del collected[:]
-    return text
+messages = pftest.OutputWindowMessages().take
 
 
 def particles(script):

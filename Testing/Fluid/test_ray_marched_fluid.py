@@ -10,41 +10,17 @@
    thickness (within 1 pixel); Beer-Lambert: a slab's transmittance is exp(-sigma L) within 2 %;
  - depth compositing with an opaque box, every display mode, reduced resolution, colouring by an
    array, and zero / one / NaN particles, without an error."""
-import atexit
 import builtins  # paraview.simple's star import shadows min, max and abs
 import math
 
 import numpy as np
 from paraview.simple import *
-from vtkmodules.vtkCommonCore import vtkOutputWindow
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 import pftest
 
 pftest.load(globals())
-collected = []
-
-
-@calldata_type(VTK_STRING)
-def collect(caller, event, text=None):
-    collected.append("%s: %s" % (event, text))
-
-
-tags = [vtkOutputWindow.GetInstance().AddObserver(event, collect) for event in ("ErrorEvent", "WarningEvent")]
-
-
-@atexit.register
-def stop_collecting():
-    for tag in tags:
-        vtkOutputWindow.GetInstance().RemoveObserver(tag)
-
-
-def messages():
-    text = "\n".join(collected)
-    del collected[:]
-    return text
+messages = pftest.OutputWindowMessages().take
 
 
 def particles(body):

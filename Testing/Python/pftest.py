@@ -142,6 +142,35 @@ class Messages:
         self.warnings.append(str(data))
 
 
+class OutputWindowMessages:
+    """Collects the errors and warnings that reach VTK's output window (what a render says) until
+    the interpreter exits; take() returns them as one text and starts afresh."""
+
+    def __init__(self):
+        import atexit
+        from vtkmodules.vtkCommonCore import vtkOutputWindow
+        self.collected = []
+        window = vtkOutputWindow.GetInstance()
+        self.tags = [window.AddObserver(event, self._collect) for event in ("ErrorEvent", "WarningEvent")]
+        atexit.register(self.stop)
+
+    @calldata_type(VTK_STRING)
+    def _collect(self, caller, event, text=None):
+        self.collected.append("%s: %s" % (event, text))
+
+    def take(self):
+        text = "\n".join(self.collected)
+        del self.collected[:]
+        return text
+
+    def stop(self):
+        # A Python observer must not outlive the interpreter's shutdown.
+        from vtkmodules.vtkCommonCore import vtkOutputWindow
+        for tag in self.tags:
+            vtkOutputWindow.GetInstance().RemoveObserver(tag)
+        self.tags = []
+
+
 def check(condition, message):
     if not condition:
         print("FAILED: " + message, file=sys.stderr)
