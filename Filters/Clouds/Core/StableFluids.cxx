@@ -32,18 +32,66 @@ StableFluids::StableFluids(const StableFluidsParameters& parameters)
   {
     throw std::invalid_argument("Stable Fluids: Viscosity, Diffusivity and Vorticity must be >= 0");
   }
+  if (!(P.projectionTolerance > 0.0 && P.projectionTolerance < 1.0) || P.projectionIterations < 1)
+  {
+    throw std::invalid_argument(
+      "Stable Fluids: ProjectionTolerance must lie in (0, 1) and ProjectionIterations be >= 1");
+  }
+  if (!std::isfinite(P.emitterDensity) || !std::isfinite(P.emitterTemperature) || !std::isfinite(P.emitterSpeed) ||
+      !std::isfinite(P.buoyancyDensity) || !std::isfinite(P.buoyancyHeat) || !std::isfinite(P.ambientTemperature))
+  {
+    throw std::invalid_argument("Stable Fluids: the emitter's and the buoyancy's values must be finite");
+  }
   this->Grid.resize(P.resolution[0], P.resolution[1], P.resolution[2], P.cellSize);
   std::copy(P.origin, P.origin + 3, this->Grid.origin.begin());
+  std::copy(P.open, P.open + 6, this->Grid.open.begin());
+  std::fill(this->Grid.temperature.values.begin(), this->Grid.temperature.values.end(), P.ambientTemperature);
 }
 
 void StableFluids::applySources(double dt)
 {
   (void)dt;
+  StaggeredGrid& g = this->Grid;
+  const double hot = P.ambientTemperature + P.emitterTemperature;
+  auto inject = [&](std::size_t cell)
+  {
+    g.density.values[cell] = std::max(g.density.values[cell], P.emitterDensity);
+    g.temperature.values[cell] = std::max(g.temperature.values[cell], hot);
+  };
+  // Point sources: the cell holding each point, and the faces of that cell get the speed.
+  GridArray* faces[3] = { &g.u, &g.v, &g.w };
+  for (std::size_t n = 0; n + 2 < this->PointSources.size(); n += 3)
+  {
+    int c[3];
+    bool inside = true;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const double s = (this->PointSources[n + axis] - g.origin[axis]) / g.h;
+      const int dims[3] = { g.nx, g.ny, g.nz };
+      inside = inside && std::isfinite(s) && s >= 0.0 && s < dims[axis];
+      c[axis] = inside ? static_cast<int>(s) : 0;
+    }
+    if (!inside)
+    {
+      continue;
+    }
+    inject(g.density.index(c[0], c[1], c[2]));
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const double speed = -P.emitterSpeed * P.gravityDirection[axis];
+      if (speed != 0.0)
+      {
+        int hi[3] = { c[0], c[1], c[2] };
+        ++hi[axis];
+        faces[axis]->at(c[0], c[1], c[2]) = speed;
+        faces[axis]->at(hi[0], hi[1], hi[2]) = speed;
+      }
+    }
+  }
   if (!P.emitter)
   {
     return;
   }
-  StaggeredGrid& g = this->Grid;
   auto inside = [&](const GridArray& a, int i, int j, int k)
   {
     const int idx[3] = { i, j, k };
@@ -57,17 +105,16 @@ void StableFluids::applySources(double dt)
     }
     return true;
   };
+#pragma omp parallel for schedule(static)
   for (int k = 0; k < g.nz; ++k)
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i)
       {
         if (inside(g.density, i, j, k))
         {
-          g.density.at(i, j, k) = std::max(g.density.at(i, j, k), P.emitterDensity);
-          g.temperature.at(i, j, k) = std::max(g.temperature.at(i, j, k), P.ambientTemperature + P.emitterTemperature);
+          inject(g.density.index(i, j, k));
         }
       }
-  GridArray* faces[3] = { &g.u, &g.v, &g.w };
   for (int axis = 0; axis < 3; ++axis)
   {
     const double speed = -P.emitterSpeed * P.gravityDirection[axis];
@@ -76,6 +123,7 @@ void StableFluids::applySources(double dt)
       continue;
     }
     GridArray& f = *faces[axis];
+#pragma omp parallel for schedule(static)
     for (int k = 0; k < f.dims[2]; ++k)
       for (int j = 0; j < f.dims[1]; ++j)
         for (int i = 0; i < f.dims[0]; ++i)
@@ -143,6 +191,7 @@ void StableFluids::confineVorticity(double dt)
     comp.assign(n, 0.0);
   }
   const GridArray& cell = g.density;
+#pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
@@ -166,6 +215,7 @@ void StableFluids::confineVorticity(double dt)
   {
     comp.assign(n, 0.0);
   }
+#pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
@@ -182,6 +232,7 @@ void StableFluids::confineVorticity(double dt)
   {
     comp.assign(n, 0.0);
   }
+#pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
@@ -202,7 +253,8 @@ void StableFluids::confineVorticity(double dt)
         force[1][id] = scale * (N[2] * omega[0][id] - N[0] * omega[2][id]);
         force[2][id] = scale * (N[0] * omega[1][id] - N[1] * omega[0][id]);
       }
-  // Onto the interior faces: the mean of the two cells' forces.
+      // Onto the interior faces: the mean of the two cells' forces.
+#pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
@@ -226,18 +278,10 @@ void StableFluids::step(double dt)
   StaggeredGrid& g = this->Grid;
   this->applySources(dt);
   this->applyForces(dt);
-  closeWalls(g);
-  // Every field is carried by the same (old) velocity.
-  GridArray u = advect(g.u, g, dt, P.macCormack);
-  GridArray v = advect(g.v, g, dt, P.macCormack);
-  GridArray w = advect(g.w, g, dt, P.macCormack);
-  GridArray density = advect(g.density, g, dt, P.macCormack);
-  GridArray temperature = advect(g.temperature, g, dt, P.macCormack);
-  g.u = std::move(u);
-  g.v = std::move(v);
-  g.w = std::move(w);
-  g.density = std::move(density);
-  g.temperature = std::move(temperature);
+  setBoundaryVelocities(g);
+  // Every field is carried by the same (old) velocity: the scalars first.
+  advectScalars(g, { { &g.density, 0.0 }, { &g.temperature, P.ambientTemperature } }, dt, P.macCormack, P.conservative);
+  advectVelocity(g, dt, P.macCormack);
   if (P.viscosity > 0.0)
   {
     for (GridArray* f : { &g.u, &g.v, &g.w })
@@ -250,7 +294,12 @@ void StableFluids::step(double dt)
     diffuse(g.density, g.h, P.diffusivity, dt);
     diffuse(g.temperature, g.h, P.diffusivity, dt);
   }
-  this->Projection = project(g, dt, P.projectionTolerance, P.projectionIterations);
+  ProjectionOptions options;
+  options.tolerance = P.projectionTolerance;
+  options.maxIterations = P.projectionIterations;
+  options.preconditioner = P.preconditioner;
+  options.warmStart = true;
+  this->Projection = project(g, dt, options);
 }
 
 double StableFluids::totalDensity() const

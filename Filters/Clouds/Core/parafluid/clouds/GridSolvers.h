@@ -1,39 +1,67 @@
 #pragma once
 // The numerical kernels of the stable-fluids step on a StaggeredGrid (no state of their own):
-// trilinear sampling, semi-Lagrangian advection (Stam 1999) with the optional MacCormack
-// correction (Selle et al. 2008), the discrete divergence, and the pressure projection solved
-// matrix-free by conjugate gradients with a Jacobi preconditioner. All boundaries are closed
-// walls: the normal velocity on the box's faces is zero, the pressure's normal derivative too.
+// semi-Lagrangian advection (Stam 1999) with the optional MacCormack correction (Selle et al.
+// 2008) and a conservative variant for the scalars, the discrete divergence, the boundary
+// velocities (closed walls or open faces), the pressure projection by conjugate gradients
+// preconditioned with a multigrid V-cycle (MGPCG, McAdams et al. 2010) or Jacobi, and implicit
+// diffusion. Positions in metres, velocities in m/s, times in s.
 #include "parafluid/clouds/StaggeredGrid.h"
+
+#include <vector>
 
 namespace parafluid::clouds
 {
-/// Trilinear value of `a` at the point p [m] (clamped into the array's samples); when `lo`/`hi`
-/// are given, also the smallest and largest of the 8 samples it blends.
-double sampleTrilinear(const GridArray& a, const StaggeredGrid& grid, const double p[3], double* lo = nullptr,
-                       double* hi = nullptr);
-/// The velocity [m/s] at p [m].
-void sampleVelocity(const StaggeredGrid& grid, const double p[3], double velocity[3]);
-
 /// `field` carried by the grid's velocity over dt [s] (may be negative): each sample traced back
-/// along the flow (midpoint rule) and read there. MacCormack: a forward and a backward trace,
-/// half the round trip's error added back, clamped to the samples the forward trace blended
-/// (so it cannot overshoot); keeps sharp features sharp where plain tracing smears them.
+/// along the flow and read there (trilinear, clamped at the box). MacCormack: a forward and a
+/// backward trace, half the round trip's error added back, clamped to the samples the backward
+/// trace blended (so it cannot overshoot); keeps sharp features sharp where plain tracing smears
+/// them. Not conservative: see advectScalars.
 GridArray advect(const GridArray& field, const StaggeredGrid& grid, double dt, bool macCormack);
+
+/// The three velocity components carried by the (old) velocity.
+void advectVelocity(StaggeredGrid& grid, double dt, bool macCormack);
+
+struct ScalarField
+{
+  GridArray* field;     // cell-centred
+  double ambient = 0.0; // the value outside open faces, and the level conservation is about
+};
+/// Cell-centred scalars carried by the grid's velocity, sharing one trace. `conservative`: the
+/// total of (value - ambient) is kept exactly with closed walls (each source cell's content
+/// shared out among the cells whose traces draw from it, after Lentine et al. 2011), and with
+/// MacCormack the sharper high-order result is blended back to that total cell by cell
+/// (a mass fixer after Priestley 1993: each cell stays between its low- and high-order values).
+void advectScalars(const StaggeredGrid& grid, const std::vector<ScalarField>& fields, double dt, bool macCormack,
+                   bool conservative);
 
 /// Outflow minus inflow of each cell's faces divided by h [1/s].
 std::vector<double> divergence(const StaggeredGrid& grid);
-/// The zero-normal-velocity walls: the box faces' normal components set to 0.
-void closeWalls(StaggeredGrid& grid);
+/// The box faces' normal velocities: zero on closed faces, continued from inside on open ones.
+void setBoundaryVelocities(StaggeredGrid& grid);
 
 struct SolveReport
 {
   int iterations = 0;
-  double residual = 0.0; // final residual's 2-norm relative to the right-hand side's
+  // The final residual's 2-norm relative to the right-hand side's, or (the projection) to the
+  // right-hand side a velocity field of the same RMS would make, whichever is larger.
+  double residual = 0.0;
 };
-/// Makes the velocity divergence-free: solves the pressure's Poisson equation (7-point Laplacian
-/// with Neumann walls) to a relative residual `tolerance` in at most `maxIterations` PCG
-/// iterations, and subtracts the pressure gradient from the face velocities.
+enum class Preconditioner
+{
+  Multigrid, // one symmetric V-cycle per iteration (MGPCG)
+  Jacobi     // the diagonal: cheap iterations, many more of them
+};
+struct ProjectionOptions
+{
+  double tolerance = 1e-10; // relative residual
+  int maxIterations = 2000;
+  Preconditioner preconditioner = Preconditioner::Multigrid;
+  bool warmStart = false; // start from the grid's last pressure
+};
+/// Makes the velocity divergence-free: solves the pressure's Poisson equation (7-point Laplacian,
+/// zero normal derivative at closed walls, zero pressure beyond open faces) and subtracts the
+/// pressure gradient from the face velocities; the pressure is left in grid.pressure.
+SolveReport project(StaggeredGrid& grid, double dt, const ProjectionOptions& options);
 SolveReport project(StaggeredGrid& grid, double dt, double tolerance = 1e-10, int maxIterations = 2000);
 
 /// Implicit diffusion of `field` (samples of its own dims, Neumann ends): solves

@@ -5,9 +5,10 @@
 //  2. forces: buoyancy w += dt (-alpha density + beta (T - ambient)) (Fedkiw, Stam & Jensen
 //     2001), and vorticity confinement f = epsilon h (N x omega), N the unit gradient of |omega|
 //     (same paper), which puts back the small swirls the grid's numerical diffusion takes out;
-//  3. advection of velocity, density and temperature (semi-Lagrangian, optionally MacCormack);
+//  3. advection of velocity, density and temperature (semi-Lagrangian, optionally MacCormack;
+//     the scalars conservatively);
 //  4. implicit diffusion (viscosity of the velocity, diffusivity of the scalars);
-//  5. projection to zero divergence (closed walls).
+//  5. projection to zero divergence (MGPCG from the last step's pressure).
 // Unconditionally stable in dt: the tracing reads values that exist, the solves are implicit.
 #include "parafluid/clouds/GridSolvers.h"
 #include "parafluid/clouds/StaggeredGrid.h"
@@ -20,8 +21,10 @@ struct StableFluidsParameters
   double cellSize = 0.1;              // [m]
   double origin[3] = { 0.0, 0.0, 0.0 };
   bool macCormack = true;
-  double viscosity = 0.0;          // kinematic [m^2/s]; 0: no diffusion solve
-  double diffusivity = 0.0;        // of density and temperature [m^2/s]
+  bool conservative = true; // density and temperature: conserved exactly with closed walls
+  bool open[6] = { false, false, false, false, false, false }; // xmin, xmax, ymin, ymax, zmin, zmax
+  double viscosity = 0.0;                                      // kinematic [m^2/s]; 0: no diffusion solve
+  double diffusivity = 0.0;                                    // of density and temperature [m^2/s]
   double buoyancyDensity = 0.05;   // alpha [m/s^2 per unit density]: density weighs the air down
   double buoyancyHeat = 0.2;       // beta [m/s^2 per K]: heat lifts it
   double ambientTemperature = 0.0; // [K] (relative)
@@ -32,8 +35,11 @@ struct StableFluidsParameters
   double emitterDensity = 1.0;
   double emitterTemperature = 10.0; // [K] above ambient
   double emitterSpeed = 0.0;        // [m/s] along minus gravity
-  double projectionTolerance = 1e-8;
+  // The pressure solve's relative residual: the divergence left is this fraction of the
+  // divergence the step's forces and advection made.
+  double projectionTolerance = 1e-5;
   int projectionIterations = 1000;
+  Preconditioner preconditioner = Preconditioner::Multigrid;
 };
 
 class StableFluids
@@ -43,6 +49,9 @@ public:
   /// than 2^27 cells), a non-positive or non-finite cell size, dt, or negative coefficients.
   explicit StableFluids(const StableFluidsParameters& parameters);
   void step(double dt);
+  /// Points [m] (x, y, z, ...) that inject like the emitter box, into the cell holding each one,
+  /// every step (e.g. particles, or a terrain's valleys); cleared by an empty list.
+  void setPointSources(std::vector<double> xyz) { this->PointSources = std::move(xyz); }
   const StaggeredGrid& grid() const { return this->Grid; }
   StaggeredGrid& grid() { return this->Grid; }
   const SolveReport& lastProjection() const { return this->Projection; }
@@ -58,5 +67,6 @@ private:
   StableFluidsParameters P;
   StaggeredGrid Grid;
   SolveReport Projection;
+  std::vector<double> PointSources;
 };
 } // namespace parafluid::clouds

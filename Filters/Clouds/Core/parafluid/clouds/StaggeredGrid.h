@@ -36,6 +36,10 @@ struct StaggeredGrid
   std::array<double, 3> origin{ 0.0, 0.0, 0.0 };
   GridArray u, v, w;              // [m/s] on the x, y and z faces
   GridArray density, temperature; // [1], [K] at the centres
+  GridArray pressure;             // [m^2/s^2] (pressure over density) at the centres, the last projection's
+  /// Which box faces are open (xmin, xmax, ymin, ymax, zmin, zmax): air flows through them freely
+  /// (zero pressure outside, ambient scalars flow in); the others are closed walls.
+  std::array<bool, 6> open{ false, false, false, false, false, false };
 
   void resize(int x, int y, int z, double cell)
   {
@@ -48,7 +52,9 @@ struct StaggeredGrid
     w.resize(x, y, z + 1, { 0.5, 0.5, 0.0 });
     density.resize(x, y, z, { 0.5, 0.5, 0.5 });
     temperature.resize(x, y, z, { 0.5, 0.5, 0.5 });
+    pressure.resize(x, y, z, { 0.5, 0.5, 0.5 });
   }
+  bool anyOpen() const { return open[0] || open[1] || open[2] || open[3] || open[4] || open[5]; }
   std::size_t cells() const { return static_cast<std::size_t>(nx) * ny * nz; }
 };
 } // namespace parafluid::clouds

@@ -1,0 +1,103 @@
+#include "ConjugateGradients.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace parafluid::clouds::detail
+{
+namespace
+{
+double dot(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double sum = 0.0;
+  const long long n = static_cast<long long>(a.size());
+#pragma omp parallel for reduction(+ : sum) schedule(static)
+  for (long long i = 0; i < n; ++i)
+  {
+    sum += a[i] * b[i];
+  }
+  return sum;
+}
+
+void subtractMean(std::vector<double>& v)
+{
+  double sum = 0.0;
+  const long long n = static_cast<long long>(v.size());
+#pragma omp parallel for reduction(+ : sum) schedule(static)
+  for (long long i = 0; i < n; ++i)
+  {
+    sum += v[i];
+  }
+  const double mean = sum / static_cast<double>(n);
+#pragma omp parallel for schedule(static)
+  for (long long i = 0; i < n; ++i)
+  {
+    v[i] -= mean;
+  }
+}
+} // namespace
+
+SolveReport conjugateGradients(const LinearMap& A, const LinearMap& preconditioner, const std::vector<double>& b,
+                               std::vector<double>& x, double tolerance, int maxIterations, bool removeMean,
+                               double scale)
+{
+  const long long n = static_cast<long long>(b.size());
+  std::vector<double> r(n), z(n), p(n), q(n);
+  A(x, q);
+#pragma omp parallel for schedule(static)
+  for (long long i = 0; i < n; ++i)
+  {
+    r[i] = b[i] - q[i];
+  }
+  const double bNorm = std::max(std::sqrt(dot(b, b)), scale);
+  SolveReport report;
+  if (bNorm == 0.0)
+  {
+    std::fill(x.begin(), x.end(), 0.0);
+    return report;
+  }
+  report.residual = std::sqrt(dot(r, r)) / bNorm;
+  if (report.residual <= tolerance)
+  {
+    return report;
+  }
+  preconditioner(r, z);
+  if (removeMean)
+  {
+    subtractMean(z);
+  }
+  p = z;
+  double rz = dot(r, z);
+  while (report.residual > tolerance && report.iterations < maxIterations)
+  {
+    A(p, q);
+    const double alpha = rz / dot(p, q);
+#pragma omp parallel for schedule(static)
+    for (long long i = 0; i < n; ++i)
+    {
+      x[i] += alpha * p[i];
+      r[i] -= alpha * q[i];
+    }
+    ++report.iterations;
+    report.residual = std::sqrt(dot(r, r)) / bNorm;
+    if (report.residual <= tolerance)
+    {
+      break;
+    }
+    preconditioner(r, z);
+    if (removeMean)
+    {
+      subtractMean(z);
+    }
+    const double rzNext = dot(r, z);
+    const double beta = rzNext / rz;
+#pragma omp parallel for schedule(static)
+    for (long long i = 0; i < n; ++i)
+    {
+      p[i] = z[i] + beta * p[i];
+    }
+    rz = rzNext;
+  }
+  return report;
+}
+} // namespace parafluid::clouds::detail

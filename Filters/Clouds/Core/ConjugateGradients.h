@@ -1,0 +1,21 @@
+#pragma once
+// Preconditioned conjugate gradients, matrix-free: the operator and the preconditioner are
+// callables y = f(x) over std::vector<double>. The projection (multigrid or Jacobi
+// preconditioner) and the implicit diffusion (Jacobi) use it.
+#include "parafluid/clouds/GridSolvers.h"
+
+#include <functional>
+#include <vector>
+
+namespace parafluid::clouds::detail
+{
+using LinearMap = std::function<void(const std::vector<double>&, std::vector<double>&)>;
+
+/// Solves A x = b from the x given to a relative residual |b - A x| / max(|b|, scale) <=
+/// tolerance (`scale` keeps a right-hand side at rounding level from asking the impossible). With
+/// `removeMean` (a singular A whose null space is the constants, e.g. closed walls) the
+/// preconditioned residual's mean is removed each iteration.
+SolveReport conjugateGradients(const LinearMap& A, const LinearMap& preconditioner, const std::vector<double>& b,
+                               std::vector<double>& x, double tolerance, int maxIterations, bool removeMean,
+                               double scale = 0.0);
+} // namespace parafluid::clouds::detail

@@ -1,0 +1,180 @@
+#pragma once
+// Trilinear sampling of a GridArray at a point given in cell units (x / h from the grid's
+// origin), the inner loop of the advection: the 8 corners and weights are found once and can be
+// applied to several arrays of the same layout (density and temperature share their trace).
+#include "parafluid/clouds/StaggeredGrid.h"
+
+#include <algorithm>
+#include <cstddef>
+
+namespace parafluid::clouds::detail
+{
+struct Trilinear
+{
+  std::size_t index[8];
+  double weight[8];
+  /// Weight that fell outside the array across an open face (read as the ambient value).
+  double outside = 0.0;
+
+  double apply(const double* data) const
+  {
+    double sum = 0.0;
+    for (int c = 0; c < 8; ++c)
+    {
+      sum += weight[c] * data[index[c]];
+    }
+    return sum;
+  }
+  void range(const double* data, double& lo, double& hi) const
+  {
+    lo = hi = data[index[0]];
+    for (int c = 1; c < 8; ++c)
+    {
+      lo = std::min(lo, data[index[c]]);
+      hi = std::max(hi, data[index[c]]);
+    }
+  }
+};
+
+/// Corners and weights of `a` at p (cell units), clamped at the array's ends: the hot path.
+inline Trilinear locateClamped(const GridArray& a, const double p[3])
+{
+  int base[3];
+  double frac[3];
+  std::size_t step[3];
+  const std::size_t stride[3] = { 1, static_cast<std::size_t>(a.dims[0]),
+                                  static_cast<std::size_t>(a.dims[0]) * static_cast<std::size_t>(a.dims[1]) };
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const int n = a.dims[axis];
+    const double c = std::clamp(p[axis] - a.offset[axis], 0.0, static_cast<double>(n - 1));
+    base[axis] = std::min(static_cast<int>(c), std::max(n - 2, 0));
+    frac[axis] = c - base[axis];
+    step[axis] = n > 1 ? stride[axis] : 0;
+  }
+  Trilinear t;
+  const std::size_t origin = base[0] + stride[1] * base[1] + stride[2] * base[2];
+  const double fx = frac[0], fy = frac[1], fz = frac[2];
+  const double wy[2] = { 1.0 - fy, fy }, wz[2] = { 1.0 - fz, fz };
+  for (int c = 0; c < 8; ++c)
+  {
+    const int dx = c & 1, dy = (c >> 1) & 1, dz = (c >> 2) & 1;
+    t.index[c] = origin + dx * step[0] + dy * step[1] + dz * step[2];
+    t.weight[c] = (dx ? fx : 1.0 - fx) * wy[dy] * wz[dz];
+  }
+  t.outside = 0.0;
+  return t;
+}
+
+/// Corners and weights of `a` at p (cell units). Beyond the samples the array is clamped (its
+/// edge value continues), except across the faces flagged in `open` (xmin, xmax, ...) when given:
+/// there a point more than half a cell outside the last sample weighs `outside` instead.
+inline Trilinear locate(const GridArray& a, const double p[3], const bool* open = nullptr)
+{
+  if (!open)
+  {
+    return locateClamped(a, p);
+  }
+  int base[3], next[3];
+  double frac[3], inside[3][2];
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const int n = a.dims[axis];
+    const double s = p[axis] - a.offset[axis];
+    inside[axis][0] = inside[axis][1] = 1.0;
+    const double c = std::clamp(s, 0.0, static_cast<double>(n - 1));
+    base[axis] = std::min(static_cast<int>(c), std::max(n - 2, 0));
+    next[axis] = std::min(base[axis] + 1, n - 1);
+    frac[axis] = n > 1 ? c - base[axis] : 0.0;
+    if (open)
+    {
+      // Ambient outside an open face: the weight of the missing sample beyond the edge.
+      if (open[2 * axis] && s < 0.0)
+      {
+        frac[axis] = 0.0;
+        inside[axis][0] = std::max(0.0, 1.0 + s);
+      }
+      else if (open[2 * axis + 1] && s > n - 1)
+      {
+        frac[axis] = 1.0;
+        inside[axis][1] = std::max(0.0, 1.0 - (s - (n - 1)));
+      }
+    }
+  }
+  Trilinear t;
+  double total = 0.0;
+  const std::size_t sy = static_cast<std::size_t>(a.dims[0]), sz = sy * static_cast<std::size_t>(a.dims[1]);
+  for (int c = 0; c < 8; ++c)
+  {
+    const int d[3] = { c & 1, (c >> 1) & 1, (c >> 2) & 1 };
+    double w = 1.0;
+    std::size_t idx = 0;
+    const std::size_t stride[3] = { 1, sy, sz };
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      w *= (d[axis] ? frac[axis] : 1.0 - frac[axis]) * inside[axis][d[axis]];
+      idx += stride[axis] * static_cast<std::size_t>(d[axis] ? next[axis] : base[axis]);
+    }
+    t.index[c] = idx;
+    t.weight[c] = w;
+    total += w;
+  }
+  t.outside = 1.0 - total;
+  return t;
+}
+
+/// The velocity [m/s] at p (cell units).
+inline void velocityAt(const StaggeredGrid& g, const double p[3], double v[3])
+{
+  v[0] = locateClamped(g.u, p).apply(g.u.values.data());
+  v[1] = locateClamped(g.v, p).apply(g.v.values.data());
+  v[2] = locateClamped(g.w, p).apply(g.w.values.data());
+}
+
+/// The velocity [m/s] at the samples of an array laid out as `a` (a face array or the cells):
+/// the trilinear value there, from the one, two or four samples of each component around it.
+class SampleVelocity
+{
+public:
+  SampleVelocity(const StaggeredGrid& g, const GridArray& a)
+    : G(g)
+  {
+    const GridArray* faces[3] = { &g.u, &g.v, &g.w };
+    for (int c = 0; c < 3; ++c)
+    {
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        const double d = a.offset[axis] - faces[c]->offset[axis];
+        Shift[c][axis] = d == 0.0 ? 0 : (d > 0.0 ? 1 : -1);
+      }
+    }
+  }
+  void at(int i, int j, int k, double v[3]) const
+  {
+    const GridArray* faces[3] = { &G.u, &G.v, &G.w };
+    const int idx[3] = { i, j, k };
+    for (int c = 0; c < 3; ++c)
+    {
+      const GridArray& f = *faces[c];
+      // Along each axis: on f's samples (one), or between idx and idx + 1 (a centre between
+      // faces), or between idx - 1 and idx (a face between centres), clamped at the ends.
+      int lo[3], hi[3];
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        const int shift = Shift[c][axis];
+        lo[axis] = shift < 0 ? std::max(idx[axis] - 1, 0) : idx[axis];
+        hi[axis] = shift > 0 ? idx[axis] + 1 : std::min(idx[axis], f.dims[axis] - 1);
+      }
+      const double* data = f.values.data();
+      const std::size_t sy = static_cast<std::size_t>(f.dims[0]), sz = sy * f.dims[1];
+      const std::size_t y0 = lo[1] * sy, y1 = hi[1] * sy, z0 = lo[2] * sz, z1 = hi[2] * sz;
+      v[c] = 0.125 * (data[lo[0] + y0 + z0] + data[hi[0] + y0 + z0] + data[lo[0] + y1 + z0] + data[hi[0] + y1 + z0] +
+                      data[lo[0] + y0 + z1] + data[hi[0] + y0 + z1] + data[lo[0] + y1 + z1] + data[hi[0] + y1 + z1]);
+    }
+  }
+
+private:
+  const StaggeredGrid& G;
+  int Shift[3][3];
+};
+} // namespace parafluid::clouds::detail

@@ -1,0 +1,38 @@
+#pragma once
+// A geometric multigrid V-cycle for the pressure's Poisson equation on a box of cells, used as
+// the preconditioner of conjugate gradients (MGPCG, McAdams, Sifakis & Teran 2010): red-black
+// Gauss-Seidel smoothing (red then black before the coarse correction, black then red after, so
+// the cycle is a symmetric operator), cells merged 2 x 2 x 2 per level down to 4 per axis,
+// piecewise-constant transfer. The operator on every level is h^2 times the negative Laplacian:
+// (A x)_c = sum over the neighbours n of (x_c - x_n), plus x_c per open face (zero pressure
+// beyond it); closed faces add nothing (zero normal derivative).
+#include <array>
+#include <vector>
+
+namespace parafluid::clouds::detail
+{
+class PoissonMultigrid
+{
+public:
+  /// `maxLevels` 1 builds the operator alone (no cycle), as the diffusion solve needs.
+  PoissonMultigrid(const std::array<int, 3>& dims, const std::array<bool, 6>& open, int maxLevels = 32);
+  /// z = one V-cycle from zero applied to r.
+  void apply(const std::vector<double>& r, std::vector<double>& z);
+  /// y = A x on the finest level.
+  void multiply(const std::vector<double>& x, std::vector<double>& y) const;
+  const std::vector<unsigned char>& diagonal() const { return this->Levels.front().diagonal; }
+  int levels() const { return static_cast<int>(this->Levels.size()); }
+
+  struct Level
+  {
+    std::array<int, 3> n;
+    std::vector<double> x, b, r;
+    std::vector<unsigned char> diagonal; // A's diagonal (neighbours + open faces), 1 to 6
+  };
+
+private:
+  void vcycle(std::size_t level);
+  std::array<bool, 6> Open;
+  std::vector<Level> Levels;
+};
+} // namespace parafluid::clouds::detail

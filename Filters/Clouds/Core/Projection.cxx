@@ -1,0 +1,154 @@
+// The discrete divergence, the boundary velocities, and the pressure projection (MGPCG by default).
+#include "ConjugateGradients.h"
+#include "PoissonMultigrid.h"
+#include "parafluid/clouds/GridSolvers.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace parafluid::clouds
+{
+std::vector<double> divergence(const StaggeredGrid& g)
+{
+  std::vector<double> div(g.cells());
+#pragma omp parallel for schedule(static)
+  for (int k = 0; k < g.nz; ++k)
+  {
+    for (int j = 0; j < g.ny; ++j)
+    {
+      for (int i = 0; i < g.nx; ++i)
+      {
+        div[g.density.index(i, j, k)] = (g.u.at(i + 1, j, k) - g.u.at(i, j, k) + g.v.at(i, j + 1, k) - g.v.at(i, j, k) +
+                                         g.w.at(i, j, k + 1) - g.w.at(i, j, k)) /
+                                        g.h;
+      }
+    }
+  }
+  return div;
+}
+
+void setBoundaryVelocities(StaggeredGrid& g)
+{
+  // Closed: no flow through the face. Open: the face's velocity continues the one inside it.
+  auto set = [&](bool open, double& face, double inner) { face = open ? inner : 0.0; };
+  for (int k = 0; k < g.nz; ++k)
+    for (int j = 0; j < g.ny; ++j)
+    {
+      set(g.open[0], g.u.at(0, j, k), g.u.at(1, j, k));
+      set(g.open[1], g.u.at(g.nx, j, k), g.u.at(g.nx - 1, j, k));
+    }
+  for (int k = 0; k < g.nz; ++k)
+    for (int i = 0; i < g.nx; ++i)
+    {
+      set(g.open[2], g.v.at(i, 0, k), g.v.at(i, 1, k));
+      set(g.open[3], g.v.at(i, g.ny, k), g.v.at(i, g.ny - 1, k));
+    }
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i)
+    {
+      set(g.open[4], g.w.at(i, j, 0), g.w.at(i, j, 1));
+      set(g.open[5], g.w.at(i, j, g.nz), g.w.at(i, j, g.nz - 1));
+    }
+}
+
+SolveReport project(StaggeredGrid& g, double dt, const ProjectionOptions& options)
+{
+  setBoundaryVelocities(g);
+  // New face velocity u - dt/h (p_right - p_left) makes each cell's outflow sum zero when
+  // A p = -(h^2 / dt) div, A = h^2 times the negative Laplacian (PoissonMultigrid's operator).
+  const std::vector<double> div = divergence(g);
+  const bool closed = !g.anyOpen();
+  std::vector<double> b(div.size());
+  double mean = 0.0;
+  for (std::size_t c = 0; c < div.size(); ++c)
+  {
+    b[c] = -(g.h * g.h / dt) * div[c];
+    mean += b[c];
+  }
+  mean /= static_cast<double>(b.size());
+  if (closed)
+  {
+    for (double& value : b)
+    {
+      value -= mean; // closed walls: consistent up to rounding
+    }
+  }
+  const std::array<int, 3> dims{ g.nx, g.ny, g.nz };
+  detail::PoissonMultigrid multigrid(dims, g.open);
+  std::vector<double> p = options.warmStart ? g.pressure.values : std::vector<double>(b.size(), 0.0);
+  detail::LinearMap A = [&](const std::vector<double>& x, std::vector<double>& y) { multigrid.multiply(x, y); };
+  detail::LinearMap preconditioner;
+  if (options.preconditioner == Preconditioner::Multigrid)
+  {
+    preconditioner = [&](const std::vector<double>& r, std::vector<double>& z) { multigrid.apply(r, z); };
+  }
+  else
+  {
+    // Jacobi: the diagonal (the neighbour count plus the open faces).
+    std::vector<double> diagonal(multigrid.diagonal().begin(), multigrid.diagonal().end());
+    preconditioner = [diagonal](const std::vector<double>& r, std::vector<double>& z)
+    {
+      for (std::size_t c = 0; c < r.size(); ++c)
+      {
+        z[c] = r[c] / diagonal[c];
+      }
+    };
+  }
+  // The scale of the right-hand side a velocity field of this size would make: a field already
+  // nearly divergence-free is solved to the tolerance of that, not of its rounding errors.
+  double speed2 = 0.0;
+  for (const GridArray* f : { &g.u, &g.v, &g.w })
+  {
+    for (double value : f->values)
+    {
+      speed2 += value * value;
+    }
+  }
+  const double scale = (g.h / dt) * std::sqrt(speed2 / 3.0);
+  const SolveReport report =
+    detail::conjugateGradients(A, preconditioner, b, p, options.tolerance, options.maxIterations, closed, scale);
+  const double step = dt / g.h;
+  const GridArray& cell = g.density;
+  auto pressure = [&](int i, int j, int k) { return p[cell.index(i, j, k)]; };
+#pragma omp parallel for schedule(static)
+  for (int k = 0; k < g.nz; ++k)
+  {
+    for (int j = 0; j < g.ny; ++j)
+    {
+      for (int i = 0; i < g.nx; ++i)
+      {
+        const double pc = pressure(i, j, k);
+        if (i > 0)
+          g.u.at(i, j, k) -= step * (pc - pressure(i - 1, j, k));
+        if (j > 0)
+          g.v.at(i, j, k) -= step * (pc - pressure(i, j - 1, k));
+        if (k > 0)
+          g.w.at(i, j, k) -= step * (pc - pressure(i, j, k - 1));
+        // Open faces: zero pressure beyond them.
+        if (i == 0 && g.open[0])
+          g.u.at(0, j, k) -= step * pc;
+        if (i == g.nx - 1 && g.open[1])
+          g.u.at(g.nx, j, k) += step * pc;
+        if (j == 0 && g.open[2])
+          g.v.at(i, 0, k) -= step * pc;
+        if (j == g.ny - 1 && g.open[3])
+          g.v.at(i, g.ny, k) += step * pc;
+        if (k == 0 && g.open[4])
+          g.w.at(i, j, 0) -= step * pc;
+        if (k == g.nz - 1 && g.open[5])
+          g.w.at(i, j, g.nz) += step * pc;
+      }
+    }
+  }
+  g.pressure.values = std::move(p);
+  return report;
+}
+
+SolveReport project(StaggeredGrid& grid, double dt, double tolerance, int maxIterations)
+{
+  ProjectionOptions options;
+  options.tolerance = tolerance;
+  options.maxIterations = maxIterations;
+  return project(grid, dt, options);
+}
+} // namespace parafluid::clouds
