@@ -1,0 +1,300 @@
+#include "vtkPFStableFluids.h"
+
+#include "GuardedRequest.h"
+
+#include "parafluid/clouds/CloudShapes.h"
+#include "parafluid/clouds/GridSolvers.h"
+#include "parafluid/clouds/StableFluids.h"
+#include "parafluid/common/MemoryBudget.h"
+
+#include "vtkDataSet.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+
+using parafluid::clouds::StableFluids;
+using parafluid::clouds::StableFluidsParameters;
+using parafluid::clouds::StaggeredGrid;
+
+struct vtkPFStableFluids::Cache
+{
+  std::optional<StableFluids> Simulation;
+  long long OutputIndex = 0;
+  long long Steps = 0;
+  vtkMTimeType InputTime = 0, FilterTime = 0;
+};
+
+vtkStandardNewMacro(vtkPFStableFluids);
+
+vtkPFStableFluids::vtkPFStableFluids()
+  : Cached(std::make_unique<Cache>())
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(1);
+}
+
+vtkPFStableFluids::~vtkPFStableFluids() = default;
+
+int vtkPFStableFluids::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+bool vtkPFStableFluids::GridShape(int cells[3], double& h)
+{
+  h = 0.0;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double extent = this->Bounds[2 * axis + 1] - this->Bounds[2 * axis];
+    if (!(extent > 0.0) || !std::isfinite(extent))
+    {
+      vtkErrorMacro(<< "Stable Fluids: Bounds must have max > min on every axis (axis " << axis << ")");
+      return false;
+    }
+    if (this->Resolution[axis] < 2 || this->Resolution[axis] > 1024)
+    {
+      vtkErrorMacro(<< "Stable Fluids: Resolution must be 2 to 1024 cells per axis (got " << this->Resolution[axis]
+                    << ")");
+      return false;
+    }
+    h = std::max(h, extent / this->Resolution[axis]);
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double extent = this->Bounds[2 * axis + 1] - this->Bounds[2 * axis];
+    cells[axis] = std::clamp(static_cast<int>(std::lround(extent / h)), 2, this->Resolution[axis]);
+  }
+  return true;
+}
+
+int vtkPFStableFluids::RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  int cells[3];
+  double h;
+  if (!this->GridShape(cells, h))
+  {
+    return 0;
+  }
+  const int extent[6] = { 0, cells[0] - 1, 0, cells[1] - 1, 0, cells[2] - 1 };
+  const double origin[3] = { this->Bounds[0] + 0.5 * h, this->Bounds[2] + 0.5 * h, this->Bounds[4] + 0.5 * h };
+  const double spacing[3] = { h, h, h };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  outInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
+  outInfo->Set(vtkDataObject::SPACING(), spacing, 3);
+  const double interval =
+    this->OutputInterval > 0.0 && std::isfinite(this->OutputInterval) ? this->OutputInterval : 1.0;
+  std::vector<double> times(static_cast<std::size_t>(std::clamp(this->NumberOfOutputs, 0, 100000)) + 1);
+  for (std::size_t k = 0; k < times.size(); ++k)
+  {
+    times[k] = static_cast<double>(k) * interval;
+  }
+  const double range[2] = { times.front(), times.back() };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  return 1;
+}
+
+int vtkPFStableFluids::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  if (vtkInformation* inInfo = inputVector[0]->GetInformationObject(0))
+  {
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  }
+  return 1;
+}
+
+namespace
+{
+vtkFloatArray* newArray(const char* name, int components, vtkIdType tuples)
+{
+  vtkFloatArray* array = vtkFloatArray::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+} // namespace
+
+int vtkPFStableFluids::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                   vtkInformationVector* outputVector)
+{
+  return parafluid::vtk::guardedRequest(
+    this, "Stable Fluids",
+    [&]() -> int
+    {
+      vtkInformation* outInfo = outputVector->GetInformationObject(0);
+      vtkImageData* output = vtkImageData::GetData(outInfo);
+      int cells[3];
+      double h;
+      if (!this->GridShape(cells, h))
+      {
+        return 0;
+      }
+      const double interval = this->OutputInterval;
+      if (!(interval > 0.0) || !std::isfinite(interval) || !(this->TimeStep > 0.0) || !std::isfinite(this->TimeStep))
+      {
+        vtkErrorMacro(<< "Stable Fluids: TimeStep and OutputInterval must be positive numbers of seconds");
+        return 0;
+      }
+      if (this->NumberOfOutputs < 0 || this->NumberOfOutputs > 100000)
+      {
+        vtkErrorMacro(<< "Stable Fluids: NumberOfOutputs must be from 0 to 100000");
+        return 0;
+      }
+      const double cellCount = static_cast<double>(cells[0]) * cells[1] * cells[2];
+      // Faces, cells, the pressure, the advection's and the solver's work arrays: ~40 doubles a cell.
+      const std::string memory = parafluid::checkMemoryBudget(40.0 * 8.0 * cellCount, "the Stable Fluids grid");
+      if (!memory.empty())
+      {
+        vtkErrorMacro(<< "Stable Fluids: " << memory << "; lower Resolution");
+        return 0;
+      }
+      const double requested = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+                                 ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+                                 : 0.0;
+      const long long target = std::clamp<long long>(std::llround(requested / interval), 0, this->NumberOfOutputs);
+
+      vtkDataSet* sources = vtkDataSet::GetData(inputVector[0]);
+      Cache& cache = *this->Cached;
+      const vtkMTimeType inputTime = sources ? sources->GetMTime() : 0;
+      const bool reusable = cache.Simulation && cache.InputTime == inputTime && cache.FilterTime == this->GetMTime() &&
+                            cache.OutputIndex <= target;
+      if (!reusable)
+      {
+        cache.Simulation.reset();
+        StableFluidsParameters p;
+        std::copy(cells, cells + 3, p.resolution);
+        p.cellSize = h;
+        p.origin[0] = this->Bounds[0];
+        p.origin[1] = this->Bounds[2];
+        p.origin[2] = this->Bounds[4];
+        p.macCormack = this->MacCormack;
+        p.conservative = this->Conservative;
+        for (int f = 0; f < 6; ++f)
+        {
+          p.open[f] = this->OpenFaces[f] != 0;
+        }
+        p.viscosity = this->Viscosity;
+        p.diffusivity = this->Diffusivity;
+        p.buoyancyDensity = this->BuoyancyDensity;
+        p.buoyancyHeat = this->BuoyancyHeat;
+        p.ambientTemperature = this->AmbientTemperature;
+        p.vorticity = this->Vorticity;
+        p.emitter = this->Emitter;
+        std::copy(this->EmitterBox, this->EmitterBox + 6, p.emitterBox);
+        p.emitterDensity = this->EmitterDensity;
+        p.emitterTemperature = this->EmitterTemperature;
+        p.emitterSpeed = this->EmitterSpeed;
+        p.projectionTolerance = this->ProjectionTolerance;
+        p.preconditioner = this->Preconditioner == 1 ? parafluid::clouds::Preconditioner::Jacobi
+                                                     : parafluid::clouds::Preconditioner::Multigrid;
+        cache.Simulation.emplace(p);
+        if (this->ProceduralClouds)
+        {
+          parafluid::clouds::CloudShapeParameters shapes;
+          shapes.coverage = this->CloudCoverage;
+          shapes.featureSize = this->CloudFeatureSize;
+          shapes.seed = static_cast<std::uint64_t>(this->CloudSeed);
+          parafluid::clouds::fillCloudShapes(cache.Simulation->grid(), shapes);
+        }
+        if (sources && sources->GetNumberOfPoints() > 0)
+        {
+          std::vector<double> xyz(3 * static_cast<std::size_t>(sources->GetNumberOfPoints()));
+          for (vtkIdType n = 0; n < sources->GetNumberOfPoints(); ++n)
+          {
+            sources->GetPoint(n, &xyz[3 * n]);
+          }
+          cache.Simulation->setPointSources(std::move(xyz));
+        }
+        cache.OutputIndex = 0;
+        cache.Steps = 0;
+        cache.InputTime = inputTime;
+        cache.FilterTime = this->GetMTime();
+      }
+      // Every output interval in equal steps no longer than TimeStep.
+      const int substeps = std::max(1, static_cast<int>(std::ceil(interval / this->TimeStep - 1e-9)));
+      const double dt = interval / substeps;
+      const long long total = (target - cache.OutputIndex) * substeps;
+      for (long long s = 0; s < total; ++s)
+      {
+        cache.Simulation->step(dt);
+        ++cache.Steps;
+        if (s % 4 == 0)
+        {
+          this->UpdateProgress(static_cast<double>(s) / static_cast<double>(total));
+          if (this->CheckAbort())
+          {
+            cache.Simulation.reset();
+            return 1;
+          }
+        }
+      }
+      cache.OutputIndex = target;
+      this->LastSteps = cache.Steps;
+      this->LastIterations = cache.Simulation->lastProjection().iterations;
+
+      const StaggeredGrid& g = cache.Simulation->grid();
+      output->SetExtent(0, g.nx - 1, 0, g.ny - 1, 0, g.nz - 1);
+      output->SetOrigin(g.origin[0] + 0.5 * g.h, g.origin[1] + 0.5 * g.h, g.origin[2] + 0.5 * g.h);
+      output->SetSpacing(g.h, g.h, g.h);
+      const vtkIdType n = static_cast<vtkIdType>(g.cells());
+      vtkFloatArray* density = newArray("density", 1, n);
+      vtkFloatArray* temperature = newArray("temperature", 1, n);
+      vtkFloatArray* velocity = newArray("velocity", 3, n);
+      for (int k = 0; k < g.nz; ++k)
+        for (int j = 0; j < g.ny; ++j)
+          for (int i = 0; i < g.nx; ++i)
+          {
+            const vtkIdType id = static_cast<vtkIdType>(g.density.index(i, j, k));
+            density->SetValue(id, static_cast<float>(g.density.values[id]));
+            temperature->SetValue(id, static_cast<float>(g.temperature.values[id]));
+            // At the centre: the mean of the two faces of each axis.
+            velocity->SetTypedComponent(id, 0, static_cast<float>(0.5 * (g.u.at(i, j, k) + g.u.at(i + 1, j, k))));
+            velocity->SetTypedComponent(id, 1, static_cast<float>(0.5 * (g.v.at(i, j, k) + g.v.at(i, j + 1, k))));
+            velocity->SetTypedComponent(id, 2, static_cast<float>(0.5 * (g.w.at(i, j, k) + g.w.at(i, j, k + 1))));
+          }
+      vtkPointData* pd = output->GetPointData();
+      pd->AddArray(density);
+      pd->AddArray(temperature);
+      pd->AddArray(velocity);
+      pd->SetActiveScalars("density");
+      pd->SetActiveVectors("velocity");
+      density->Delete();
+      temperature->Delete();
+      velocity->Delete();
+      if (this->OutputDivergence)
+      {
+        const std::vector<double> div = parafluid::clouds::divergence(g);
+        vtkFloatArray* divergence = newArray("divergence", 1, n);
+        for (vtkIdType id = 0; id < n; ++id)
+        {
+          divergence->SetValue(id, static_cast<float>(div[id]));
+        }
+        pd->AddArray(divergence);
+        divergence->Delete();
+      }
+      output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), target * interval);
+      return 1;
+    });
+}
+
+void vtkPFStableFluids::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Resolution: " << this->Resolution[0] << " " << this->Resolution[1] << " " << this->Resolution[2]
+     << "\n";
+  os << indent << "TimeStep: " << this->TimeStep << "\n";
+}

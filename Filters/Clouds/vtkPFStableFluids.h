@@ -1,0 +1,151 @@
+/**
+ * @class vtkPFStableFluids
+ * @brief Source: clouds and smoke on a grid (Stam's stable fluids), stepped to the animation time.
+ *
+ * A box of cubic cells (Bounds, at most Resolution cells per axis) holds air whose velocity,
+ * density (cloud water or smoke) and temperature are stepped by parafluid::clouds::StableFluids:
+ * semi-Lagrangian advection (optionally MacCormack), buoyancy, vorticity confinement, implicit
+ * diffusion and a projection to zero divergence by multigrid-preconditioned CG. Density and heat
+ * come from an emitter box, from the points of an optional input dataset (particles, a terrain's
+ * valleys), and from an optional procedural start (cumulus shapes from 3-D noise).
+ *
+ * Output: vtkImageData with point data at the cells' centres: `density`, `temperature` [K],
+ * `velocity` [m/s] and, with OutputDivergence, `divergence` [1/s].
+ * Time-aware: outputs every OutputInterval seconds; going forward continues from the cached
+ * state, going back (or changing a property or the input) starts again from the beginning.
+ */
+#pragma once
+
+#include "ParaFluidCloudsFiltersModule.h"
+#include "vtkImageAlgorithm.h"
+
+#include <memory>
+
+class PARAFLUIDCLOUDSFILTERS_EXPORT vtkPFStableFluids : public vtkImageAlgorithm
+{
+public:
+  static vtkPFStableFluids* New();
+  vtkTypeMacro(vtkPFStableFluids, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Optional sources (port 0): the points of any dataset inject like the emitter.
+  void SetSourcesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(0, output); }
+
+  /// The box [m]: xmin, xmax, ymin, ymax, zmin, zmax.
+  vtkSetVector6Macro(Bounds, double);
+  vtkGetVector6Macro(Bounds, double);
+  /// Cells per axis at most; cells are cubes, so a shorter axis gets fewer.
+  vtkSetVector3Macro(Resolution, int);
+  vtkGetVector3Macro(Resolution, int);
+  /// Simulation step [s]; an output interval is covered in equal steps no longer than this.
+  vtkSetMacro(TimeStep, double);
+  vtkGetMacro(TimeStep, double);
+  vtkSetMacro(OutputInterval, double);
+  vtkGetMacro(OutputInterval, double);
+  vtkSetMacro(NumberOfOutputs, int);
+  vtkGetMacro(NumberOfOutputs, int);
+
+  vtkSetMacro(MacCormack, bool);
+  vtkGetMacro(MacCormack, bool);
+  vtkSetMacro(Conservative, bool);
+  vtkGetMacro(Conservative, bool);
+  /// Kinematic viscosity of the air and diffusivity of density and heat [m^2/s] (0: none).
+  vtkSetMacro(Viscosity, double);
+  vtkGetMacro(Viscosity, double);
+  vtkSetMacro(Diffusivity, double);
+  vtkGetMacro(Diffusivity, double);
+  /// Buoyancy: density weighs down [m/s^2 per unit density], heat lifts [m/s^2 per K].
+  vtkSetMacro(BuoyancyDensity, double);
+  vtkGetMacro(BuoyancyDensity, double);
+  vtkSetMacro(BuoyancyHeat, double);
+  vtkGetMacro(BuoyancyHeat, double);
+  vtkSetMacro(AmbientTemperature, double);
+  vtkGetMacro(AmbientTemperature, double);
+  /// Vorticity confinement strength epsilon (0: off).
+  vtkSetMacro(Vorticity, double);
+  vtkGetMacro(Vorticity, double);
+  /// Open faces (1) let air and smoke through; closed (0) are walls. xmin, xmax, ..., zmax.
+  vtkSetVector6Macro(OpenFaces, int);
+  vtkGetVector6Macro(OpenFaces, int);
+
+  vtkSetMacro(Emitter, bool);
+  vtkGetMacro(Emitter, bool);
+  vtkSetVector6Macro(EmitterBox, double);
+  vtkGetVector6Macro(EmitterBox, double);
+  vtkSetMacro(EmitterDensity, double);
+  vtkGetMacro(EmitterDensity, double);
+  /// [K] above ambient.
+  vtkSetMacro(EmitterTemperature, double);
+  vtkGetMacro(EmitterTemperature, double);
+  /// Upward speed the emitter blows [m/s].
+  vtkSetMacro(EmitterSpeed, double);
+  vtkGetMacro(EmitterSpeed, double);
+
+  /// Procedural start: cumulus shapes covering CloudCoverage of the sky.
+  vtkSetMacro(ProceduralClouds, bool);
+  vtkGetMacro(ProceduralClouds, bool);
+  vtkSetMacro(CloudCoverage, double);
+  vtkGetMacro(CloudCoverage, double);
+  /// Size of the cloud cells [m].
+  vtkSetMacro(CloudFeatureSize, double);
+  vtkGetMacro(CloudFeatureSize, double);
+  vtkSetMacro(CloudSeed, int);
+  vtkGetMacro(CloudSeed, int);
+
+  /// Relative residual of the pressure solve, and its preconditioner (0 multigrid, 1 Jacobi).
+  vtkSetMacro(ProjectionTolerance, double);
+  vtkGetMacro(ProjectionTolerance, double);
+  vtkSetMacro(Preconditioner, int);
+  vtkGetMacro(Preconditioner, int);
+  vtkSetMacro(OutputDivergence, bool);
+  vtkGetMacro(OutputDivergence, bool);
+
+  /// Steps and pressure-solve iterations of the last output (for tests and benchmarks).
+  long long GetLastStepCount() const { return this->LastSteps; }
+  int GetLastProjectionIterations() const { return this->LastIterations; }
+
+protected:
+  vtkPFStableFluids();
+  ~vtkPFStableFluids() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+private:
+  vtkPFStableFluids(const vtkPFStableFluids&) = delete;
+  void operator=(const vtkPFStableFluids&) = delete;
+  struct Cache;
+  std::unique_ptr<Cache> Cached;
+  /// The grid the properties ask for: cells per axis, cell size [m]; false with an error.
+  bool GridShape(int cells[3], double& h);
+
+  double Bounds[6] = { 0.0, 2.0, 0.0, 2.0, 0.0, 2.0 };
+  int Resolution[3] = { 64, 64, 64 };
+  double TimeStep = 0.02;
+  double OutputInterval = 0.1;
+  int NumberOfOutputs = 100;
+  bool MacCormack = true;
+  bool Conservative = true;
+  double Viscosity = 0.0;
+  double Diffusivity = 0.0;
+  double BuoyancyDensity = 0.05;
+  double BuoyancyHeat = 0.2;
+  double AmbientTemperature = 0.0;
+  double Vorticity = 0.3;
+  int OpenFaces[6] = { 0, 0, 0, 0, 0, 1 };
+  bool Emitter = true;
+  double EmitterBox[6] = { 0.8, 1.2, 0.8, 1.2, 0.0, 0.2 };
+  double EmitterDensity = 1.0;
+  double EmitterTemperature = 10.0;
+  double EmitterSpeed = 1.0;
+  bool ProceduralClouds = false;
+  double CloudCoverage = 0.4;
+  double CloudFeatureSize = 1.0;
+  int CloudSeed = 1;
+  double ProjectionTolerance = 1e-5;
+  int Preconditioner = 0;
+  bool OutputDivergence = false;
+  long long LastSteps = 0;
+  int LastIterations = 0;
+};
