@@ -59,29 +59,33 @@ void fillCloudShapes(StaggeredGrid& g, const CloudShapeParameters& p)
     std::min(sorted.size() - 1, static_cast<std::size_t>((1.0 - p.coverage) * static_cast<double>(sorted.size())));
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(rank), sorted.end());
   const double threshold = p.coverage >= 1.0 ? -1e30 : (p.coverage <= 0.0 ? 1e30 : sorted[rank]);
+  const double highest = *std::max_element(columns.begin(), columns.end());
   const double height = g.nz * g.h;
-  const double bottom = p.base + 0.2 * (p.top - p.base);
-  const double middle = p.base + 0.5 * (p.top - p.base);
 #pragma omp parallel for schedule(static)
   for (int k = 0; k < g.nz; ++k)
   {
     const double z = (k + 0.5) / g.nz;
-    const double profile = smoothStep(p.base, bottom, z) * (1.0 - smoothStep(middle, p.top, z));
     for (int j = 0; j < g.ny; ++j)
     {
       for (int i = 0; i < g.nx; ++i)
       {
         const double x = g.origin[0] + (i + 0.5) * g.h, y = g.origin[1] + (j + 0.5) * g.h;
         const double zm = g.origin[2] + z * height;
+        // How far inside the covered area (0 at the rim, 1 at the sky's densest column).
         const double c = columns[static_cast<std::size_t>(j) * g.nx + i];
-        // A soft rim (a fifth of the fBm's typical spread) rising through one half at the level.
-        const double cover = smoothStep(threshold - 0.025, threshold + 0.025, c);
-        // Puffs a third of the coverage's size; higher in the cloud the dome is rounder.
-        const double puff = 1.0 - terrain::fractal(noise, billows, static_cast<float>(3.0 * x / p.featureSize + 17.3),
-                                                   static_cast<float>(3.0 * y / p.featureSize - 5.1),
-                                                   static_cast<float>(3.0 * zm / p.featureSize + 2.7));
-        const double shape = cover * profile;
-        const double value = p.density * smoothStep(0.15, 0.6, shape * puff);
+        const double cover = std::clamp((c - threshold) / std::max(highest - threshold, 1e-6), 0.0, 1.0);
+        // Puffs a third of the coverage's size, round where the turbulence is low.
+        const double puff =
+          1.0 - terrain::fractal(noise, billows, static_cast<float>(3.0 * x / p.featureSize + 17.3),
+                                 static_cast<float>(3.0 * y / p.featureSize - 5.1),
+                                 static_cast<float>(3.0 * zm / p.featureSize + 2.7));
+        // The body rises highest over the middle of a covered patch (a dome over a flat base):
+        // the profile is stretched to the patch's local top; the puffs eat into its surface.
+        const double localTop = p.base + (p.top - p.base) * std::sqrt(cover);
+        const double rel = cover > 0.0 ? (z - p.base) / std::max(localTop - p.base, 1e-6) : 2.0;
+        const double dome = smoothStep(0.0, 0.15, rel) * (1.0 - smoothStep(0.45, 1.0, rel));
+        const double body = dome - 0.35 * (1.0 - puff);
+        const double value = p.density * smoothStep(0.0, 0.25, body);
         const std::size_t id = g.density.index(i, j, k);
         g.density.values[id] = std::max(g.density.values[id], value);
         g.temperature.values[id] += p.temperature * value;

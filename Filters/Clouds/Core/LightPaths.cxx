@@ -7,11 +7,16 @@
 
 namespace parafluid::clouds
 {
-std::vector<float> densityPathToward(const std::vector<float>& density, const int dims[3], double h,
+std::vector<float> densityPathToward(const std::vector<float>& density, const int dims[3], const double spacing[3],
                                      const double toward[3])
 {
   const double length = std::sqrt(toward[0] * toward[0] + toward[1] * toward[1] + toward[2] * toward[2]);
-  if (!(length > 0.0) || !std::isfinite(length) || !(h > 0.0) || !std::isfinite(h))
+  bool spaced = true;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    spaced = spaced && spacing[axis] > 0.0 && std::isfinite(spacing[axis]);
+  }
+  if (!(length > 0.0) || !std::isfinite(length) || !spaced)
   {
     throw std::invalid_argument("light paths: the direction must be finite and not zero, the spacing positive");
   }
@@ -21,11 +26,13 @@ std::vector<float> densityPathToward(const std::vector<float>& density, const in
     throw std::invalid_argument("light paths: the density does not match its dimensions");
   }
   const double L[3] = { toward[0] / length, toward[1] / length, toward[2] / length };
-  // The dominant axis a and the two in the slice (b, c).
+  // The direction in samples per metre of travel; its dominant axis a crosses the most slices,
+  // the two others (b, c) lie in the slice.
+  const double S[3] = { L[0] / spacing[0], L[1] / spacing[1], L[2] / spacing[2] };
   int a = 0;
   for (int axis = 1; axis < 3; ++axis)
   {
-    if (std::abs(L[axis]) > std::abs(L[a]))
+    if (std::abs(S[axis]) > std::abs(S[a]))
     {
       a = axis;
     }
@@ -34,9 +41,9 @@ std::vector<float> densityPathToward(const std::vector<float>& density, const in
   const std::size_t stride[3] = { 1, static_cast<std::size_t>(dims[0]),
                                   static_cast<std::size_t>(dims[0]) * static_cast<std::size_t>(dims[1]) };
   // One slice toward the light: +1 along a when the light is on the + side.
-  const int toLight = L[a] > 0.0 ? 1 : -1;
-  const double segment = h / std::abs(L[a]);                    // ray length between slices [m]
-  const double shift[2] = { L[b] / std::abs(L[a]), L[c] / std::abs(L[a]) }; // in-slice offset [samples]
+  const int toLight = S[a] > 0.0 ? 1 : -1;
+  const double segment = 1.0 / std::abs(S[a]);                             // ray length between slices [m]
+  const double shift[2] = { S[b] / std::abs(S[a]), S[c] / std::abs(S[a]) }; // in-slice offset [samples]
   std::vector<float> path(count, 0.0f);
   const int n = dims[a];
   const int first = toLight > 0 ? n - 1 : 0;

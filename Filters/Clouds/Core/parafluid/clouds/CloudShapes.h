@@ -1,13 +1,13 @@
 #pragma once
-// A procedural start for the stable-fluids grid: cumulus-like shapes from 3-D gradient noise
-// (the terrain concern's Perlin noise and fractal sums). Density = coverage(x, y) x height
-// profile(z) x billows(x, y, z), each factor in [0, 1]:
-//  - coverage: 2-D fBm, cloud where it exceeds the quantile of its values over the grid's
-//    columns that leaves `coverage` of them above it;
-//  - height profile: a cumulus base and top, rounded at both (a smooth step up over the lowest
-//    fifth, a longer fall over the upper half, so the tops are domes and the bases flat);
-//  - billows: 1 - turbulence (sum of |noise|), cells of round puffs with creases between them,
-//    as Worley noise would make them.
+// A procedural start for the stable-fluids grid: cumulus-like shapes from gradient noise (the
+// terrain concern's Perlin noise and fractal sums). Density rises smoothly with
+// dome(x, y, z) - 0.35 (1 - puff(x, y, z)):
+//  - cover: 2-D fBm, 0 at the quantile of its values over the grid's columns that leaves
+//    `coverage` of them above it, 1 at its largest value: how far inside a covered patch;
+//  - dome: a cumulus profile between the base and a local top that rises with sqrt(cover) to
+//    `top` (a quick step up at the flat base, a long rounded fall over the upper half);
+//  - puff: 1 - turbulence (sum of |noise|) at a third of the size, round puffs with creases
+//    between them, as Worley noise would make them; they eat into the rim.
 // The temperature inside a cloud is raised in proportion (latent heat: the cloud keeps rising).
 #include "parafluid/clouds/StaggeredGrid.h"
 

@@ -13,9 +13,10 @@
 
 namespace parafluid::clouds
 {
-/// `density`: dims[0] x dims[1] x dims[2] samples, x fastest, spacing h [m]; `toward`: the
-/// direction to follow (needs no unit length; not zero). Throws std::invalid_argument for a zero
-/// or non-finite direction, a non-positive spacing or empty dims.
-std::vector<float> densityPathToward(const std::vector<float>& density, const int dims[3], double h,
+/// `density`: dims[0] x dims[1] x dims[2] samples, x fastest, spacing[3] [m] between them;
+/// `toward`: the direction to follow (needs no unit length; not zero). Throws
+/// std::invalid_argument for a zero or non-finite direction, a non-positive spacing or data that
+/// does not match dims.
+std::vector<float> densityPathToward(const std::vector<float>& density, const int dims[3], const double spacing[3],
                                      const double toward[3]);
 } // namespace parafluid::clouds
