@@ -38,7 +38,7 @@ vtkStandardNewMacro(vtkPFStableFluids);
 vtkPFStableFluids::vtkPFStableFluids()
   : Cached(std::make_unique<Cache>())
 {
-  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(1);
 }
 
@@ -59,7 +59,8 @@ bool vtkPFStableFluids::GridShape(int cells[3], double& h)
     const double extent = this->Bounds[2 * axis + 1] - this->Bounds[2 * axis];
     if (!(extent > 0.0) || !std::isfinite(extent))
     {
-      vtkErrorMacro(<< "Stable Fluids: Bounds must have max > min on every axis (axis " << axis << ")");
+      vtkErrorMacro(<< "Stable Fluids: Bounds must have max > min on every axis (not on "
+                    << "xyz"[axis] << ")");
       return false;
     }
     if (this->Resolution[axis] < 2 || this->Resolution[axis] > 1024)
@@ -108,10 +109,16 @@ int vtkPFStableFluids::RequestInformation(vtkInformation*, vtkInformationVector*
 
 int vtkPFStableFluids::RequestUpdateExtent(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  if (vtkInformation* inInfo = inputVector[0]->GetInformationObject(0))
+  // The whole of the sources on every process (structured sources: their whole extent).
+  if (vtkInformation* inInfo = inputVector[1]->GetInformationObject(0))
   {
     inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
     inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    if (inInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+    {
+      inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+                  inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+    }
   }
   return 1;
 }
@@ -167,7 +174,7 @@ int vtkPFStableFluids::RequestData(vtkInformation*, vtkInformationVector** input
                                  : 0.0;
       const long long target = std::clamp<long long>(std::llround(requested / interval), 0, this->NumberOfOutputs);
 
-      vtkDataSet* sources = vtkDataSet::GetData(inputVector[0]);
+      vtkDataSet* sources = vtkDataSet::GetData(inputVector[1]);
       Cache& cache = *this->Cached;
       const vtkMTimeType inputTime = sources ? sources->GetMTime() : 0;
       const bool reusable = cache.Simulation && cache.InputTime == inputTime && cache.FilterTime == this->GetMTime() &&

@@ -28,8 +28,9 @@ public:
   vtkTypeMacro(vtkPFStableFluids, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// Optional sources (port 0): the points of any dataset inject like the emitter.
-  void SetSourcesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(0, output); }
+  /// Optional sources (port 1; port 0 is never used, so that pvpython does not connect the
+  /// active pipeline object as sources): the points of any dataset inject like the emitter.
+  void SetSourcesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
 
   /// The box [m]: xmin, xmax, ymin, ymax, zmin, zmax.
   vtkSetVector6Macro(Bounds, double);

@@ -168,9 +168,8 @@ void vtkPFVolumetricCloudMapper::Render(vtkRenderer* renderer, vtkVolume*)
   image->GetSpacing(spacing);
   const double sample = std::min({ std::abs(spacing[0]), std::abs(spacing[1]), std::abs(spacing[2]) });
   const double* box = textures.Box();
-  const double diagonal =
-    std::sqrt((box[1] - box[0]) * (box[1] - box[0]) + (box[3] - box[2]) * (box[3] - box[2]) +
-              (box[5] - box[4]) * (box[5] - box[4]));
+  const double diagonal = std::sqrt((box[1] - box[0]) * (box[1] - box[0]) + (box[3] - box[2]) * (box[3] - box[2]) +
+                                    (box[5] - box[4]) * (box[5] - box[4]));
   // Opacity below 1e-4 across the whole box cannot change a pixel: no march at all.
   const double faintest = 1e-4 / std::max(this->Extinction * diagonal, 1e-30);
   if (!(textures.MaxDensity() > faintest))

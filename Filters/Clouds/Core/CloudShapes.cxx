@@ -22,19 +22,19 @@ void fillCloudShapes(StaggeredGrid& g, const CloudShapeParameters& p)
 {
   if (!(p.coverage >= 0.0 && p.coverage <= 1.0))
   {
-    throw std::invalid_argument("Stable Fluids: CloudCoverage must lie in [0, 1]");
+    throw std::invalid_argument("CloudCoverage must lie in [0, 1]");
   }
   if (!(p.featureSize > 0.0) || !std::isfinite(p.featureSize))
   {
-    throw std::invalid_argument("Stable Fluids: CloudFeatureSize must be a positive length");
+    throw std::invalid_argument("CloudFeatureSize must be a positive length");
   }
   if (!(p.base >= 0.0 && p.base < p.top && p.top <= 1.0))
   {
-    throw std::invalid_argument("Stable Fluids: the cloud base must lie below its top, both in [0, 1]");
+    throw std::invalid_argument("the cloud base must lie below its top, both in [0, 1]");
   }
   if (!std::isfinite(p.density) || !std::isfinite(p.temperature))
   {
-    throw std::invalid_argument("Stable Fluids: the cloud's density and temperature must be finite");
+    throw std::invalid_argument("the cloud's density and temperature must be finite");
   }
   const terrain::PerlinNoise noise(p.seed);
   terrain::FractalSettings coverage;
@@ -75,10 +75,9 @@ void fillCloudShapes(StaggeredGrid& g, const CloudShapeParameters& p)
         const double c = columns[static_cast<std::size_t>(j) * g.nx + i];
         const double cover = std::clamp((c - threshold) / std::max(highest - threshold, 1e-6), 0.0, 1.0);
         // Puffs a third of the coverage's size, round where the turbulence is low.
-        const double puff =
-          1.0 - terrain::fractal(noise, billows, static_cast<float>(3.0 * x / p.featureSize + 17.3),
-                                 static_cast<float>(3.0 * y / p.featureSize - 5.1),
-                                 static_cast<float>(3.0 * zm / p.featureSize + 2.7));
+        const double puff = 1.0 - terrain::fractal(noise, billows, static_cast<float>(3.0 * x / p.featureSize + 17.3),
+                                                   static_cast<float>(3.0 * y / p.featureSize - 5.1),
+                                                   static_cast<float>(3.0 * zm / p.featureSize + 2.7));
         // The body rises highest over the middle of a covered patch (a dome over a flat base):
         // the profile is stretched to the patch's local top; the puffs eat into its surface.
         const double localTop = p.base + (p.top - p.base) * std::sqrt(cover);

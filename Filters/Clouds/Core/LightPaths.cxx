@@ -42,7 +42,7 @@ std::vector<float> densityPathToward(const std::vector<float>& density, const in
                                   static_cast<std::size_t>(dims[0]) * static_cast<std::size_t>(dims[1]) };
   // One slice toward the light: +1 along a when the light is on the + side.
   const int toLight = S[a] > 0.0 ? 1 : -1;
-  const double segment = 1.0 / std::abs(S[a]);                             // ray length between slices [m]
+  const double segment = 1.0 / std::abs(S[a]);                              // ray length between slices [m]
   const double shift[2] = { S[b] / std::abs(S[a]), S[c] / std::abs(S[a]) }; // in-slice offset [samples]
   std::vector<float> path(count, 0.0f);
   const int n = dims[a];

@@ -15,32 +15,31 @@ StableFluids::StableFluids(const StableFluidsParameters& parameters)
   {
     if (P.resolution[a] < 2 || P.resolution[a] > 1024)
     {
-      throw std::invalid_argument("Stable Fluids: Resolution must be 2 to 1024 cells per axis (got " +
+      throw std::invalid_argument("Resolution must be 2 to 1024 cells per axis (got " +
                                   std::to_string(P.resolution[a]) + ")");
     }
     cells *= P.resolution[a];
   }
   if (cells > double(1 << 27))
   {
-    throw std::invalid_argument("Stable Fluids: Resolution asks for more than 2^27 cells");
+    throw std::invalid_argument("Resolution asks for more than 2^27 cells");
   }
   if (!(P.cellSize > 0.0) || !std::isfinite(P.cellSize))
   {
-    throw std::invalid_argument("Stable Fluids: the cell size must be positive and finite");
+    throw std::invalid_argument("the cell size must be positive and finite");
   }
   if (!(P.viscosity >= 0.0) || !(P.diffusivity >= 0.0) || !(P.vorticity >= 0.0))
   {
-    throw std::invalid_argument("Stable Fluids: Viscosity, Diffusivity and Vorticity must be >= 0");
+    throw std::invalid_argument("Viscosity, Diffusivity and Vorticity must be >= 0");
   }
   if (!(P.projectionTolerance > 0.0 && P.projectionTolerance < 1.0) || P.projectionIterations < 1)
   {
-    throw std::invalid_argument(
-      "Stable Fluids: ProjectionTolerance must lie in (0, 1) and ProjectionIterations be >= 1");
+    throw std::invalid_argument("ProjectionTolerance must lie in (0, 1) and ProjectionIterations be >= 1");
   }
   if (!std::isfinite(P.emitterDensity) || !std::isfinite(P.emitterTemperature) || !std::isfinite(P.emitterSpeed) ||
       !std::isfinite(P.buoyancyDensity) || !std::isfinite(P.buoyancyHeat) || !std::isfinite(P.ambientTemperature))
   {
-    throw std::invalid_argument("Stable Fluids: the emitter's and the buoyancy's values must be finite");
+    throw std::invalid_argument("the emitter's and the buoyancy's values must be finite");
   }
   this->Grid.resize(P.resolution[0], P.resolution[1], P.resolution[2], P.cellSize);
   std::copy(P.origin, P.origin + 3, this->Grid.origin.begin());
@@ -273,7 +272,7 @@ void StableFluids::step(double dt)
 {
   if (!(dt > 0.0) || !std::isfinite(dt))
   {
-    throw std::invalid_argument("Stable Fluids: the time step must be positive and finite");
+    throw std::invalid_argument("the time step must be positive and finite");
   }
   StaggeredGrid& g = this->Grid;
   this->applySources(dt);
