@@ -1,6 +1,7 @@
 #include "vtkPFStableFluids.h"
 
 #include "GuardedRequest.h"
+#include "ParameterCheck.h"
 
 #include "parafluid/clouds/CloudShapes.h"
 #include "parafluid/clouds/GridSolvers.h"
@@ -53,28 +54,58 @@ int vtkPFStableFluids::FillInputPortInformation(int, vtkInformation* info)
 
 bool vtkPFStableFluids::GridShape(int cells[3], double& h)
 {
+  parafluid::vtk::ParameterCheck check;
+  check.box("Bounds", this->Bounds, true);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    check.inRange("Resolution", this->Resolution[axis], 2, 1024, "cells per axis");
+  }
+  if (!check.ok())
+  {
+    vtkErrorMacro(<< "Stable Fluids: " << check.problem());
+    return false;
+  }
   h = 0.0;
   for (int axis = 0; axis < 3; ++axis)
   {
-    const double extent = this->Bounds[2 * axis + 1] - this->Bounds[2 * axis];
-    if (!(extent > 0.0) || !std::isfinite(extent))
-    {
-      vtkErrorMacro(<< "Stable Fluids: Bounds must have max > min on every axis (not on "
-                    << "xyz"[axis] << ")");
-      return false;
-    }
-    if (this->Resolution[axis] < 2 || this->Resolution[axis] > 1024)
-    {
-      vtkErrorMacro(<< "Stable Fluids: Resolution must be 2 to 1024 cells per axis (got " << this->Resolution[axis]
-                    << ")");
-      return false;
-    }
-    h = std::max(h, extent / this->Resolution[axis]);
+    h = std::max(h, (this->Bounds[2 * axis + 1] - this->Bounds[2 * axis]) / this->Resolution[axis]);
   }
   for (int axis = 0; axis < 3; ++axis)
   {
     const double extent = this->Bounds[2 * axis + 1] - this->Bounds[2 * axis];
     cells[axis] = std::clamp(static_cast<int>(std::lround(extent / h)), 2, this->Resolution[axis]);
+  }
+  return true;
+}
+
+bool vtkPFStableFluids::CheckParameters()
+{
+  // The ranges mirror the XML domains (Plugins/ParaFluid/ParaFluidClouds.xml).
+  parafluid::vtk::ParameterCheck check;
+  check.inRange("TimeStep", this->TimeStep, 1e-6, 10.0, "s")
+    .inRange("OutputInterval", this->OutputInterval, 1e-6, 1e6, "s")
+    .inRange("NumberOfOutputs", this->NumberOfOutputs, 0, 100000)
+    .inRange("Viscosity", this->Viscosity, 0.0, 100.0, "m^2/s")
+    .inRange("Diffusivity", this->Diffusivity, 0.0, 100.0, "m^2/s")
+    .inRange("BuoyancyDensity", this->BuoyancyDensity, -100.0, 100.0, "m/s^2")
+    .inRange("BuoyancyHeat", this->BuoyancyHeat, -100.0, 100.0, "m/s^2 per K")
+    .inRange("AmbientTemperature", this->AmbientTemperature, -1e30, 1e30, "K")
+    .inRange("Vorticity", this->Vorticity, 0.0, 10.0)
+    .allInRange("EmitterBox", this->EmitterBox, 6, -1e30, 1e30, "m")
+    .inRange("EmitterDensity", this->EmitterDensity, 0.0, 1e6)
+    .inRange("EmitterTemperature", this->EmitterTemperature, -1000.0, 1000.0, "K")
+    .inRange("EmitterSpeed", this->EmitterSpeed, -1000.0, 1000.0, "m/s")
+    .inRange("CloudCoverage", this->CloudCoverage, 0.0, 1.0)
+    .inRange("CloudFeatureSize", this->CloudFeatureSize, 1e-6, 1e7, "m")
+    .inRange("ProjectionTolerance", this->ProjectionTolerance, 1e-14, 0.5)
+    .require(this->OutputInterval / this->TimeStep <= 1e6,
+             "OutputInterval / TimeStep is not allowed above a million steps per output (OutputInterval = " +
+               parafluid::vtk::ParameterCheck::number(this->OutputInterval) +
+               " s, TimeStep = " + parafluid::vtk::ParameterCheck::number(this->TimeStep) + " s)");
+  if (!check.ok())
+  {
+    vtkErrorMacro(<< "Stable Fluids: " << check.problem());
+    return false;
   }
   return true;
 }
@@ -150,17 +181,11 @@ int vtkPFStableFluids::RequestData(vtkInformation*, vtkInformationVector** input
       {
         return 0;
       }
+      if (!this->CheckParameters())
+      {
+        return 0;
+      }
       const double interval = this->OutputInterval;
-      if (!(interval > 0.0) || !std::isfinite(interval) || !(this->TimeStep > 0.0) || !std::isfinite(this->TimeStep))
-      {
-        vtkErrorMacro(<< "Stable Fluids: TimeStep and OutputInterval must be positive numbers of seconds");
-        return 0;
-      }
-      if (this->NumberOfOutputs < 0 || this->NumberOfOutputs > 100000)
-      {
-        vtkErrorMacro(<< "Stable Fluids: NumberOfOutputs must be from 0 to 100000");
-        return 0;
-      }
       const double cellCount = static_cast<double>(cells[0]) * cells[1] * cells[2];
       // Faces, cells, the pressure, the advection's and the solver's work arrays: ~40 doubles a cell.
       const std::string memory = parafluid::checkMemoryBudget(40.0 * 8.0 * cellCount, "the Stable Fluids grid");

@@ -120,6 +120,8 @@ private:
   std::unique_ptr<Cache> Cached;
   /// The grid the properties ask for: cells per axis, cell size [m]; false with an error.
   bool GridShape(int cells[3], double& h);
+  /// The other properties within their XML domains; false with an error naming the first that is not.
+  bool CheckParameters();
 
   double Bounds[6] = { 0.0, 2.0, 0.0, 2.0, 0.0, 2.0 };
   int Resolution[3] = { 64, 64, 64 };

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "ParaFluidCloudsRepresentationsModule.h"
+#include "SetParameterMacros.h"
 #include "vtkVolumeMapper.h"
 
 #include <memory>
@@ -32,50 +33,50 @@ public:
   vtkSetStdStringFromCharMacro(DensityArray);
   vtkGetCharFromStdStringMacro(DensityArray);
   /// Extinction per unit density [1/m]: a path of density x length D has transmittance exp(-Extinction D).
-  vtkSetClampMacro(Extinction, double, 0.0, 1e9);
+  vtkPFSetClampMacro(Extinction, double, 0.0, 1e9);
   vtkGetMacro(Extinction, double);
   /// Scattering over extinction (clouds ~1, smoke less).
-  vtkSetClampMacro(Albedo, double, 0.0, 1.0);
+  vtkPFSetClampMacro(Albedo, double, 0.0, 1.0);
   vtkGetMacro(Albedo, double);
   /// Forward lobe of the Henyey-Greenstein phase function (the back lobe is -Anisotropy / 2).
-  vtkSetClampMacro(Anisotropy, double, -0.95, 0.95);
+  vtkPFSetClampMacro(Anisotropy, double, -0.95, 0.95);
   vtkGetMacro(Anisotropy, double);
   /// March step in samples of the image, and the most steps a ray takes.
-  vtkSetClampMacro(StepSize, double, 0.01, 100.0);
+  vtkPFSetClampMacro(StepSize, double, 0.01, 100.0);
   vtkGetMacro(StepSize, double);
-  vtkSetClampMacro(MaxSteps, int, 1, 100000);
+  vtkPFSetClampMacro(MaxSteps, int, 1, 100000);
   vtkGetMacro(MaxSteps, int);
   /// A ray stops once less than this fraction of light gets through.
-  vtkSetClampMacro(MinTransmittance, double, 0.0, 1.0);
+  vtkPFSetClampMacro(MinTransmittance, double, 0.0, 1.0);
   vtkGetMacro(MinTransmittance, double);
   vtkSetMacro(Shadows, bool);
   vtkGetMacro(Shadows, bool);
   /// Scattering octaves (1: single scattering; 2-4 approximate multiple scattering).
-  vtkSetClampMacro(Octaves, int, 1, 8);
+  vtkPFSetClampMacro(Octaves, int, 1, 8);
   vtkGetMacro(Octaves, int);
-  vtkSetClampMacro(Powder, double, 0.0, 1.0);
+  vtkPFSetClampMacro(Powder, double, 0.0, 1.0);
   vtkGetMacro(Powder, double);
   vtkSetMacro(EmptySpaceSkipping, bool);
   vtkGetMacro(EmptySpaceSkipping, bool);
   /// 0: the view's key light (its first light that is on); 1: the sun at SunElevation, SunAzimuth.
-  vtkSetClampMacro(LightMode, int, 0, 1);
+  vtkPFSetClampMacro(LightMode, int, 0, 1);
   vtkGetMacro(LightMode, int);
   /// [degrees] above the horizon (the x-y plane) and counter-clockwise from +x.
-  vtkSetMacro(SunElevation, double);
+  vtkPFSetFiniteMacro(SunElevation, double);
   vtkGetMacro(SunElevation, double);
-  vtkSetMacro(SunAzimuth, double);
+  vtkPFSetFiniteMacro(SunAzimuth, double);
   vtkGetMacro(SunAzimuth, double);
   /// The sun's colour times its intensity (with the key light: the light's colour and intensity
   /// times LightIntensity).
-  vtkSetVector3Macro(SunColor, double);
+  vtkPFSetFiniteVector3Macro(SunColor, double);
   vtkGetVector3Macro(SunColor, double);
-  vtkSetClampMacro(LightIntensity, double, 0.0, 1e6);
+  vtkPFSetClampMacro(LightIntensity, double, 0.0, 1e6);
   vtkGetMacro(LightIntensity, double);
   /// Ambient light from the sky above (+z).
-  vtkSetVector3Macro(SkyColor, double);
+  vtkPFSetFiniteVector3Macro(SkyColor, double);
   vtkGetVector3Macro(SkyColor, double);
   /// 0: lit cloud; 1: samples taken per pixel (red = samples / 255), to see the skipping's effect.
-  vtkSetClampMacro(DisplayMode, int, 0, 1);
+  vtkPFSetClampMacro(DisplayMode, int, 0, 1);
   vtkGetMacro(DisplayMode, int);
 
   /// Whether the last Render marched at all (false: nothing to draw, no pass run).
@@ -110,7 +111,7 @@ private:
   double SunElevation = 50.0;
   double SunAzimuth = 30.0;
   double SunColor[3] = { 1.0, 0.97, 0.92 };
-  double LightIntensity = 3.0;
+  double LightIntensity = 12.0;
   double SkyColor[3] = { 0.25, 0.33, 0.45 };
   int DisplayMode = 0;
   bool LastMarched = false;

@@ -21,7 +21,9 @@ block = ParticleBlock(BlockBounds=[0, 0.2, 0, 0.1, 0, 0.2], Spacing=0.02)
 ocean = GerstnerOcean(Resolution=[32, 32], Size=[20, 20])
 rain = Rain(Terrain=ProceduralTerrain(Extent=[2, 2], Resolution=[9, 9], HeightScale=0.2), Runoff=0, RainfallRate=50,
             DropsPerRealDrop=0.05, Cells=[8, 8], PrecipitationHeight=2.0, SplashLifetime=0.5)
-SCENES = [(block, "Screen-Space Fluid", "Fluid"), (block, "Ray-Marched Fluid", "RayMarch"), (block, "Toon Fluid", "Toon"),
+clouds = StableFluids(Emitter=0, ProceduralClouds=1, Bounds=[0, 4, 0, 4, 0, 1], Resolution=[32, 32, 8],
+                      NumberOfOutputs=0)
+SCENES = [(clouds, "Volumetric Cloud", "Cloud"), (block, "Screen-Space Fluid", "Fluid"), (block, "Ray-Marched Fluid", "RayMarch"), (block, "Toon Fluid", "Toon"),
           (block, "Brush Stroke Fluid", "Brush"), (ocean, "Gerstner Ocean", "Ocean"),
           (OutputPort(rain, 0), "Rain", "Rain"), (OutputPort(rain, 2), "Rain Splashes", "Splash")]
 

@@ -37,6 +37,7 @@ MAKERS = {
     "HydraulicErosion": lambda: HydraulicErosion(Input=small_terrain, Drops=200, Iterations=20),
     "Rain": lambda: Rain(Terrain=rain_terrain, DropsPerRealDrop=1e-3, Cells=[4, 4], PrecipitationHeight=3.0,
                          RainfallRate=500, ParticleSpacing=0.2, OutputInterval=0.05, NumberOfOutputs=2),
+    "StableFluids": lambda: StableFluids(Resolution=[8, 8, 8], TimeStep=0.05, OutputInterval=0.05, NumberOfOutputs=1),
 }
 # (proxy, property) -> function(values) -> True when the values are valid (must run), False when
 # they must be refused. Properties not listed follow their XML domain.
@@ -45,6 +46,11 @@ def bounds_valid(b):
 
 
 SPECIAL = {
+    ("StableFluids", "Bounds"): lambda b: bounds_valid(b) and all(b[2 * a] < b[2 * a + 1] for a in range(3)) and all(
+        abs(v) <= 1e12 for v in b),
+    ("StableFluids", "EmitterBox"): lambda b: all(math.isfinite(v) for v in b),  # an empty box emits nothing
+    # a step far below the interval is a run too long to finish: refused by name
+    ("StableFluids", "TimeStep"): lambda v: math.isfinite(v[0]) and 1e-6 <= v[0] <= 10 and 0.05 / v[0] <= 1e6,
     ("ParticleBlock", "BlockBounds"): bounds_valid,  # an empty box gives no particles
     ("ParticleBlock", "DomainBounds"): lambda b: bounds_valid(b) and all(b[2 * a] < b[2 * a + 1] for a in range(3)),
     # all zero: taken from the input's domain_bounds field data

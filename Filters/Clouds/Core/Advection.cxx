@@ -9,6 +9,7 @@
 
 namespace parafluid::clouds
 {
+using detail::DirectSampler;
 using detail::locate;
 using detail::SampleVelocity;
 using detail::Trilinear;
@@ -40,27 +41,62 @@ void forEachSample(const std::array<int, 3>& dims, Body body)
   }
 }
 
+// Reads `data` (laid out as `sampler`'s array) at p, with `ambient` beyond the open faces; with
+// lo and hi, also the range of what it blended.
+inline double readAt(const DirectSampler& sampler, const GridArray& layout, const double* data, const double p[3],
+                     const bool* open, double ambient, double* lo = nullptr, double* hi = nullptr)
+{
+  if (!sampler.beyond(p, open))
+  {
+    return sampler.at(data, p, lo, hi);
+  }
+  const Trilinear t = locate(layout, p, open);
+  if (lo)
+  {
+    t.range(data, *lo, *hi);
+    *lo = std::min(*lo, ambient);
+    *hi = std::max(*hi, ambient);
+  }
+  return t.apply(data) + t.outside * ambient;
+}
+
+// The MacCormack correction of `forward` (the plain step of `source`, whose blended range is
+// lo..hi): the result traced forward again by `move` (each sample's displacement over the step,
+// in cells), half the round trip's error added back, clamped to the range. The forward Euler
+// trace is enough here: the round trip measures its error together with the interpolation's,
+// and the correction removes both to second order in smooth flow.
+void macCormackCorrect(const GridArray& layout, const double* source, const std::vector<double>& forward,
+                       const std::vector<double>& lo, const std::vector<double>& hi, const std::vector<float>& move,
+                       const bool* open, double ambient, std::vector<double>& result)
+{
+  const DirectSampler sampler(layout);
+  forEachSample(layout.dims,
+                [&](int i, int j, int k, std::size_t id)
+                {
+                  double p[3];
+                  pointOf(layout, i, j, k, p);
+                  const double ahead[3] = { p[0] + move[3 * id], p[1] + move[3 * id + 1], p[2] + move[3 * id + 2] };
+                  const double roundTrip = readAt(sampler, layout, forward.data(), ahead, open, ambient);
+                  const double corrected = forward[id] + 0.5 * (source[id] - roundTrip);
+                  result[id] = std::clamp(corrected, lo[id], hi[id]);
+                });
+}
+
 // One semi-Lagrangian step of `field` (ambient `ambient` beyond the open faces `open`, when
-// given): each sample traced back by the velocity at the sample (dt * v / h cells) and read there.
-// MacCormack: the result traced forward again, half the round trip's error added back, clamped
-// to the samples the backward trace blended. The forward Euler trace is enough here: the round
-// trip measures its error together with the interpolation's, and the correction removes both
-// to second order in smooth flow.
+// given): each sample traced back by the velocity at the sample (dt * v / h cells) and read
+// there; with MacCormack, corrected.
 GridArray advectOne(const GridArray& field, const StaggeredGrid& g, double dt, bool macCormack, const bool* open,
                     double ambient)
 {
   const double s = dt / g.h;
-  GridArray forward = field;
-  GridArray lo, hi;
-  if (macCormack)
-  {
-    lo = field;
-    hi = field;
-  }
+  const std::size_t n = field.values.size();
+  GridArray result = field;
+  std::vector<double> forward(macCormack ? n : 0), lo(macCormack ? n : 0), hi(macCormack ? n : 0);
+  std::vector<float> move(macCormack ? 3 * n : 0);
+  std::vector<double>& plain = macCormack ? forward : result.values;
   const double* source = field.values.data();
   const SampleVelocity velocity(g, field);
-  // The displacement of each sample over dt [cells], kept for the MacCormack round trip.
-  std::vector<float> move(macCormack ? 3 * field.values.size() : 0);
+  const DirectSampler sampler(field);
   forEachSample(field.dims,
                 [&](int i, int j, int k, std::size_t id)
                 {
@@ -68,38 +104,21 @@ GridArray advectOne(const GridArray& field, const StaggeredGrid& g, double dt, b
                   pointOf(field, i, j, k, p);
                   velocity.at(i, j, k, v);
                   const double back[3] = { p[0] - s * v[0], p[1] - s * v[1], p[2] - s * v[2] };
-                  const Trilinear t = locate(field, back, open);
-                  forward.values[id] = t.apply(source) + t.outside * ambient;
-                  if (macCormack)
+                  if (!macCormack)
                   {
-                    for (int c = 0; c < 3; ++c)
-                    {
-                      move[3 * id + c] = static_cast<float>(s * v[c]);
-                    }
-                    t.range(source, lo.values[id], hi.values[id]);
-                    if (t.outside > 0.0)
-                    {
-                      lo.values[id] = std::min(lo.values[id], ambient);
-                      hi.values[id] = std::max(hi.values[id], ambient);
-                    }
+                    plain[id] = readAt(sampler, field, source, back, open, ambient);
+                    return;
+                  }
+                  plain[id] = readAt(sampler, field, source, back, open, ambient, &lo[id], &hi[id]);
+                  for (int c = 0; c < 3; ++c)
+                  {
+                    move[3 * id + c] = static_cast<float>(s * v[c]);
                   }
                 });
-  if (!macCormack)
+  if (macCormack)
   {
-    return forward;
+    macCormackCorrect(field, source, forward, lo, hi, move, open, ambient, result.values);
   }
-  GridArray result = forward;
-  forEachSample(field.dims,
-                [&](int i, int j, int k, std::size_t id)
-                {
-                  double p[3];
-                  pointOf(field, i, j, k, p);
-                  const double ahead[3] = { p[0] + move[3 * id], p[1] + move[3 * id + 1], p[2] + move[3 * id + 2] };
-                  const Trilinear t = locate(forward, ahead, open);
-                  const double roundTrip = t.apply(forward.values.data()) + t.outside * ambient;
-                  const double corrected = forward.values[id] + 0.5 * (source[id] - roundTrip);
-                  result.values[id] = std::clamp(corrected, lo.values[id], hi.values[id]);
-                });
   return result;
 }
 } // namespace
@@ -136,38 +155,72 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
   const std::size_t n = g.cells();
   const double s = dt / g.h;
   const SampleVelocity velocity(g, layout);
-  // 1. Each cell's trace, and how much of each source cell the traces draw in all ("drawn").
-  std::vector<double> back(3 * n);
-  std::vector<double> drawn(n, 0.0);
+  const DirectSampler sampler(layout);
+  // 1. Each cell's displacement over the step [cells] (its trace starts at p - move).
+  std::vector<float> move(3 * n);
+  double fastest = 0.0;
+  for (const GridArray* f : { &g.u, &g.v, &g.w })
+  {
+    for (double value : f->values)
+    {
+      fastest = std::max(fastest, std::abs(value));
+    }
+  }
   forEachSample(layout.dims,
                 [&](int i, int j, int k, std::size_t id)
                 {
-                  double p[3], v[3];
-                  pointOf(layout, i, j, k, p);
+                  double v[3];
                   velocity.at(i, j, k, v);
                   for (int c = 0; c < 3; ++c)
                   {
-                    back[3 * id + c] = p[c] - s * v[c];
-                  }
-                  const Trilinear t = locate(layout, &back[3 * id], open);
-                  for (int c = 0; c < 8; ++c)
-                  {
-#pragma omp atomic
-                    drawn[t.index[c]] += t.weight[c];
+                    move[3 * id + c] = static_cast<float>(s * v[c]);
                   }
                 });
+  auto backOf = [&](std::size_t id, int i, int j, int k, double back[3])
+  {
+    double p[3];
+    pointOf(layout, i, j, k, p);
+    for (int c = 0; c < 3; ++c)
+    {
+      back[c] = p[c] - move[3 * id + c];
+    }
+  };
+  // 2. How much of each source cell the traces draw in all ("drawn"). A trace reaches at most
+  // `reach` slabs from its cell, so slabs in blocks more than twice that apart never write the
+  // same source: the even blocks run side by side, then the odd ones (no atomics).
+  std::vector<double> drawn(n, 0.0);
+  const int reach = static_cast<int>(std::ceil(s * fastest)) + 1;
+  const int block = 2 * reach + 1;
+  const int nz = layout.dims[2];
+  const int blocks = (nz + block - 1) / block;
+  for (int phase = 0; phase < 2; ++phase)
+  {
+#pragma omp parallel for schedule(dynamic)
+    for (int b = phase; b < blocks; b += 2)
+    {
+      for (int k = b * block; k < std::min((b + 1) * block, nz); ++k)
+      {
+        for (int j = 0; j < layout.dims[1]; ++j)
+        {
+          for (int i = 0; i < layout.dims[0]; ++i)
+          {
+            const std::size_t id = layout.index(i, j, k);
+            double back[3];
+            backOf(id, i, j, k, back);
+            const Trilinear t = locate(layout, back, open);
+            for (int c = 0; c < 8; ++c)
+            {
+              drawn[t.index[c]] += t.weight[c];
+            }
+          }
+        }
+      }
+    }
+  }
   if (open)
   {
     // Beyond the open faces, virtual cells (as many layers as the flow moves in a step) draw
     // from the box too: what they draw is what flows out.
-    double fastest = 0.0;
-    for (const GridArray* f : { &g.u, &g.v, &g.w })
-    {
-      for (double value : f->values)
-      {
-        fastest = std::max(fastest, std::abs(value));
-      }
-    }
     const int layers = static_cast<int>(std::ceil(s * fastest)) + 2;
     int lo[3], hi[3];
     for (int axis = 0; axis < 3; ++axis)
@@ -213,25 +266,39 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
     }
   }
   std::vector<double> excess(n), scaled(n), low(n);
+  std::vector<double> forward(macCormack ? n : 0), lo(macCormack ? n : 0), hi(macCormack ? n : 0),
+    high(macCormack ? n : 0);
   for (const ScalarField& f : fields)
   {
     GridArray& field = *f.field;
-    // 2. Low order and conservative: each source cell's excess over ambient shared out exactly
-    // among the cells that draw from it, in proportion to their weights.
-    for (std::size_t id = 0; id < n; ++id)
+    // 3. Low order and conservative: each source cell's excess over ambient shared out exactly
+    // among the cells that draw from it, in proportion to their weights. With MacCormack, the
+    // plain step of the excess from the same traces.
+#pragma omp parallel for schedule(static)
+    for (long long id = 0; id < static_cast<long long>(n); ++id)
     {
       excess[id] = field.values[id] - f.ambient;
       scaled[id] = drawn[id] > 0.0 ? excess[id] / drawn[id] : 0.0;
     }
-    forEachSample(layout.dims, [&](int, int, int, std::size_t id)
-                  { low[id] = locate(layout, &back[3 * id], open).apply(scaled.data()); });
+    forEachSample(layout.dims,
+                  [&](int i, int j, int k, std::size_t id)
+                  {
+                    double back[3];
+                    backOf(id, i, j, k, back);
+                    low[id] = readAt(sampler, layout, scaled.data(), back, open, 0.0);
+                    if (macCormack)
+                    {
+                      forward[id] = readAt(sampler, layout, excess.data(), back, open, 0.0, &lo[id], &hi[id]);
+                    }
+                  });
     for (std::size_t id : undrawn)
     {
-      double p[3], v[3];
-      pointOf(layout, static_cast<int>(id % layout.dims[0]), static_cast<int>((id / layout.dims[0]) % layout.dims[1]),
-              static_cast<int>(id / (static_cast<std::size_t>(layout.dims[0]) * layout.dims[1])), p);
-      velocityAt(g, p, v);
-      const double ahead[3] = { p[0] + s * v[0], p[1] + s * v[1], p[2] + s * v[2] };
+      const int i = static_cast<int>(id % layout.dims[0]);
+      const int j = static_cast<int>((id / layout.dims[0]) % layout.dims[1]);
+      const int k = static_cast<int>(id / (static_cast<std::size_t>(layout.dims[0]) * layout.dims[1]));
+      double p[3];
+      pointOf(layout, i, j, k, p);
+      const double ahead[3] = { p[0] + move[3 * id], p[1] + move[3 * id + 1], p[2] + move[3 * id + 2] };
       const Trilinear t = locate(layout, ahead, open);
       for (int c = 0; c < 8; ++c)
       {
@@ -246,17 +313,15 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
       }
       continue;
     }
-    // 3. High order: MacCormack on the excess.
-    GridArray excessArray = field;
-    excessArray.values = excess;
-    const GridArray high = advectOne(excessArray, g, dt, true, open, 0.0);
-    // 4. The mass fixer: the high-order result's surplus (or deficit) against the conservative
+    // 4. High order: MacCormack on the excess.
+    macCormackCorrect(layout, excess.data(), forward, lo, hi, move, open, 0.0, high);
+    // 5. The mass fixer: the high-order result's surplus (or deficit) against the conservative
     // one is taken back from the cells whose correction carries it, in proportion to that
     // correction; every cell stays between its low- and high-order values.
     double surplus = 0.0, positive = 0.0, negative = 0.0;
     for (std::size_t id = 0; id < n; ++id)
     {
-      const double d = high.values[id] - low[id];
+      const double d = high[id] - low[id];
       surplus += d;
       (d > 0.0 ? positive : negative) += d;
     }
@@ -271,7 +336,7 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
     }
     for (std::size_t id = 0; id < n; ++id)
     {
-      const double d = high.values[id] - low[id];
+      const double d = high[id] - low[id];
       field.values[id] = f.ambient + low[id] + d * (d > 0.0 ? keepPositive : keepNegative);
     }
   }

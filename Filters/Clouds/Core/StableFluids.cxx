@@ -1,6 +1,7 @@
 #include "parafluid/clouds/StableFluids.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -275,12 +276,22 @@ void StableFluids::step(double dt)
     throw std::invalid_argument("the time step must be positive and finite");
   }
   StaggeredGrid& g = this->Grid;
+  auto lap = std::chrono::steady_clock::now();
+  auto elapsed = [&lap]()
+  {
+    const auto now = std::chrono::steady_clock::now();
+    const double ms = std::chrono::duration<double, std::milli>(now - lap).count();
+    lap = now;
+    return ms;
+  };
   this->applySources(dt);
   this->applyForces(dt);
   setBoundaryVelocities(g);
+  this->Timings.forces = elapsed();
   // Every field is carried by the same (old) velocity: the scalars first.
   advectScalars(g, { { &g.density, 0.0 }, { &g.temperature, P.ambientTemperature } }, dt, P.macCormack, P.conservative);
   advectVelocity(g, dt, P.macCormack);
+  this->Timings.advection = elapsed();
   if (P.viscosity > 0.0)
   {
     for (GridArray* f : { &g.u, &g.v, &g.w })
@@ -293,12 +304,14 @@ void StableFluids::step(double dt)
     diffuse(g.density, g.h, P.diffusivity, dt);
     diffuse(g.temperature, g.h, P.diffusivity, dt);
   }
+  this->Timings.diffusion = elapsed();
   ProjectionOptions options;
   options.tolerance = P.projectionTolerance;
   options.maxIterations = P.projectionIterations;
   options.preconditioner = P.preconditioner;
   options.warmStart = true;
   this->Projection = project(g, dt, options);
+  this->Timings.projection = elapsed();
 }
 
 double StableFluids::totalDensity() const

@@ -15,6 +15,15 @@
 
 namespace parafluid::clouds
 {
+/// Where the last step's time went [ms] (steady clock).
+struct StepTimings
+{
+  double forces = 0.0; // sources, buoyancy, vorticity confinement
+  double advection = 0.0;
+  double diffusion = 0.0;
+  double projection = 0.0;
+};
+
 struct StableFluidsParameters
 {
   int resolution[3] = { 32, 32, 32 }; // cells per axis
@@ -55,6 +64,7 @@ public:
   const StaggeredGrid& grid() const { return this->Grid; }
   StaggeredGrid& grid() { return this->Grid; }
   const SolveReport& lastProjection() const { return this->Projection; }
+  const StepTimings& lastTimings() const { return this->Timings; }
   /// Sum of density over the cells times a cell's volume.
   double totalDensity() const;
   /// 1/2 sum of the squared face velocities times a cell's volume (each face's share).
@@ -67,6 +77,7 @@ private:
   StableFluidsParameters P;
   StaggeredGrid Grid;
   SolveReport Projection;
+  StepTimings Timings;
   std::vector<double> PointSources;
 };
 } // namespace parafluid::clouds
