@@ -10,7 +10,9 @@
 //  - optionally, multiple scattering by octaves of fainter, less directional, less absorbed light
 //    (Wrenninge, Kulla & Lundqvist 2013), and the "powder" darkening of edges facing the light
 //    (Schneider & Vos 2015);
-//  - ambient sky light, dimmed by the density above the sample (by the same octaves);
+//  - ambient sky light, dimmed by the density above the sample as diffuse light fades in a
+//    scattering medium, exp(-sqrt(3 (1 - albedo) (1 - g)) tau) (the diffusion approximation of
+//    radiative transfer, e.g. Bohren 1987), by the same octaves;
 //  - a start jittered per pixel (interleaved gradient noise, Jimenez 2014) against banding,
 //    steps that grow through thin air, a jump over empty blocks (a coarse grid of the density's
 //    maxima), and an early exit once the transmittance is below minTransmittance;
@@ -41,6 +43,7 @@ uniform float anisotropy;       // forward lobe g
 uniform int shadows;
 uniform int octaves;            // 1: single scattering
 uniform float powder;           // 0..1
+uniform float diffuseDecay;     // sqrt(3 (1 - albedo) (1 - g)): how fast diffuse light fades with optical depth
 uniform int displayMode;        // 0 lit, 1 samples per pixel
 
 //VTK::Output::Dec
@@ -137,7 +140,7 @@ void main()
       for (int k = 0; k < octaves; ++k)
       {
         sun += weight * exp(-extinction * paths.r * depthScale) * phase(cosTheta, g) * lightColor;
-        sky += weight * exp(-extinction * paths.g * depthScale) * skyColor;
+        sky += weight * exp(-diffuseDecay * extinction * paths.g * depthScale) * skyColor;
         weight *= 0.5;
         depthScale *= 0.5;
         g *= 0.5;

@@ -16,6 +16,7 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <cmath>
 #include <string>
 
 namespace parafluid
@@ -115,6 +116,8 @@ bool CloudMarchPass::Run(vtkOpenGLRenderWindow* window, vtkRenderer* renderer, c
   program->SetUniformi("shadows", s.Shadows && textures.Light() ? 1 : 0);
   program->SetUniformi("octaves", s.Octaves);
   program->SetUniformf("powder", static_cast<float>(s.Powder));
+  program->SetUniformf("diffuseDecay",
+                       static_cast<float>(std::sqrt(3.0 * (1.0 - s.Albedo) * (1.0 - std::abs(s.Anisotropy)))));
   program->SetUniformi("displayMode", s.DisplayMode);
 
   vtkTextureObject* light3D = textures.Light() ? textures.Light() : textures.Density();
