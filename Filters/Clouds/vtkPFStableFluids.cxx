@@ -1,6 +1,7 @@
 #include "vtkPFStableFluids.h"
 
 #include "GuardedRequest.h"
+#include "OutputTimes.h"
 #include "ParameterCheck.h"
 
 #include "parafluid/clouds/CloudShapes.h"
@@ -127,14 +128,7 @@ int vtkPFStableFluids::RequestInformation(vtkInformation*, vtkInformationVector*
   outInfo->Set(vtkDataObject::SPACING(), spacing, 3);
   const double interval =
     this->OutputInterval > 0.0 && std::isfinite(this->OutputInterval) ? this->OutputInterval : 1.0;
-  std::vector<double> times(static_cast<std::size_t>(std::clamp(this->NumberOfOutputs, 0, 100000)) + 1);
-  for (std::size_t k = 0; k < times.size(); ++k)
-  {
-    times[k] = static_cast<double>(k) * interval;
-  }
-  const double range[2] = { times.front(), times.back() };
-  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));
-  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  parafluid::vtk::setOutputTimes(outInfo, 0.0, interval, std::clamp(this->NumberOfOutputs, 0, 100000));
   return 1;
 }
 
@@ -194,10 +188,7 @@ int vtkPFStableFluids::RequestData(vtkInformation*, vtkInformationVector** input
         vtkErrorMacro(<< "Stable Fluids: " << memory << "; lower Resolution");
         return 0;
       }
-      const double requested = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-                                 ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-                                 : 0.0;
-      const long long target = std::clamp<long long>(std::llround(requested / interval), 0, this->NumberOfOutputs);
+      const long long target = parafluid::vtk::requestedOutput(outInfo, 0.0, interval, this->NumberOfOutputs);
 
       vtkDataSet* sources = vtkDataSet::GetData(inputVector[1]);
       Cache& cache = *this->Cached;

@@ -1,6 +1,7 @@
 #include "vtkPFRain.h"
 
 #include "HeightImage.h"
+#include "OutputTimes.h"
 #include "ParameterCheck.h"
 #include "ParticleArrays.h"
 #include "ParticleContract.h"
@@ -105,17 +106,10 @@ int vtkPFRain::RequestInformation(vtkInformation*, vtkInformationVector**, vtkIn
 {
   const double interval =
     this->OutputInterval > 0.0 && std::isfinite(this->OutputInterval) ? this->OutputInterval : 1.0;
-  std::vector<double> times(static_cast<std::size_t>(std::clamp(this->NumberOfOutputs, 0, 100000)) + 1);
-  for (std::size_t k = 0; k < times.size(); ++k)
-  {
-    times[k] = static_cast<double>(k) * interval;
-  }
-  const double range[2] = { times.front(), times.back() };
   for (int port = 0; port < 3; ++port)
   {
-    vtkInformation* outInfo = outputVector->GetInformationObject(port);
-    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));
-    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+    parafluid::vtk::setOutputTimes(outputVector->GetInformationObject(port), 0.0, interval,
+                                   std::clamp(this->NumberOfOutputs, 0, 100000));
   }
   return 1;
 }
@@ -273,11 +267,7 @@ int vtkPFRain::RequestData(vtkInformation*, vtkInformationVector** inputVector, 
     this->ReportError("NumberOfOutputs must be from 0 to 100000 (got " + std::to_string(this->NumberOfOutputs) + ")");
     return 0;
   }
-  double requested = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-                       ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-                       : 0.0;
-  const long long target =
-    std::clamp<long long>(std::llround(requested / interval), 0, static_cast<long long>(this->NumberOfOutputs));
+  const long long target = parafluid::vtk::requestedOutput(outInfo, 0.0, interval, this->NumberOfOutputs);
   const double t = static_cast<double>(target) * interval;
 
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0]);

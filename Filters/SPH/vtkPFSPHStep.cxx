@@ -1,5 +1,6 @@
 #include "vtkPFSPHStep.h"
 
+#include "OutputTimes.h"
 #include "ParticleArrays.h"
 #include "ParticleStateArrays.h"
 #include "TriangleBoundaryFromSurface.h"
@@ -144,14 +145,7 @@ int vtkPFSPHStep::RequestInformation(vtkInformation*, vtkInformationVector** inp
     return 0;
   }
   const double interval = this->OutputInterval > 0.0 ? this->OutputInterval : 1.0;
-  std::vector<double> times(static_cast<std::size_t>(this->NumberOfOutputs) + 1);
-  for (std::size_t k = 0; k < times.size(); ++k)
-  {
-    times[k] = this->StartTime + static_cast<double>(k) * interval;
-  }
-  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));
-  const double range[2] = { times.front(), times.back() };
-  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  parafluid::vtk::setOutputTimes(outInfo, this->StartTime, interval, this->NumberOfOutputs);
   return 1;
 }
 
