@@ -9,6 +9,7 @@
 #include "parafluid/clouds/StableFluids.h"
 #include "parafluid/common/MemoryBudget.h"
 
+#include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -235,10 +236,19 @@ int vtkPFStableFluids::RequestData(vtkInformation*, vtkInformationVector** input
         }
         if (sources && sources->GetNumberOfPoints() > 0)
         {
-          std::vector<double> xyz(3 * static_cast<std::size_t>(sources->GetNumberOfPoints()));
+          // Every point, or with point scalars (a volume: a terrain's valleys, a mask) those
+          // whose scalar is above 0.
+          vtkDataArray* mask = sources->GetPointData()->GetScalars();
+          std::vector<double> xyz;
           for (vtkIdType n = 0; n < sources->GetNumberOfPoints(); ++n)
           {
-            sources->GetPoint(n, &xyz[3 * n]);
+            if (mask && !(mask->GetComponent(n, 0) > 0.0))
+            {
+              continue;
+            }
+            double p[3];
+            sources->GetPoint(n, p);
+            xyz.insert(xyz.end(), p, p + 3);
           }
           cache.Simulation->setPointSources(std::move(xyz));
         }

@@ -7,7 +7,8 @@
  * semi-Lagrangian advection (optionally MacCormack), buoyancy, vorticity confinement, implicit
  * diffusion and a projection to zero divergence by multigrid-preconditioned CG. Density and heat
  * come from an emitter box, from the points of an optional input dataset (particles, a terrain's
- * valleys), and from an optional procedural start (cumulus shapes from 3-D noise).
+ * valleys; with point scalars only the points whose scalar is above 0), and from an optional
+ * procedural start (cumulus shapes from 3-D noise).
  *
  * Output: vtkImageData with point data at the cells' centres: `density`, `temperature` [K],
  * `velocity` [m/s] and, with OutputDivergence, `divergence` [1/s].

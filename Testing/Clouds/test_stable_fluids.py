@@ -63,6 +63,22 @@ rho = pftest.point_array(image, "density").reshape(16, 16, 16)
 k, j, i = np.unravel_index(np.argmax(rho), rho.shape)
 pftest.check((i, j) == (4, 8) and rho.max() > 0.5, "density at the point's cell: %s, %.2f" % ((i, j, k), rho.max()))
 
+# A volume as the sources: only the points whose scalar is above 0 inject (a wavelet image
+# thresholded into a mask: density appears inside the mask's cells and nowhere else).
+mask = Wavelet(WholeExtent=[0, 15, 0, 15, 0, 15])
+masked = Calculator(Input=mask, ResultArrayName="inside", Function="RTData > 250")
+masked_image = fetch(masked, 0.0)
+inside = pftest.point_array(masked_image, "inside")
+# (The grid's cell centres on the wavelet's points; no speed, no buoyancy: after one step the
+# density is where it was injected.)
+from_volume = StableFluids(Sources=masked, Emitter=0, Bounds=[-0.5, 15.5, -0.5, 15.5, -0.5, 15.5],
+                           Resolution=[16, 16, 16], OutputInterval=0.02, TimeStep=0.02, NumberOfOutputs=1,
+                           EmitterSpeed=0.0, BuoyancyHeat=0.0, BuoyancyDensity=0.0, Vorticity=0.0)
+rho = pftest.point_array(fetch(from_volume, 0.02), "density")
+pftest.check(0 < inside.sum() < len(inside), "the mask covers part of the volume (%d points)" % inside.sum())
+pftest.check(np.array_equal(rho > 0.5, inside > 0.5),
+             "density exactly in the masked cells: %d cells with density, %d masked" % ((rho > 0.5).sum(), inside.sum()))
+
 # Procedural clouds: the covered fraction of the sky is near the asked one.
 for coverage in (0.2, 0.6):
     sky = StableFluids(Emitter=0, ProceduralClouds=1, CloudCoverage=coverage, CloudFeatureSize=2.0,
