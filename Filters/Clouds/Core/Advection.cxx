@@ -1,6 +1,7 @@
 // Semi-Lagrangian advection on the staggered grid (Stam 1999), the MacCormack correction (Selle
-// et al. 2008), and for the scalars a conservative variant (after Lentine, Aanjaneya & Fedkiw
-// 2011) with a mass fixer in the manner of Priestley (1993) that keeps MacCormack's sharpness.
+// et al. 2008) for the velocity, and for the scalars a conservative variant (after Lentine,
+// Aanjaneya & Fedkiw 2011) sharpened by BFECC (Kim, Liu, Llamas & Rossignac 2005) around the
+// conservative step, with a mass fixer in the manner of Priestley (1993) for what its clamp adds.
 #include "GridSampling.h"
 #include "parafluid/clouds/GridSolvers.h"
 
@@ -139,7 +140,7 @@ void advectVelocity(StaggeredGrid& g, double dt, bool macCormack)
   g.w = std::move(w);
 }
 
-void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& fields, double dt, bool macCormack,
+void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& fields, double dt, bool sharpen,
                    bool conservative)
 {
   const bool* open = g.anyOpen() ? g.open.data() : nullptr;
@@ -147,7 +148,7 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
   {
     for (const ScalarField& f : fields)
     {
-      *f.field = advectOne(*f.field, g, dt, macCormack, open, f.ambient);
+      *f.field = advectOne(*f.field, g, dt, sharpen, open, f.ambient);
     }
     return;
   }
@@ -266,14 +267,13 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
     }
   }
   std::vector<double> excess(n), scaled(n), low(n);
-  std::vector<double> forward(macCormack ? n : 0), lo(macCormack ? n : 0), hi(macCormack ? n : 0),
-    high(macCormack ? n : 0);
+  std::vector<double> forward(sharpen ? n : 0), lo(sharpen ? n : 0), hi(sharpen ? n : 0), high(sharpen ? n : 0);
   for (const ScalarField& f : fields)
   {
     GridArray& field = *f.field;
     // 3. Low order and conservative: each source cell's excess over ambient shared out exactly
-    // among the cells that draw from it, in proportion to their weights. With MacCormack, the
-    // plain step of the excess from the same traces.
+    // among the cells that draw from it, in proportion to their weights. With the correction,
+    // also the range each trace blends (the clamp of the sharpened result).
 #pragma omp parallel for schedule(static)
     for (long long id = 0; id < static_cast<long long>(n); ++id)
     {
@@ -286,7 +286,7 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
                     double back[3];
                     backOf(id, i, j, k, back);
                     low[id] = readAt(sampler, layout, scaled.data(), back, open, 0.0);
-                    if (macCormack)
+                    if (sharpen)
                     {
                       forward[id] = readAt(sampler, layout, excess.data(), back, open, 0.0, &lo[id], &hi[id]);
                     }
@@ -305,7 +305,7 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
         low[t.index[c]] += t.weight[c] * excess[id];
       }
     }
-    if (!macCormack)
+    if (!sharpen)
     {
       for (std::size_t id = 0; id < n; ++id)
       {
@@ -313,11 +313,50 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
       }
       continue;
     }
-    // 4. High order: MacCormack on the excess.
-    macCormackCorrect(layout, excess.data(), forward, lo, hi, move, open, 0.0, high);
-    // 5. The mass fixer: the high-order result's surplus (or deficit) against the conservative
-    // one is taken back from the cells whose correction carries it, in proportion to that
-    // correction; every cell stays between its low- and high-order values.
+    // 4. High order: BFECC (Kim et al. 2005) with the conservative step: the error of a round
+    // trip (forward conservatively, back plainly) taken out of the field first, then the
+    // conservative step again, clamped to what the trace blended.
+    forEachSample(layout.dims,
+                  [&](int i, int j, int k, std::size_t id)
+                  {
+                    double p[3];
+                    pointOf(layout, i, j, k, p);
+                    const double ahead[3] = { p[0] + move[3 * id], p[1] + move[3 * id + 1], p[2] + move[3 * id + 2] };
+                    const double roundTrip = readAt(sampler, layout, low.data(), ahead, open, 0.0);
+                    forward[id] = excess[id] + 0.5 * (excess[id] - roundTrip);
+                  });
+    for (std::size_t id = 0; id < n; ++id)
+    {
+      scaled[id] = drawn[id] > 0.0 ? forward[id] / drawn[id] : 0.0;
+    }
+    forEachSample(layout.dims,
+                  [&](int i, int j, int k, std::size_t id)
+                  {
+                    double back[3];
+                    backOf(id, i, j, k, back);
+                    high[id] = readAt(sampler, layout, scaled.data(), back, open, 0.0);
+                  });
+    for (std::size_t id : undrawn)
+    {
+      const int i = static_cast<int>(id % layout.dims[0]);
+      const int j = static_cast<int>((id / layout.dims[0]) % layout.dims[1]);
+      const int k = static_cast<int>(id / (static_cast<std::size_t>(layout.dims[0]) * layout.dims[1]));
+      double p[3];
+      pointOf(layout, i, j, k, p);
+      const double ahead[3] = { p[0] + move[3 * id], p[1] + move[3 * id + 1], p[2] + move[3 * id + 2] };
+      const Trilinear t = locate(layout, ahead, open);
+      for (int c = 0; c < 8; ++c)
+      {
+        high[t.index[c]] += t.weight[c] * forward[id];
+      }
+    }
+    for (std::size_t id = 0; id < n; ++id)
+    {
+      high[id] = std::clamp(high[id], lo[id], hi[id]);
+    }
+    // 5. The mass fixer: the clamp's surplus (or deficit) against the conservative result is
+    // taken back from the cells whose correction carries it, in proportion to that correction;
+    // every cell stays between its low- and high-order values.
     double surplus = 0.0, positive = 0.0, negative = 0.0;
     for (std::size_t id = 0; id < n; ++id)
     {

@@ -28,10 +28,12 @@ struct ScalarField
 };
 /// Cell-centred scalars carried by the grid's velocity, sharing one trace. `conservative`: the
 /// total of (value - ambient) is kept exactly with closed walls (each source cell's content
-/// shared out among the cells whose traces draw from it, after Lentine et al. 2011), and with
-/// MacCormack the sharper high-order result is blended back to that total cell by cell
-/// (a mass fixer after Priestley 1993: each cell stays between its low- and high-order values).
-void advectScalars(const StaggeredGrid& grid, const std::vector<ScalarField>& fields, double dt, bool macCormack,
+/// shared out among the cells whose traces draw from it, after Lentine et al. 2011); with
+/// `sharpen` the conservative step is wrapped in BFECC (Kim et al. 2005: the round trip's error
+/// taken out first), clamped to what the trace blended, and blended back to the conserved total
+/// cell by cell (a mass fixer after Priestley 1993: each cell stays between its low- and
+/// high-order values). Not conservative: each field by advect(), MacCormack with `sharpen`.
+void advectScalars(const StaggeredGrid& grid, const std::vector<ScalarField>& fields, double dt, bool sharpen,
                    bool conservative);
 
 /// Outflow minus inflow of each cell's faces divided by h [1/s].

@@ -5,8 +5,8 @@
 //  2. forces: buoyancy w += dt (-alpha density + beta (T - ambient)) (Fedkiw, Stam & Jensen
 //     2001), and vorticity confinement f = epsilon h (N x omega), N the unit gradient of |omega|
 //     (same paper), which puts back the small swirls the grid's numerical diffusion takes out;
-//  3. advection of velocity, density and temperature (semi-Lagrangian, optionally MacCormack;
-//     the scalars conservatively);
+//  3. advection of velocity, density and temperature (semi-Lagrangian; `macCormack` sharpens it:
+//     MacCormack for the velocity, BFECC around the conservative step for the scalars);
 //  4. implicit diffusion (viscosity of the velocity, diffusivity of the scalars);
 //  5. projection to zero divergence (MGPCG from the last step's pressure).
 // Unconditionally stable in dt: the tracing reads values that exist, the solves are implicit.
