@@ -180,6 +180,14 @@ int vtkPFStableFluids::RequestData(vtkInformation*, vtkInformationVector** input
       {
         return 0;
       }
+      // One grid, on the first process: the others give an empty piece (so that under MPI the
+      // cloud is neither simulated nor drawn twice).
+      if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
+          outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
+      {
+        output->Initialize();
+        return 1;
+      }
       const double interval = this->OutputInterval;
       const double cellCount = static_cast<double>(cells[0]) * cells[1] * cells[2];
       // Faces, cells, the pressure, the advection's and the solver's work arrays: ~40 doubles a cell.

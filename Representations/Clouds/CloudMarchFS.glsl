@@ -17,7 +17,9 @@
 //    steps that grow through thin air, a jump over empty blocks (a coarse grid of the density's
 //    maxima), and an early exit once the transmittance is below minTransmittance;
 //  - the ray stops at the opaque scene's depth, and the result is premultiplied: the view's
-//    colour behind is kept in proportion to the transmittance (blend ONE, ONE_MINUS_SRC_ALPHA).
+//    colour behind is kept in proportion to the transmittance (blend ONE, ONE_MINUS_SRC_ALPHA);
+//    under MPI it also writes the depth where it starts to scatter, so that ParaView's depth
+//    compositing keeps it over other processes' background.
 //=========================================================================
 in vec2 texCoord;
 
@@ -45,6 +47,9 @@ uniform int octaves;            // 1: single scattering
 uniform float powder;           // 0..1
 uniform float diffuseDecay;     // sqrt(3 (1 - albedo) (1 - g)): how fast diffuse light fades with optical depth
 uniform int displayMode;        // 0 lit, 1 samples per pixel
+uniform int writeDepth;         // under MPI: the depth of the first sample that scatters, so that
+                                // depth compositing across processes keeps the cloud
+uniform mat4 worldToClip;       // (key form)
 
 //VTK::Output::Dec
 
@@ -108,6 +113,7 @@ void main()
   vec3 blockSize = (boxMax - boxMin) / blockCount;
 
   float transmittance = 1.0;
+  float tFirst = -1.0;
   vec3 radiance = vec3(0.0);
   int samples = 0;
   float step = stepLength;
@@ -130,6 +136,7 @@ void main()
     ++samples;
     if (rho > 0.0)
     {
+      tFirst = tFirst < 0.0 ? t : tFirst;
       float sigmaT = extinction * rho;
       vec2 paths = shadows != 0 ? texture(lightTex, uvw).rg : vec2(0.0);
       // Octave k: a^k of the optical depth, b^k of the light, c^k of the anisotropy (a = b = c = 1/2).
@@ -161,6 +168,12 @@ void main()
       step = min(2.0 * step, 4.0 * stepLength); // thin air: longer strides
     }
     t += dt;
+  }
+  gl_FragDepth = gl_FragCoord.z;
+  if (writeDepth != 0 && tFirst >= 0.0)
+  {
+    vec4 clip = worldToClip * vec4(origin + tFirst * d, 1.0);
+    gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
   }
   if (displayMode == 1)
   {

@@ -87,6 +87,8 @@ bool CloudMarchPass::Run(vtkOpenGLRenderWindow* window, vtkRenderer* renderer, c
   vtkNew<vtkMatrix4x4> dcToWorld;
   vtkMatrix4x4::Invert(wcdc, dcToWorld);
   program->SetUniformMatrix("dcToWorld", dcToWorld);
+  program->SetUniformMatrix("worldToClip", wcdc);
+  program->SetUniformi("writeDepth", s.WriteDepth ? 1 : 0);
   const float size[2] = { static_cast<float>(width), static_cast<float>(height) };
   program->SetUniform2f("viewportSize", size);
   const double* box = textures.Box();
@@ -133,11 +135,21 @@ bool CloudMarchPass::Run(vtkOpenGLRenderWindow* window, vtkRenderer* renderer, c
   vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
   vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+  vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
   vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
   vtkOpenGLState::ScopedglViewport savedViewport(state);
   state->vtkglViewport(x0, y0, width, height);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
+  if (s.WriteDepth)
+  {
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_ALWAYS); // the march already stopped at the opaque depth
+    state->vtkglDepthMask(GL_TRUE);
+  }
+  else
+  {
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_FALSE);
+  }
   if (s.DisplayMode == 1)
   {
     state->vtkglDisable(GL_BLEND);

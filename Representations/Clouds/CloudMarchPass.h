@@ -29,7 +29,8 @@ struct CloudMarchSettings
   bool Shadows = true;
   int Octaves = 3;
   double Powder = 0.0;
-  int DisplayMode = 0; // 0 lit, 1 samples per pixel
+  int DisplayMode = 0;     // 0 lit, 1 samples per pixel
+  bool WriteDepth = false; // under MPI (depth compositing across processes)
 };
 
 class CloudMarchPass

@@ -9,6 +9,7 @@
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
@@ -191,6 +192,8 @@ void vtkPFVolumetricCloudMapper::Render(vtkRenderer* renderer, vtkVolume*)
   s.Octaves = this->Octaves;
   s.Powder = this->Powder;
   s.DisplayMode = this->DisplayMode;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  s.WriteDepth = controller && controller->GetNumberOfProcesses() > 1;
   if (!this->GPU->Pass.Run(window, renderer, textures, s))
   {
     vtkErrorMacro("The volumetric cloud shader did not compile (see the messages above).");
