@@ -3,8 +3,6 @@ simulates, the others give an empty piece), and the cloud drawn once: the compos
 a uniform slab over a white background lets exp(-sigma L) through, as one process draws it."""
 import numpy as np
 from paraview.simple import *
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 import pftest
 
 pftest.load(globals())
@@ -47,14 +45,8 @@ view.CameraFocalPoint = [0.8, 0.8, 0.0]
 view.CameraViewUp = [0.0, 1.0, 0.0]
 view.CameraParallelProjection = 1
 view.CameraParallelScale = 1.2
-Render(view)
-grab = vtkWindowToImageFilter()
-grab.SetInput(view.GetRenderWindow())
-grab.ReadFrontBufferOff()
-grab.Update()
-out = grab.GetOutput()
-w, h, _ = out.GetDimensions()
-image = vtk_to_numpy(out.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3].astype(float)
+image = pftest.grab(view)
+h, w, _ = image.shape
 centre = image[h // 2 - 10:h // 2 + 10, w // 2 - 10:w // 2 + 10].mean() / 255.0
 expected = np.exp(-0.75 * 1.6)
 print("2 ranks: slab transmittance %.4f, exp(-sigma L) %.4f" % (centre, expected))

@@ -12,8 +12,6 @@ import builtins  # paraview.simple's star import shadows min, max and abs
 
 import numpy as np
 from paraview.simple import *
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 import pftest
 
 pftest.load(globals())
@@ -28,14 +26,7 @@ view.Background = [1.0, 1.0, 1.0]
 
 
 def grab():
-    Render(view)
-    g = vtkWindowToImageFilter()
-    g.SetInput(view.GetRenderWindow())
-    g.ReadFrontBufferOff()
-    g.Update()
-    out = g.GetOutput()
-    w, h, _ = out.GetDimensions()
-    return vtk_to_numpy(out.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3].astype(float)
+    return pftest.grab(view)
 
 
 def look_down(scale):

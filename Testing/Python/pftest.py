@@ -171,6 +171,22 @@ class OutputWindowMessages:
         self.tags = []
 
 
+def grab(view):
+    """The view rendered now, as an (height, width, 3) float array of 0..255 (back buffer)."""
+    from paraview.simple import Render
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+
+    Render(view)
+    grabber = vtkWindowToImageFilter()
+    grabber.SetInput(view.GetRenderWindow())
+    grabber.ReadFrontBufferOff()
+    grabber.Update()
+    out = grabber.GetOutput()
+    w, h, _ = out.GetDimensions()
+    return vtk_to_numpy(out.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3].astype(float)
+
+
 def check(condition, message):
     if not condition:
         print("FAILED: " + message, file=sys.stderr)
