@@ -184,12 +184,20 @@ void StableFluids::confineVorticity(double dt)
   StaggeredGrid& g = this->Grid;
   const int nx = g.nx, ny = g.ny, nz = g.nz;
   const std::size_t n = g.cells();
-  // Cell-centred velocity, then vorticity by central differences (one-sided at the walls).
-  std::vector<double> c[3];
-  for (auto& comp : c)
+  // Cell-centred velocity, then vorticity by central differences (one-sided at the walls). The
+  // arrays are kept between steps (every entry is written below): allocating ten grids a step
+  // cost as much as the arithmetic.
+  std::vector<double>* c = this->Scratch.centre;
+  std::vector<double>* omega = this->Scratch.vorticity;
+  std::vector<double>* force = this->Scratch.force;
+  std::vector<double>& magnitude = this->Scratch.magnitude;
+  for (int a = 0; a < 3; ++a)
   {
-    comp.assign(n, 0.0);
+    c[a].resize(n);
+    omega[a].resize(n);
+    force[a].resize(n);
   }
+  magnitude.resize(n);
   const GridArray& cell = g.density;
 #pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
@@ -201,20 +209,17 @@ void StableFluids::confineVorticity(double dt)
         c[1][id] = 0.5 * (g.v.at(i, j, k) + g.v.at(i, j + 1, k));
         c[2][id] = 0.5 * (g.w.at(i, j, k) + g.w.at(i, j, k + 1));
       }
+  // d f / d axis at cell (i, j, k) = id: central, one-sided at the walls.
+  const std::size_t stride[3] = { 1, static_cast<std::size_t>(nx), static_cast<std::size_t>(nx) * ny };
+  const int dims[3] = { nx, ny, nz };
   auto d = [&](const std::vector<double>& f, int i, int j, int k, int axis)
   {
-    int a[3] = { i, j, k }, b[3] = { i, j, k };
-    const int dims[3] = { nx, ny, nz };
-    a[axis] = std::max(a[axis] - 1, 0);
-    b[axis] = std::min(b[axis] + 1, dims[axis] - 1);
-    const double span = (b[axis] - a[axis]) * g.h;
-    return span > 0.0 ? (f[cell.index(b[0], b[1], b[2])] - f[cell.index(a[0], a[1], a[2])]) / span : 0.0;
+    const int at = axis == 0 ? i : (axis == 1 ? j : k);
+    const std::size_t id = (static_cast<std::size_t>(k) * ny + j) * nx + i;
+    const bool below = at > 0, above = at < dims[axis] - 1;
+    const int cells = below + above;
+    return cells > 0 ? (f[above ? id + stride[axis] : id] - f[below ? id - stride[axis] : id]) / (cells * g.h) : 0.0;
   };
-  std::vector<double> omega[3], magnitude(n);
-  for (auto& comp : omega)
-  {
-    comp.assign(n, 0.0);
-  }
 #pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
@@ -227,11 +232,6 @@ void StableFluids::confineVorticity(double dt)
         magnitude[id] =
           std::sqrt(omega[0][id] * omega[0][id] + omega[1][id] * omega[1][id] + omega[2][id] * omega[2][id]);
       }
-  std::vector<double> force[3];
-  for (auto& comp : force)
-  {
-    comp.assign(n, 0.0);
-  }
 #pragma omp parallel for schedule(static)
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
@@ -242,6 +242,7 @@ void StableFluids::confineVorticity(double dt)
         const double len = std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]);
         if (len < 1e-12)
         {
+          force[0][id] = force[1][id] = force[2][id] = 0.0;
           continue;
         }
         for (double& v : N)

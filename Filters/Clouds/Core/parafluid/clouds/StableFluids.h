@@ -78,6 +78,11 @@ private:
   StaggeredGrid Grid;
   SolveReport Projection;
   StepTimings Timings;
+  /// Vorticity confinement's arrays, kept between steps.
+  struct
+  {
+    std::vector<double> centre[3], vorticity[3], force[3], magnitude;
+  } Scratch;
   std::vector<double> PointSources;
 };
 } // namespace parafluid::clouds
