@@ -266,6 +266,24 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
       undrawn.push_back(id);
     }
   }
+  // The cells no trace draws from give `content` forward, along their own displacement.
+  auto pushForward = [&](const std::vector<double>& content, std::vector<double>& out)
+  {
+    for (std::size_t id : undrawn)
+    {
+      const int i = static_cast<int>(id % layout.dims[0]);
+      const int j = static_cast<int>((id / layout.dims[0]) % layout.dims[1]);
+      const int k = static_cast<int>(id / (static_cast<std::size_t>(layout.dims[0]) * layout.dims[1]));
+      double p[3];
+      pointOf(layout, i, j, k, p);
+      const double ahead[3] = { p[0] + move[3 * id], p[1] + move[3 * id + 1], p[2] + move[3 * id + 2] };
+      const Trilinear t = locate(layout, ahead, open);
+      for (int c = 0; c < 8; ++c)
+      {
+        out[t.index[c]] += t.weight[c] * content[id];
+      }
+    }
+  };
   std::vector<double> excess(n), scaled(n), low(n);
   std::vector<double> forward(sharpen ? n : 0), lo(sharpen ? n : 0), hi(sharpen ? n : 0), high(sharpen ? n : 0);
   for (const ScalarField& f : fields)
@@ -291,20 +309,7 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
                       forward[id] = readAt(sampler, layout, excess.data(), back, open, 0.0, &lo[id], &hi[id]);
                     }
                   });
-    for (std::size_t id : undrawn)
-    {
-      const int i = static_cast<int>(id % layout.dims[0]);
-      const int j = static_cast<int>((id / layout.dims[0]) % layout.dims[1]);
-      const int k = static_cast<int>(id / (static_cast<std::size_t>(layout.dims[0]) * layout.dims[1]));
-      double p[3];
-      pointOf(layout, i, j, k, p);
-      const double ahead[3] = { p[0] + move[3 * id], p[1] + move[3 * id + 1], p[2] + move[3 * id + 2] };
-      const Trilinear t = locate(layout, ahead, open);
-      for (int c = 0; c < 8; ++c)
-      {
-        low[t.index[c]] += t.weight[c] * excess[id];
-      }
-    }
+    pushForward(excess, low);
     if (!sharpen)
     {
       for (std::size_t id = 0; id < n; ++id)
@@ -336,20 +341,7 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
                     backOf(id, i, j, k, back);
                     high[id] = readAt(sampler, layout, scaled.data(), back, open, 0.0);
                   });
-    for (std::size_t id : undrawn)
-    {
-      const int i = static_cast<int>(id % layout.dims[0]);
-      const int j = static_cast<int>((id / layout.dims[0]) % layout.dims[1]);
-      const int k = static_cast<int>(id / (static_cast<std::size_t>(layout.dims[0]) * layout.dims[1]));
-      double p[3];
-      pointOf(layout, i, j, k, p);
-      const double ahead[3] = { p[0] + move[3 * id], p[1] + move[3 * id + 1], p[2] + move[3 * id + 2] };
-      const Trilinear t = locate(layout, ahead, open);
-      for (int c = 0; c < 8; ++c)
-      {
-        high[t.index[c]] += t.weight[c] * forward[id];
-      }
-    }
+    pushForward(forward, high);
     for (std::size_t id = 0; id < n; ++id)
     {
       high[id] = std::clamp(high[id], lo[id], hi[id]);
