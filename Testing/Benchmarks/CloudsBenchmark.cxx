@@ -3,7 +3,7 @@
 // against its iterations with the multigrid and the Jacobi preconditioner; and the same pressure
 // solve by Eigen's ConjugateGradient (incomplete Cholesky and diagonal preconditioners) on the
 // assembled 7-point matrix, the peer for "Eigen or the hand-written matrix-free CG".
-// Run: build/bin/ParaFluidCloudsBenchmark [--quick]
+// Run: build/bin/ParaFluidCloudsBenchmark [--quick | --steps]
 #include "parafluid/clouds/GridSolvers.h"
 #include "parafluid/clouds/StableFluids.h"
 
@@ -237,9 +237,15 @@ void eigenPeer(int n)
 
 int main(int argc, char** argv)
 {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  // --steps: the step times at 32^3 and 64^3 only.
+  const bool steps = argc > 1 && std::strcmp(argv[1], "--steps") == 0;
+  const bool quick = steps || (argc > 1 && std::strcmp(argv[1], "--quick") == 0);
   stepTimes(quick, false);
   stepTimes(quick, true);
+  if (steps)
+  {
+    return 0;
+  }
   projectionError(64);
   eigenPeer(quick ? 32 : 64);
   return 0;

@@ -3,6 +3,7 @@
 // Aanjaneya & Fedkiw 2011) sharpened by BFECC (Kim, Liu, Llamas & Rossignac 2005) around the
 // conservative step, with a mass fixer in the manner of Priestley (1993) for what its clamp adds.
 #include "GridSampling.h"
+#include "RowSampling.h"
 #include "parafluid/clouds/GridSolvers.h"
 
 #include <algorithm>
@@ -12,7 +13,9 @@ namespace parafluid::clouds
 {
 using detail::DirectSampler;
 using detail::locate;
-using detail::SampleVelocity;
+using detail::readRow;
+using detail::RowLayout;
+using detail::RowVelocity;
 using detail::Trilinear;
 using detail::velocityAt;
 
@@ -26,19 +29,68 @@ inline void pointOf(const GridArray& a, int i, int j, int k, double p[3])
   p[2] = k + a.offset[2];
 }
 
-template<class Body>
-void forEachSample(const std::array<int, 3>& dims, Body body)
+// A thread's row buffers: the trace ends of a row's samples (x, y, z in cell units) and a row of
+// values.
+struct Rows
 {
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < dims[2]; ++k)
+  explicit Rows(int n)
+    : storage(4 * static_cast<std::size_t>(n))
+    , x(storage.data())
+    , y(x + n)
+    , z(y + n)
+    , values(z + n)
   {
-    for (int j = 0; j < dims[1]; ++j)
+  }
+  std::vector<double> storage;
+  double *x, *y, *z, *values;
+};
+
+// Calls body(j, k, row, rows) for every row of `layout` (row: the index of its first sample), the
+// rows side by side on the threads, each thread with its own buffers.
+template<class Body>
+void forEachRow(const GridArray& layout, Body body)
+{
+  const auto& dims = layout.dims;
+#pragma omp parallel
+  {
+    Rows rows(dims[0]);
+#pragma omp for schedule(static)
+    for (int k = 0; k < dims[2]; ++k)
     {
-      for (int i = 0; i < dims[0]; ++i)
+      for (int j = 0; j < dims[1]; ++j)
       {
-        body(i, j, k, (static_cast<std::size_t>(k) * dims[1] + j) * dims[0] + i);
+        body(j, k, layout.index(0, j, k), rows);
       }
     }
+  }
+}
+
+// rows.x, .y, .z = the samples of row (j, k) moved by `scale` times the grid's velocity there
+// (cell units; scale = -dt / h traces back).
+void traceWithVelocity(const RowVelocity& velocity, const GridArray& layout, int j, int k, double scale, Rows& r)
+{
+  double* const v[3] = { r.x, r.y, r.z };
+  velocity.row(j, k, v);
+  const double px = layout.offset[0], py = j + layout.offset[1], pz = k + layout.offset[2];
+  for (int i = 0; i < layout.dims[0]; ++i)
+  {
+    r.x[i] = i + px + scale * r.x[i];
+    r.y[i] = py + scale * r.y[i];
+    r.z[i] = pz + scale * r.z[i];
+  }
+}
+
+// rows.x, .y, .z = the samples of row (j, k) (first index `row`) moved by `sign` times their
+// displacement over the step (`move`, cells).
+void traceWithMove(const GridArray& layout, const float* move, std::size_t row, int j, int k, double sign, Rows& r)
+{
+  const float* m = move + 3 * row;
+  const double px = layout.offset[0], py = j + layout.offset[1], pz = k + layout.offset[2];
+  for (int i = 0; i < layout.dims[0]; ++i)
+  {
+    r.x[i] = i + px + sign * m[3 * i];
+    r.y[i] = py + sign * m[3 * i + 1];
+    r.z[i] = pz + sign * m[3 * i + 2];
   }
 }
 
@@ -61,65 +113,91 @@ inline double readAt(const DirectSampler& sampler, const GridArray& layout, cons
   return t.apply(data) + t.outside * ambient;
 }
 
-// The MacCormack correction of `forward` (the plain step of `source`, whose blended range is
-// lo..hi): the result traced forward again by `move` (each sample's displacement over the step,
-// in cells), half the round trip's error added back, clamped to the range. The forward Euler
-// trace is enough here: the round trip measures its error together with the interpolation's,
-// and the correction removes both to second order in smooth flow.
-void macCormackCorrect(const GridArray& layout, const double* source, const std::vector<double>& forward,
-                       const std::vector<double>& lo, const std::vector<double>& hi, const std::vector<float>& move,
-                       const bool* open, double ambient, std::vector<double>& result)
+// out[i] (and the ranges lo, hi when given) = `data` at the row's trace ends: the vectorised read
+// for all, then the general one for the few beyond an open face, where the ambient weighs in.
+void readTraced(const GridArray& layout, const DirectSampler& sampler, const double* data, const Rows& r,
+                const bool* open, double ambient, double* out, double* lo = nullptr, double* hi = nullptr)
 {
-  const DirectSampler sampler(layout);
-  forEachSample(layout.dims,
-                [&](int i, int j, int k, std::size_t id)
-                {
-                  double p[3];
-                  pointOf(layout, i, j, k, p);
-                  const double ahead[3] = { p[0] + move[3 * id], p[1] + move[3 * id + 1], p[2] + move[3 * id + 2] };
-                  const double roundTrip = readAt(sampler, layout, forward.data(), ahead, open, ambient);
-                  const double corrected = forward[id] + 0.5 * (source[id] - roundTrip);
-                  result[id] = std::clamp(corrected, lo[id], hi[id]);
-                });
+  const int count = layout.dims[0];
+  readRow(RowLayout(layout), data, r.x, r.y, r.z, count, out, lo, hi);
+  if (!open)
+  {
+    return;
+  }
+  for (int i = 0; i < count; ++i)
+  {
+    const double p[3] = { r.x[i], r.y[i], r.z[i] };
+    if (sampler.beyond(p, open))
+    {
+      out[i] = readAt(sampler, layout, data, p, open, ambient, lo ? lo + i : nullptr, hi ? hi + i : nullptr);
+    }
+  }
+}
+
+// Calls f(index, weight) for the samples of `layout` a read at p blends (open faces: those
+// inside the box only; the rest of the weight is the ambient's).
+template<class F>
+inline void forCornersAt(const DirectSampler& sampler, const GridArray& layout, const double p[3], const bool* open,
+                         F&& f)
+{
+  if (!sampler.beyond(p, open))
+  {
+    sampler.forCorners(p, f);
+    return;
+  }
+  const Trilinear t = locate(layout, p, open);
+  for (int c = 0; c < 8; ++c)
+  {
+    if (t.weight[c] > 0.0)
+    {
+      f(t.index[c], t.weight[c]);
+    }
+  }
 }
 
 // One semi-Lagrangian step of `field` (ambient `ambient` beyond the open faces `open`, when
 // given): each sample traced back by the velocity at the sample (dt * v / h cells) and read
-// there; with MacCormack, corrected.
+// there. With MacCormack, that result traced forward again the same way, half the round trip's
+// error added back, clamped to the range the backward read blended. The forward Euler trace is
+// enough here: the round trip measures its error together with the interpolation's, and the
+// correction removes both to second order in smooth flow.
 GridArray advectOne(const GridArray& field, const StaggeredGrid& g, double dt, bool macCormack, const bool* open,
                     double ambient)
 {
   const double s = dt / g.h;
   const std::size_t n = field.values.size();
-  GridArray result = field;
+  GridArray result;
+  result.dims = field.dims;
+  result.offset = field.offset;
+  result.values.resize(n);
   std::vector<double> forward(macCormack ? n : 0), lo(macCormack ? n : 0), hi(macCormack ? n : 0);
-  std::vector<float> move(macCormack ? 3 * n : 0);
   std::vector<double>& plain = macCormack ? forward : result.values;
   const double* source = field.values.data();
-  const SampleVelocity velocity(g, field);
+  const RowVelocity velocity(g, field);
   const DirectSampler sampler(field);
-  forEachSample(field.dims,
-                [&](int i, int j, int k, std::size_t id)
-                {
-                  double p[3], v[3];
-                  pointOf(field, i, j, k, p);
-                  velocity.at(i, j, k, v);
-                  const double back[3] = { p[0] - s * v[0], p[1] - s * v[1], p[2] - s * v[2] };
-                  if (!macCormack)
-                  {
-                    plain[id] = readAt(sampler, field, source, back, open, ambient);
-                    return;
-                  }
-                  plain[id] = readAt(sampler, field, source, back, open, ambient, &lo[id], &hi[id]);
-                  for (int c = 0; c < 3; ++c)
-                  {
-                    move[3 * id + c] = static_cast<float>(s * v[c]);
-                  }
-                });
-  if (macCormack)
+  forEachRow(field,
+             [&](int j, int k, std::size_t row, Rows& r)
+             {
+               traceWithVelocity(velocity, field, j, k, -s, r);
+               readTraced(field, sampler, source, r, open, ambient, plain.data() + row,
+                          macCormack ? lo.data() + row : nullptr, macCormack ? hi.data() + row : nullptr);
+             });
+  if (!macCormack)
   {
-    macCormackCorrect(field, source, forward, lo, hi, move, open, ambient, result.values);
+    return result;
   }
+  forEachRow(field,
+             [&](int j, int k, std::size_t row, Rows& r)
+             {
+               traceWithVelocity(velocity, field, j, k, s, r);
+               readTraced(field, sampler, forward.data(), r, open, ambient, r.values);
+               for (int i = 0; i < field.dims[0]; ++i)
+               {
+                 const std::size_t id = row + i;
+                 const double corrected = forward[id] + 0.5 * (source[id] - r.values[i]);
+                 result.values[id] = std::clamp(corrected, lo[id], hi[id]);
+               }
+             });
   return result;
 }
 } // namespace
@@ -155,37 +233,34 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
   const GridArray& layout = g.density;
   const std::size_t n = g.cells();
   const double s = dt / g.h;
-  const SampleVelocity velocity(g, layout);
   const DirectSampler sampler(layout);
   // 1. Each cell's displacement over the step [cells] (its trace starts at p - move).
   std::vector<float> move(3 * n);
   double fastest = 0.0;
   for (const GridArray* f : { &g.u, &g.v, &g.w })
   {
-    for (double value : f->values)
+    const double* values = f->values.data();
+    const long long count = static_cast<long long>(f->values.size());
+#pragma omp parallel for schedule(static) reduction(max : fastest)
+    for (long long c = 0; c < count; ++c)
     {
-      fastest = std::max(fastest, std::abs(value));
+      fastest = std::max(fastest, std::abs(values[c]));
     }
   }
-  forEachSample(layout.dims,
-                [&](int i, int j, int k, std::size_t id)
-                {
-                  double v[3];
-                  velocity.at(i, j, k, v);
-                  for (int c = 0; c < 3; ++c)
-                  {
-                    move[3 * id + c] = static_cast<float>(s * v[c]);
-                  }
-                });
-  auto backOf = [&](std::size_t id, int i, int j, int k, double back[3])
-  {
-    double p[3];
-    pointOf(layout, i, j, k, p);
-    for (int c = 0; c < 3; ++c)
-    {
-      back[c] = p[c] - move[3 * id + c];
-    }
-  };
+  const RowVelocity velocity(g, layout);
+  forEachRow(layout,
+             [&](int j, int k, std::size_t row, Rows& r)
+             {
+               double* const v[3] = { r.x, r.y, r.z };
+               velocity.row(j, k, v);
+               for (int i = 0; i < layout.dims[0]; ++i)
+               {
+                 for (int c = 0; c < 3; ++c)
+                 {
+                   move[3 * (row + i) + c] = static_cast<float>(s * v[c][i]);
+                 }
+               }
+             });
   // 2. How much of each source cell the traces draw in all ("drawn"). A trace reaches at most
   // `reach` slabs from its cell, so slabs in blocks more than twice that apart never write the
   // same source: the even blocks run side by side, then the odd ones (no atomics).
@@ -196,22 +271,22 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
   const int blocks = (nz + block - 1) / block;
   for (int phase = 0; phase < 2; ++phase)
   {
-#pragma omp parallel for schedule(dynamic)
-    for (int b = phase; b < blocks; b += 2)
+#pragma omp parallel
     {
-      for (int k = b * block; k < std::min((b + 1) * block, nz); ++k)
+      Rows r(layout.dims[0]);
+#pragma omp for schedule(dynamic)
+      for (int b = phase; b < blocks; b += 2)
       {
-        for (int j = 0; j < layout.dims[1]; ++j)
+        for (int k = b * block; k < std::min((b + 1) * block, nz); ++k)
         {
-          for (int i = 0; i < layout.dims[0]; ++i)
+          for (int j = 0; j < layout.dims[1]; ++j)
           {
-            const std::size_t id = layout.index(i, j, k);
-            double back[3];
-            backOf(id, i, j, k, back);
-            const Trilinear t = locate(layout, back, open);
-            for (int c = 0; c < 8; ++c)
+            traceWithMove(layout, move.data(), layout.index(0, j, k), j, k, -1.0, r);
+            for (int i = 0; i < layout.dims[0]; ++i)
             {
-              drawn[t.index[c]] += t.weight[c];
+              const double back[3] = { r.x[i], r.y[i], r.z[i] };
+              forCornersAt(sampler, layout, back, open,
+                           [&](std::size_t index, double weight) { drawn[index] += weight; });
             }
           }
         }
@@ -277,11 +352,8 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
       double p[3];
       pointOf(layout, i, j, k, p);
       const double ahead[3] = { p[0] + move[3 * id], p[1] + move[3 * id + 1], p[2] + move[3 * id + 2] };
-      const Trilinear t = locate(layout, ahead, open);
-      for (int c = 0; c < 8; ++c)
-      {
-        out[t.index[c]] += t.weight[c] * content[id];
-      }
+      forCornersAt(sampler, layout, ahead, open,
+                   [&](std::size_t index, double weight) { out[index] += weight * content[id]; });
     }
   };
   std::vector<double> excess(n), scaled(n), low(n);
@@ -298,21 +370,22 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
       excess[id] = field.values[id] - f.ambient;
       scaled[id] = drawn[id] > 0.0 ? excess[id] / drawn[id] : 0.0;
     }
-    forEachSample(layout.dims,
-                  [&](int i, int j, int k, std::size_t id)
-                  {
-                    double back[3];
-                    backOf(id, i, j, k, back);
-                    low[id] = readAt(sampler, layout, scaled.data(), back, open, 0.0);
-                    if (sharpen)
-                    {
-                      forward[id] = readAt(sampler, layout, excess.data(), back, open, 0.0, &lo[id], &hi[id]);
-                    }
-                  });
+    forEachRow(layout,
+               [&](int j, int k, std::size_t row, Rows& r)
+               {
+                 traceWithMove(layout, move.data(), row, j, k, -1.0, r);
+                 readTraced(layout, sampler, scaled.data(), r, open, 0.0, low.data() + row);
+                 if (sharpen)
+                 {
+                   readTraced(layout, sampler, excess.data(), r, open, 0.0, forward.data() + row, lo.data() + row,
+                              hi.data() + row);
+                 }
+               });
     pushForward(excess, low);
     if (!sharpen)
     {
-      for (std::size_t id = 0; id < n; ++id)
+#pragma omp parallel for schedule(static)
+      for (long long id = 0; id < static_cast<long long>(n); ++id)
       {
         field.values[id] = low[id] + f.ambient;
       }
@@ -321,40 +394,42 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
     // 4. High order: BFECC (Kim et al. 2005) with the conservative step: the error of a round
     // trip (forward conservatively, back plainly) taken out of the field first, then the
     // conservative step again, clamped to what the trace blended.
-    forEachSample(layout.dims,
-                  [&](int i, int j, int k, std::size_t id)
-                  {
-                    double p[3];
-                    pointOf(layout, i, j, k, p);
-                    const double ahead[3] = { p[0] + move[3 * id], p[1] + move[3 * id + 1], p[2] + move[3 * id + 2] };
-                    const double roundTrip = readAt(sampler, layout, low.data(), ahead, open, 0.0);
-                    forward[id] = excess[id] + 0.5 * (excess[id] - roundTrip);
-                  });
-    for (std::size_t id = 0; id < n; ++id)
+    forEachRow(layout,
+               [&](int j, int k, std::size_t row, Rows& r)
+               {
+                 traceWithMove(layout, move.data(), row, j, k, 1.0, r);
+                 readTraced(layout, sampler, low.data(), r, open, 0.0, r.values);
+                 for (int i = 0; i < layout.dims[0]; ++i)
+                 {
+                   const std::size_t id = row + i;
+                   forward[id] = excess[id] + 0.5 * (excess[id] - r.values[i]);
+                 }
+               });
+#pragma omp parallel for schedule(static)
+    for (long long id = 0; id < static_cast<long long>(n); ++id)
     {
       scaled[id] = drawn[id] > 0.0 ? forward[id] / drawn[id] : 0.0;
     }
-    forEachSample(layout.dims,
-                  [&](int i, int j, int k, std::size_t id)
-                  {
-                    double back[3];
-                    backOf(id, i, j, k, back);
-                    high[id] = readAt(sampler, layout, scaled.data(), back, open, 0.0);
-                  });
+    forEachRow(layout,
+               [&](int j, int k, std::size_t row, Rows& r)
+               {
+                 traceWithMove(layout, move.data(), row, j, k, -1.0, r);
+                 readTraced(layout, sampler, scaled.data(), r, open, 0.0, high.data() + row);
+               });
     pushForward(forward, high);
-    for (std::size_t id = 0; id < n; ++id)
-    {
-      high[id] = std::clamp(high[id], lo[id], hi[id]);
-    }
+
     // 5. The mass fixer: the clamp's surplus (or deficit) against the conservative result is
     // taken back from the cells whose correction carries it, in proportion to that correction;
     // every cell stays between its low- and high-order values.
     double surplus = 0.0, positive = 0.0, negative = 0.0;
-    for (std::size_t id = 0; id < n; ++id)
+#pragma omp parallel for schedule(static) reduction(+ : surplus, positive, negative)
+    for (long long id = 0; id < static_cast<long long>(n); ++id)
     {
+      high[id] = std::clamp(high[id], lo[id], hi[id]);
       const double d = high[id] - low[id];
       surplus += d;
-      (d > 0.0 ? positive : negative) += d;
+      positive += std::max(d, 0.0);
+      negative += std::min(d, 0.0);
     }
     double keepPositive = 1.0, keepNegative = 1.0;
     if (surplus > 0.0 && positive > 0.0)
@@ -365,7 +440,8 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
     {
       keepNegative = std::clamp(-positive / negative, 0.0, 1.0);
     }
-    for (std::size_t id = 0; id < n; ++id)
+#pragma omp parallel for schedule(static)
+    for (long long id = 0; id < static_cast<long long>(n); ++id)
     {
       const double d = high[id] - low[id];
       field.values[id] = f.ambient + low[id] + d * (d > 0.0 ? keepPositive : keepNegative);

@@ -39,24 +39,27 @@ void subtractMean(std::vector<double>& v)
 
 SolveReport conjugateGradients(const LinearMap& A, const LinearMap& preconditioner, const std::vector<double>& b,
                                std::vector<double>& x, double tolerance, int maxIterations, bool removeMean,
-                               double scale)
+                               double scale, const LinearMapDot& ADot)
 {
   const long long n = static_cast<long long>(b.size());
   std::vector<double> r(n), z(n), p(n), q(n);
   A(x, q);
-#pragma omp parallel for schedule(static)
+  double rr = 0.0, bb = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : rr, bb)
   for (long long i = 0; i < n; ++i)
   {
     r[i] = b[i] - q[i];
+    rr += r[i] * r[i];
+    bb += b[i] * b[i];
   }
-  const double bNorm = std::max(std::sqrt(dot(b, b)), scale);
+  const double bNorm = std::max(std::sqrt(bb), scale);
   SolveReport report;
   if (bNorm == 0.0)
   {
     std::fill(x.begin(), x.end(), 0.0);
     return report;
   }
-  report.residual = std::sqrt(dot(r, r)) / bNorm;
+  report.residual = std::sqrt(rr) / bNorm;
   if (report.residual <= tolerance)
   {
     return report;
@@ -70,16 +73,28 @@ SolveReport conjugateGradients(const LinearMap& A, const LinearMap& precondition
   double rz = dot(r, z);
   while (report.residual > tolerance && report.iterations < maxIterations)
   {
-    A(p, q);
-    const double alpha = rz / dot(p, q);
-#pragma omp parallel for schedule(static)
+    // q = A p and p . q, in one pass where the operator offers it.
+    double pq = 0.0;
+    if (ADot)
+    {
+      pq = ADot(p, q);
+    }
+    else
+    {
+      A(p, q);
+      pq = dot(p, q);
+    }
+    const double alpha = rz / pq;
+    rr = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : rr)
     for (long long i = 0; i < n; ++i)
     {
       x[i] += alpha * p[i];
       r[i] -= alpha * q[i];
+      rr += r[i] * r[i];
     }
     ++report.iterations;
-    report.residual = std::sqrt(dot(r, r)) / bNorm;
+    report.residual = std::sqrt(rr) / bNorm;
     if (report.residual <= tolerance)
     {
       break;

@@ -171,6 +171,32 @@ public:
     return y0 + f[2] * (y1 - y0);
   }
   double at(const double p[3], double* lo = nullptr, double* hi = nullptr) const { return at(Data, p, lo, hi); }
+  /// Calls f(index, weight) for the 8 corners around p (clamped at the ends as at() reads them):
+  /// the scatter that is at()'s transpose.
+  template<class F>
+  void forCorners(const double p[3], F&& f) const
+  {
+    std::size_t base = 0, step[3];
+    double w[3][2];
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      const int n = N[axis];
+      const double c = std::min(std::max(p[axis] - Offset[axis], 0.0), static_cast<double>(n - 1));
+      const int i = std::min(static_cast<int>(c), std::max(n - 2, 0));
+      w[axis][1] = c - i;
+      w[axis][0] = 1.0 - w[axis][1];
+      base += Stride[axis] * static_cast<std::size_t>(i);
+      step[axis] = n > 1 ? Stride[axis] : 0;
+    }
+    for (int dz = 0; dz < 2; ++dz)
+      for (int dy = 0; dy < 2; ++dy)
+      {
+        const std::size_t row = base + dy * step[1] + dz * step[2];
+        const double wyz = w[1][dy] * w[2][dz];
+        f(row, wyz * w[0][0]);
+        f(row + step[0], wyz * w[0][1]);
+      }
+  }
   /// Whether p lies more than half a cell beyond one of the `open` faces (there the ambient
   /// value weighs in: the generic locate() handles it).
   bool beyond(const double p[3], const bool* open) const
@@ -205,50 +231,68 @@ inline void velocityAt(const StaggeredGrid& g, const double p[3], double v[3])
   v[2] = locateClamped(g.w, p).apply(g.w.values.data());
 }
 
-/// The velocity [m/s] at the samples of an array laid out as `a` (a face array or the cells):
-/// the trilinear value there, from the one, two or four samples of each component around it.
-class SampleVelocity
+/// The velocity [m/s] at the samples of an array laid out as `a` (a face array or the cells), a
+/// row at a time: the trilinear value there, the mean of the one, two or four samples of each
+/// component around it (clamped at the box). The inner samples of a row run as plain sums of
+/// shifted rows, which the compiler vectorises.
+class RowVelocity
 {
 public:
-  SampleVelocity(const StaggeredGrid& g, const GridArray& a)
-    : G(g)
+  RowVelocity(const StaggeredGrid& g, const GridArray& a)
+    : Faces{ &g.u, &g.v, &g.w }
+    , Dims(a.dims)
   {
-    const GridArray* faces[3] = { &g.u, &g.v, &g.w };
     for (int c = 0; c < 3; ++c)
     {
       for (int axis = 0; axis < 3; ++axis)
       {
-        const double d = a.offset[axis] - faces[c]->offset[axis];
-        Shift[c][axis] = d == 0.0 ? 0 : (d > 0.0 ? 1 : -1);
+        // Along each axis the two samples of component c around a's sample: (idx - 1, idx)
+        // when a lies half a cell above c's samples, (idx, idx + 1) half a cell below, else idx.
+        const double d = a.offset[axis] - Faces[c]->offset[axis];
+        Low[c][axis] = d < 0.0 ? -1 : 0;
+        High[c][axis] = d > 0.0 ? 1 : 0;
       }
     }
   }
-  void at(int i, int j, int k, double v[3]) const
+  /// v[c][i] for the samples i of row (j, k), c = 0, 1, 2; each v[c] holds dims[0] values.
+  void row(int j, int k, double* const v[3]) const
   {
-    const GridArray* faces[3] = { &G.u, &G.v, &G.w };
-    const int idx[3] = { i, j, k };
     for (int c = 0; c < 3; ++c)
     {
-      const GridArray& f = *faces[c];
-      // Along each axis: on f's samples (one), or between idx and idx + 1 (a centre between
-      // faces), or between idx - 1 and idx (a face between centres), clamped at the ends.
-      int lo[3], hi[3];
-      for (int axis = 0; axis < 3; ++axis)
+      const GridArray& f = *Faces[c];
+      const int fx = f.dims[0];
+      const int j0 = clampTo(j + Low[c][1], f.dims[1]), j1 = clampTo(j + High[c][1], f.dims[1]);
+      const int k0 = clampTo(k + Low[c][2], f.dims[2]), k1 = clampTo(k + High[c][2], f.dims[2]);
+      const double* r00 = &f.values[f.index(0, j0, k0)];
+      const double* r10 = &f.values[f.index(0, j1, k0)];
+      const double* r01 = &f.values[f.index(0, j0, k1)];
+      const double* r11 = &f.values[f.index(0, j1, k1)];
+      const int a = Low[c][0], b = High[c][0];
+      double* out = v[c];
+      auto edge = [&](int i)
       {
-        const int shift = Shift[c][axis];
-        lo[axis] = shift < 0 ? std::max(idx[axis] - 1, 0) : idx[axis];
-        hi[axis] = shift > 0 ? idx[axis] + 1 : std::min(idx[axis], f.dims[axis] - 1);
+        const int i0 = clampTo(i + a, fx), i1 = clampTo(i + b, fx);
+        out[i] = 0.125 * (r00[i0] + r00[i1] + r10[i0] + r10[i1] + r01[i0] + r01[i1] + r11[i0] + r11[i1]);
+      };
+      // Samples whose neighbours need no clamp along x.
+      const int first = std::min(-a, Dims[0]), last = std::max(std::min(Dims[0] - 1, fx - 1 - b), first - 1);
+      for (int i = 0; i < first; ++i)
+        edge(i);
+      for (int i = first; i <= last; ++i)
+      {
+        out[i] = 0.125 * (r00[i + a] + r00[i + b] + r10[i + a] + r10[i + b] + r01[i + a] + r01[i + b] + r11[i + a] +
+                          r11[i + b]);
       }
-      const double* data = f.values.data();
-      const std::size_t sy = static_cast<std::size_t>(f.dims[0]), sz = sy * f.dims[1];
-      const std::size_t y0 = lo[1] * sy, y1 = hi[1] * sy, z0 = lo[2] * sz, z1 = hi[2] * sz;
-      v[c] = 0.125 * (data[lo[0] + y0 + z0] + data[hi[0] + y0 + z0] + data[lo[0] + y1 + z0] + data[hi[0] + y1 + z0] +
-                      data[lo[0] + y0 + z1] + data[hi[0] + y0 + z1] + data[lo[0] + y1 + z1] + data[hi[0] + y1 + z1]);
+      for (int i = last + 1; i < Dims[0]; ++i)
+        edge(i);
     }
   }
 
 private:
-  const StaggeredGrid& G;
-  int Shift[3][3];
+  static int clampTo(int i, int n) { return std::min(std::max(i, 0), n - 1); }
+  const GridArray* Faces[3];
+  std::array<int, 3> Dims;
+  int Low[3][3], High[3][3];
 };
+
 } // namespace parafluid::clouds::detail

@@ -9,14 +9,22 @@ namespace
 {
 using Level = PoissonMultigrid::Level;
 
+// Levels of fewer cells run on one thread: a fork and join costs more than their sweep.
+constexpr std::size_t parallelCells = 16384;
+
 inline std::size_t at(const std::array<int, 3>& n, int i, int j, int k)
 {
   return (static_cast<std::size_t>(k) * n[1] + j) * n[0] + i;
 }
 
+inline std::size_t cellsOf(const std::array<int, 3>& n)
+{
+  return static_cast<std::size_t>(n[0]) * n[1] * n[2];
+}
+
 std::vector<unsigned char> diagonalOf(const std::array<int, 3>& n, const std::array<bool, 6>& open)
 {
-  std::vector<unsigned char> d(static_cast<std::size_t>(n[0]) * n[1] * n[2]);
+  std::vector<unsigned char> d(cellsOf(n));
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i)
@@ -33,7 +41,8 @@ std::vector<unsigned char> diagonalOf(const std::array<int, 3>& n, const std::ar
   return d;
 }
 
-// Sum of the neighbours' x (missing neighbours, closed or open, add nothing).
+// Sum of the neighbours' x (missing neighbours, closed or open, add nothing): the general stencil
+// of the box's outer rows and the rows' ends.
 inline double neighbourSum(const std::array<int, 3>& n, const double* x, int i, int j, int k, std::size_t c)
 {
   const std::size_t sy = static_cast<std::size_t>(n[0]), sz = sy * n[1];
@@ -53,37 +62,119 @@ inline double neighbourSum(const std::array<int, 3>& n, const double* x, int i, 
   return sum;
 }
 
-// One Gauss-Seidel half sweep over the cells of one colour ((i + j + k) % 2 == colour).
-void smooth(Level& l, int colour)
+// Calls body(c, sum, inner) for the cells of row (j, k) from i = first in steps of `stride`, sum
+// being the sum of c's neighbours in x; `inner`: all six present (the diagonal is 6). The inner
+// cells of the inner rows, nearly all of them, take no branch.
+template<class Body>
+inline void forRow(const std::array<int, 3>& n, const double* x, int j, int k, int first, int stride, Body&& body)
+{
+  const std::size_t sy = static_cast<std::size_t>(n[0]), sz = sy * n[1];
+  const std::size_t row = at(n, 0, j, k);
+  int i = first;
+  const bool inner = j > 0 && j < n[1] - 1 && k > 0 && k < n[2] - 1 && n[0] > 2;
+  if (!inner)
+  {
+    for (; i < n[0]; i += stride)
+      body(row + i, neighbourSum(n, x, i, j, k, row + i), false);
+    return;
+  }
+  if (i == 0)
+  {
+    body(row, neighbourSum(n, x, 0, j, k, row), false);
+    i += stride;
+  }
+  for (; i < n[0] - 1; i += stride)
+  {
+    const std::size_t c = row + i;
+    body(c, x[c - 1] + x[c + 1] + x[c - sy] + x[c + sy] + x[c - sz] + x[c + sz], true);
+  }
+  if (i == n[0] - 1)
+  {
+    body(row + i, neighbourSum(n, x, i, j, k, row + i), false);
+  }
+}
+
+// One Gauss-Seidel half sweep over the cells of one colour ((i + j + k) % 2 == colour): a colour
+// reads only the other, so its cells can be updated in any order and on any thread.
+void smooth(const Level& l, double* x, const double* b, int colour)
 {
   const auto& n = l.n;
-  double* x = l.x.data();
-#pragma omp parallel for schedule(static)
+  const double* inverse = l.inverseDiagonal.data();
+#pragma omp parallel for schedule(static) if (cellsOf(n) >= parallelCells)
   for (int k = 0; k < n[2]; ++k)
   {
     for (int j = 0; j < n[1]; ++j)
     {
-      for (int i = (j + k + colour) & 1; i < n[0]; i += 2)
-      {
-        const std::size_t c = at(n, i, j, k);
-        x[c] = (l.b[c] + neighbourSum(n, x, i, j, k, c)) / l.diagonal[c];
-      }
+      forRow(n, x, j, k, (j + k + colour) & 1, 2,
+             [&](std::size_t c, double sum, bool inner) { x[c] = (b[c] + sum) * (inner ? 1.0 / 6.0 : inverse[c]); });
     }
   }
 }
 
-void multiplyLevel(const Level& l, const double* x, double* y)
+// r = b - A x.
+void residual(const Level& l, const double* x, const double* b, double* r)
 {
   const auto& n = l.n;
-#pragma omp parallel for schedule(static)
+  const unsigned char* d = l.diagonal.data();
+#pragma omp parallel for schedule(static) if (cellsOf(n) >= parallelCells)
   for (int k = 0; k < n[2]; ++k)
   {
     for (int j = 0; j < n[1]; ++j)
     {
+      forRow(n, x, j, k, 0, 1,
+             [&](std::size_t c, double sum, bool inner)
+             { r[c] = b[c] + sum - (inner ? 6.0 : static_cast<double>(d[c])) * x[c]; });
+    }
+  }
+}
+
+// The coarse right-hand side: the coarse equation is (2h)^2 times the Laplacian, so it is 4 times
+// the children's mean, half their sum (missing children at odd edges count as zero, which keeps
+// restriction a multiple of prolongation's transpose and the cycle symmetric).
+void restrictResidual(const std::array<int, 3>& n, const double* r, const std::array<int, 3>& m, double* coarse)
+{
+#pragma omp parallel for schedule(static) if (cellsOf(n) >= parallelCells)
+  for (int K = 0; K < m[2]; ++K)
+  {
+    double* plane = coarse + at(m, 0, 0, K);
+    std::fill(plane, plane + static_cast<std::size_t>(m[0]) * m[1], 0.0);
+    for (int k = 2 * K; k < std::min(2 * K + 2, n[2]); ++k)
+    {
+      for (int j = 0; j < n[1]; ++j)
+      {
+        const double* fine = r + at(n, 0, j, k);
+        double* out = plane + static_cast<std::size_t>(j / 2) * m[0];
+        const int pairs = n[0] / 2;
+        for (int I = 0; I < pairs; ++I)
+        {
+          out[I] += fine[2 * I] + fine[2 * I + 1];
+        }
+        if (n[0] & 1)
+        {
+          out[m[0] - 1] += fine[n[0] - 1];
+        }
+      }
+    }
+    for (std::size_t c = 0; c < static_cast<std::size_t>(m[0]) * m[1]; ++c)
+    {
+      plane[c] *= 0.5;
+    }
+  }
+}
+
+// x += the coarse correction, constant over each cell's children.
+void prolongate(const std::array<int, 3>& n, double* x, const std::array<int, 3>& m, const double* coarse)
+{
+#pragma omp parallel for schedule(static) if (cellsOf(n) >= parallelCells)
+  for (int k = 0; k < n[2]; ++k)
+  {
+    for (int j = 0; j < n[1]; ++j)
+    {
+      double* row = x + at(n, 0, j, k);
+      const double* parent = coarse + at(m, 0, j / 2, k / 2);
       for (int i = 0; i < n[0]; ++i)
       {
-        const std::size_t c = at(n, i, j, k);
-        y[c] = l.diagonal[c] * x[c] - neighbourSum(n, x, i, j, k, c);
+        row[i] += parent[i >> 1];
       }
     }
   }
@@ -98,11 +189,19 @@ PoissonMultigrid::PoissonMultigrid(const std::array<int, 3>& dims, const std::ar
   {
     Level l;
     l.n = n;
-    const std::size_t cells = static_cast<std::size_t>(n[0]) * n[1] * n[2];
-    l.x.assign(cells, 0.0);
-    l.b.assign(cells, 0.0);
+    const std::size_t cells = cellsOf(n);
+    if (!this->Levels.empty())
+    {
+      l.x.assign(cells, 0.0);
+      l.b.assign(cells, 0.0);
+    }
     l.r.assign(cells, 0.0);
     l.diagonal = diagonalOf(n, open);
+    l.inverseDiagonal.resize(cells);
+    for (std::size_t c = 0; c < cells; ++c)
+    {
+      l.inverseDiagonal[c] = 1.0 / l.diagonal[c];
+    }
     this->Levels.push_back(std::move(l));
     if (std::min({ n[0], n[1], n[2] }) <= 4 || static_cast<int>(this->Levels.size()) >= maxLevels)
     {
@@ -117,21 +216,43 @@ PoissonMultigrid::PoissonMultigrid(const std::array<int, 3>& dims, const std::ar
 
 void PoissonMultigrid::multiply(const std::vector<double>& x, std::vector<double>& y) const
 {
-  multiplyLevel(this->Levels.front(), x.data(), y.data());
+  this->multiplyDot(x, y);
+}
+
+double PoissonMultigrid::multiplyDot(const std::vector<double>& xv, std::vector<double>& yv) const
+{
+  const Level& l = this->Levels.front();
+  const auto& n = l.n;
+  const unsigned char* d = l.diagonal.data();
+  const double* x = xv.data();
+  double* y = yv.data();
+  double dot = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : dot) if (cellsOf(n) >= parallelCells)
+  for (int k = 0; k < n[2]; ++k)
+  {
+    for (int j = 0; j < n[1]; ++j)
+    {
+      forRow(n, x, j, k, 0, 1,
+             [&](std::size_t c, double sum, bool inner)
+             {
+               y[c] = (inner ? 6.0 : static_cast<double>(d[c])) * x[c] - sum;
+               dot += x[c] * y[c];
+             });
+    }
+  }
+  return dot;
 }
 
 void PoissonMultigrid::apply(const std::vector<double>& r, std::vector<double>& z)
 {
-  Level& top = this->Levels.front();
-  top.b = r;
-  this->vcycle(0);
-  z = top.x;
+  z.resize(r.size());
+  this->vcycle(0, z.data(), r.data());
 }
 
-void PoissonMultigrid::vcycle(std::size_t index)
+void PoissonMultigrid::vcycle(std::size_t index, double* x, const double* b)
 {
   Level& l = this->Levels[index];
-  std::fill(l.x.begin(), l.x.end(), 0.0);
+  std::fill(x, x + cellsOf(l.n), 0.0);
   if (index + 1 == this->Levels.size())
   {
     // The coarsest level: symmetric sweeps until the slowest mode has had time to settle.
@@ -139,64 +260,28 @@ void PoissonMultigrid::vcycle(std::size_t index)
     const int sweeps = std::clamp(longest * longest, 4, 2000);
     for (int s = 0; s < sweeps; ++s)
     {
-      smooth(l, 0);
-      smooth(l, 1);
-      smooth(l, 1);
-      smooth(l, 0);
+      smooth(l, x, b, 0);
+      smooth(l, x, b, 1);
+      smooth(l, x, b, 1);
+      smooth(l, x, b, 0);
     }
     return;
   }
   constexpr int presmoothing = 2;
   for (int s = 0; s < presmoothing; ++s)
   {
-    smooth(l, 0);
-    smooth(l, 1);
+    smooth(l, x, b, 0);
+    smooth(l, x, b, 1);
   }
-  multiplyLevel(l, l.x.data(), l.r.data());
-  for (std::size_t c = 0; c < l.r.size(); ++c)
-  {
-    l.r[c] = l.b[c] - l.r[c];
-  }
-  // Restriction: the coarse equation is (2h)^2 times the Laplacian, so its right-hand side is
-  // 4 times the children's mean, half their sum (missing children at odd edges count as zero,
-  // which keeps restriction a multiple of prolongation's transpose and the cycle symmetric).
+  residual(l, x, b, l.r.data());
   Level& coarse = this->Levels[index + 1];
-  const auto& n = l.n;
-  const auto& m = coarse.n;
-#pragma omp parallel for schedule(static)
-  for (int K = 0; K < m[2]; ++K)
-  {
-    for (int J = 0; J < m[1]; ++J)
-    {
-      for (int I = 0; I < m[0]; ++I)
-      {
-        double sum = 0.0;
-        for (int k = 2 * K; k < std::min(2 * K + 2, n[2]); ++k)
-          for (int j = 2 * J; j < std::min(2 * J + 2, n[1]); ++j)
-            for (int i = 2 * I; i < std::min(2 * I + 2, n[0]); ++i)
-            {
-              sum += l.r[at(n, i, j, k)];
-            }
-        coarse.b[at(m, I, J, K)] = 0.5 * sum;
-      }
-    }
-  }
-  this->vcycle(index + 1);
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < n[2]; ++k)
-  {
-    for (int j = 0; j < n[1]; ++j)
-    {
-      for (int i = 0; i < n[0]; ++i)
-      {
-        l.x[at(n, i, j, k)] += coarse.x[at(m, i / 2, j / 2, k / 2)];
-      }
-    }
-  }
+  restrictResidual(l.n, l.r.data(), coarse.n, coarse.b.data());
+  this->vcycle(index + 1, coarse.x.data(), coarse.b.data());
+  prolongate(l.n, x, coarse.n, coarse.x.data());
   for (int s = 0; s < presmoothing; ++s)
   {
-    smooth(l, 1);
-    smooth(l, 0);
+    smooth(l, x, b, 1);
+    smooth(l, x, b, 0);
   }
 }
 } // namespace parafluid::clouds::detail

@@ -6,6 +6,10 @@
 // piecewise-constant transfer. The operator on every level is h^2 times the negative Laplacian:
 // (A x)_c = sum over the neighbours n of (x_c - x_n), plus x_c per open face (zero pressure
 // beyond it); closed faces add nothing (zero normal derivative).
+//
+// Speed: every sweep runs the rows inside the box (all six neighbours present, diagonal 6)
+// without a branch per cell, and only the box's outer rows and ends through the general stencil;
+// the small levels run on one thread (forking costs more than they do).
 #include <array>
 #include <vector>
 
@@ -20,18 +24,26 @@ public:
   void apply(const std::vector<double>& r, std::vector<double>& z);
   /// y = A x on the finest level.
   void multiply(const std::vector<double>& x, std::vector<double>& y) const;
+  /// y = A x and the dot product x . y, in one pass.
+  double multiplyDot(const std::vector<double>& x, std::vector<double>& y) const;
   const std::vector<unsigned char>& diagonal() const { return this->Levels.front().diagonal; }
   int levels() const { return static_cast<int>(this->Levels.size()); }
+  /// Whether this hierarchy is the one for `dims` and `open` (a solver keeps it between steps).
+  bool matches(const std::array<int, 3>& dims, const std::array<bool, 6>& open) const
+  {
+    return this->Levels.front().n == dims && this->Open == open;
+  }
 
   struct Level
   {
     std::array<int, 3> n;
-    std::vector<double> x, b, r;
+    std::vector<double> x, b, r;         // the coarse levels' own; level 0 works in apply()'s
     std::vector<unsigned char> diagonal; // A's diagonal (neighbours + open faces), 1 to 6
+    std::vector<double> inverseDiagonal; // its inverse, for the smoother
   };
 
 private:
-  void vcycle(std::size_t level);
+  void vcycle(std::size_t level, double* x, const double* b);
   std::array<bool, 6> Open;
   std::vector<Level> Levels;
 };

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace parafluid::clouds
 {
@@ -51,19 +52,52 @@ void setBoundaryVelocities(StaggeredGrid& g)
     }
 }
 
+struct ProjectionWorkspace
+{
+  std::unique_ptr<detail::PoissonMultigrid> multigrid;
+  std::vector<double> b;
+};
+
+std::shared_ptr<ProjectionWorkspace> makeProjectionWorkspace()
+{
+  return std::make_shared<ProjectionWorkspace>();
+}
+
 SolveReport project(StaggeredGrid& g, double dt, const ProjectionOptions& options)
 {
   setBoundaryVelocities(g);
+  ProjectionWorkspace local;
+  ProjectionWorkspace& work = options.workspace ? *options.workspace : local;
+  const std::array<int, 3> dims{ g.nx, g.ny, g.nz };
+  if (!work.multigrid || !work.multigrid->matches(dims, g.open))
+  {
+    work.multigrid = std::make_unique<detail::PoissonMultigrid>(dims, g.open);
+  }
+  detail::PoissonMultigrid& multigrid = *work.multigrid;
   // New face velocity u - dt/h (p_right - p_left) makes each cell's outflow sum zero when
   // A p = -(h^2 / dt) div, A = h^2 times the negative Laplacian (PoissonMultigrid's operator).
-  const std::vector<double> div = divergence(g);
   const bool closed = !g.anyOpen();
-  std::vector<double> b(div.size());
+  std::vector<double>& b = work.b;
+  b.resize(g.cells());
+  const double toRightSide = -g.h / dt; // -(h^2 / dt) times the divergence's 1 / h
   double mean = 0.0;
-  for (std::size_t c = 0; c < div.size(); ++c)
+#pragma omp parallel for schedule(static) reduction(+ : mean)
+  for (int k = 0; k < g.nz; ++k)
   {
-    b[c] = -(g.h * g.h / dt) * div[c];
-    mean += b[c];
+    for (int j = 0; j < g.ny; ++j)
+    {
+      const double* u = &g.u.values[g.u.index(0, j, k)];
+      const double* vLow = &g.v.values[g.v.index(0, j, k)];
+      const double* vHigh = &g.v.values[g.v.index(0, j + 1, k)];
+      const double* wLow = &g.w.values[g.w.index(0, j, k)];
+      const double* wHigh = &g.w.values[g.w.index(0, j, k + 1)];
+      double* out = &b[g.density.index(0, j, k)];
+      for (int i = 0; i < g.nx; ++i)
+      {
+        out[i] = toRightSide * (u[i + 1] - u[i] + vHigh[i] - vLow[i] + wHigh[i] - wLow[i]);
+        mean += out[i];
+      }
+    }
   }
   mean /= static_cast<double>(b.size());
   if (closed)
@@ -73,10 +107,10 @@ SolveReport project(StaggeredGrid& g, double dt, const ProjectionOptions& option
       value -= mean; // closed walls: consistent up to rounding
     }
   }
-  const std::array<int, 3> dims{ g.nx, g.ny, g.nz };
-  detail::PoissonMultigrid multigrid(dims, g.open);
   std::vector<double> p = options.warmStart ? g.pressure.values : std::vector<double>(b.size(), 0.0);
   detail::LinearMap A = [&](const std::vector<double>& x, std::vector<double>& y) { multigrid.multiply(x, y); };
+  detail::LinearMapDot ADot = [&](const std::vector<double>& x, std::vector<double>& y)
+  { return multigrid.multiplyDot(x, y); };
   detail::LinearMap preconditioner;
   if (options.preconditioner == Preconditioner::Multigrid)
   {
@@ -99,14 +133,17 @@ SolveReport project(StaggeredGrid& g, double dt, const ProjectionOptions& option
   double speed2 = 0.0;
   for (const GridArray* f : { &g.u, &g.v, &g.w })
   {
-    for (double value : f->values)
+    const double* values = f->values.data();
+    const long long count = static_cast<long long>(f->values.size());
+#pragma omp parallel for schedule(static) reduction(+ : speed2)
+    for (long long c = 0; c < count; ++c)
     {
-      speed2 += value * value;
+      speed2 += values[c] * values[c];
     }
   }
   const double scale = (g.h / dt) * std::sqrt(speed2 / 3.0);
   const SolveReport report =
-    detail::conjugateGradients(A, preconditioner, b, p, options.tolerance, options.maxIterations, closed, scale);
+    detail::conjugateGradients(A, preconditioner, b, p, options.tolerance, options.maxIterations, closed, scale, ADot);
   const double step = dt / g.h;
   const GridArray& cell = g.density;
   auto pressure = [&](int i, int j, int k) { return p[cell.index(i, j, k)]; };

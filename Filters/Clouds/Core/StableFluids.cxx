@@ -311,6 +311,7 @@ void StableFluids::step(double dt)
   options.maxIterations = P.projectionIterations;
   options.preconditioner = P.preconditioner;
   options.warmStart = true;
+  options.workspace = this->Workspace.get();
   this->Projection = project(g, dt, options);
   this->Timings.projection = elapsed();
 }

@@ -7,6 +7,7 @@
 // diffusion. Positions in metres, velocities in m/s, times in s.
 #include "parafluid/clouds/StaggeredGrid.h"
 
+#include <memory>
 #include <vector>
 
 namespace parafluid::clouds
@@ -53,12 +54,18 @@ enum class Preconditioner
   Multigrid, // one symmetric V-cycle per iteration (MGPCG)
   Jacobi     // the diagonal: cheap iterations, many more of them
 };
+/// What a projection keeps between calls on one grid size (the multigrid hierarchy and its
+/// work arrays): a solver that projects every step passes the same one.
+struct ProjectionWorkspace;
+std::shared_ptr<ProjectionWorkspace> makeProjectionWorkspace();
+
 struct ProjectionOptions
 {
   double tolerance = 1e-10; // relative residual
   int maxIterations = 2000;
   Preconditioner preconditioner = Preconditioner::Multigrid;
-  bool warmStart = false; // start from the grid's last pressure
+  bool warmStart = false;                   // start from the grid's last pressure
+  ProjectionWorkspace* workspace = nullptr; // kept between calls; nullptr: made for this one
 };
 /// Makes the velocity divergence-free: solves the pressure's Poisson equation (7-point Laplacian,
 /// zero normal derivative at closed walls, zero pressure beyond open faces) and subtracts the

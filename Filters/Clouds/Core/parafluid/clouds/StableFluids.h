@@ -13,6 +13,8 @@
 #include "parafluid/clouds/GridSolvers.h"
 #include "parafluid/clouds/StaggeredGrid.h"
 
+#include <memory>
+
 namespace parafluid::clouds
 {
 /// Where the last step's time went [ms] (steady clock).
@@ -77,6 +79,7 @@ private:
   StableFluidsParameters P;
   StaggeredGrid Grid;
   SolveReport Projection;
+  std::shared_ptr<ProjectionWorkspace> Workspace = makeProjectionWorkspace();
   StepTimings Timings;
   /// Vorticity confinement's arrays, kept between steps.
   struct

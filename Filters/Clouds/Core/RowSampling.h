@@ -1,0 +1,25 @@
+#pragma once
+// Trilinear reads of one grid array at a row of points, the advection's inner loop, written so
+// that the compiler vectorises it (the eight samples fetched by gathers) and compiled for
+// AVX-512, AVX2 and the baseline, the best chosen at load time. Points are in cell units (x / h
+// from the grid's origin) and clamped at the array's ends, as DirectSampler reads them.
+#include "parafluid/clouds/StaggeredGrid.h"
+
+namespace parafluid::clouds::detail
+{
+struct RowLayout
+{
+  int n[3];
+  double offset[3];
+  explicit RowLayout(const GridArray& a)
+    : n{ a.dims[0], a.dims[1], a.dims[2] }
+    , offset{ a.offset[0], a.offset[1], a.offset[2] }
+  {
+  }
+};
+
+/// out[i] = `data` (laid out as `layout`) read at (x[i], y[i], z[i]), i < count; with lo and hi
+/// (both or neither) also the least and greatest of the eight samples it blended.
+void readRow(const RowLayout& layout, const double* data, const double* x, const double* y, const double* z, int count,
+             double* out, double* lo = nullptr, double* hi = nullptr);
+} // namespace parafluid::clouds::detail
