@@ -8,9 +8,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace parafluid::clouds
 {
+struct AdvectionWorkspace
+{
+  std::vector<double> next[3];         // the advected arrays before they are swapped in
+  std::vector<double> forward, lo, hi; // the plain step and the range it blended
+  std::vector<double> drawn, high;     // the conservative step's
+  std::vector<float> move;             // each cell's displacement over the step [cells]
+  std::vector<std::size_t> undrawn;
+};
+
 using detail::DirectSampler;
 using detail::locate;
 using detail::readRow;
@@ -161,17 +171,20 @@ inline void forCornersAt(const DirectSampler& sampler, const GridArray& layout, 
 // error added back, clamped to the range the backward read blended. The forward Euler trace is
 // enough here: the round trip measures its error together with the interpolation's, and the
 // correction removes both to second order in smooth flow.
-GridArray advectOne(const GridArray& field, const StaggeredGrid& g, double dt, bool macCormack, const bool* open,
-                    double ambient)
+void advectOne(const GridArray& field, const StaggeredGrid& g, double dt, bool macCormack, const bool* open,
+               double ambient, AdvectionWorkspace& work, std::vector<double>& out)
 {
   const double s = dt / g.h;
   const std::size_t n = field.values.size();
-  GridArray result;
-  result.dims = field.dims;
-  result.offset = field.offset;
-  result.values.resize(n);
-  std::vector<double> forward(macCormack ? n : 0), lo(macCormack ? n : 0), hi(macCormack ? n : 0);
-  std::vector<double>& plain = macCormack ? forward : result.values;
+  out.resize(n);
+  std::vector<double>&forward = work.forward, &lo = work.lo, &hi = work.hi;
+  if (macCormack)
+  {
+    forward.resize(n);
+    lo.resize(n);
+    hi.resize(n);
+  }
+  std::vector<double>& plain = macCormack ? forward : out;
   const double* source = field.values.data();
   const RowVelocity velocity(g, field);
   const DirectSampler sampler(field);
@@ -184,7 +197,7 @@ GridArray advectOne(const GridArray& field, const StaggeredGrid& g, double dt, b
              });
   if (!macCormack)
   {
-    return result;
+    return;
   }
   forEachRow(field,
              [&](int j, int k, std::size_t row, Rows& r)
@@ -195,38 +208,56 @@ GridArray advectOne(const GridArray& field, const StaggeredGrid& g, double dt, b
                {
                  const std::size_t id = row + i;
                  const double corrected = forward[id] + 0.5 * (source[id] - r.values[i]);
-                 result.values[id] = std::clamp(corrected, lo[id], hi[id]);
+                 out[id] = std::clamp(corrected, lo[id], hi[id]);
                }
              });
-  return result;
 }
 } // namespace
 
-GridArray advect(const GridArray& field, const StaggeredGrid& grid, double dt, bool macCormack)
+std::shared_ptr<AdvectionWorkspace> makeAdvectionWorkspace()
 {
-  return advectOne(field, grid, dt, macCormack, nullptr, 0.0);
+  return std::make_shared<AdvectionWorkspace>();
 }
 
-void advectVelocity(StaggeredGrid& g, double dt, bool macCormack)
+GridArray advect(const GridArray& field, const StaggeredGrid& grid, double dt, bool macCormack)
 {
-  // All three components carried by the old velocity.
-  GridArray u = advectOne(g.u, g, dt, macCormack, nullptr, 0.0);
-  GridArray v = advectOne(g.v, g, dt, macCormack, nullptr, 0.0);
-  GridArray w = advectOne(g.w, g, dt, macCormack, nullptr, 0.0);
-  g.u = std::move(u);
-  g.v = std::move(v);
-  g.w = std::move(w);
+  AdvectionWorkspace work;
+  GridArray result;
+  result.dims = field.dims;
+  result.offset = field.offset;
+  advectOne(field, grid, dt, macCormack, nullptr, 0.0, work, result.values);
+  return result;
+}
+
+void advectVelocity(StaggeredGrid& g, double dt, bool macCormack, AdvectionWorkspace* workspace)
+{
+  AdvectionWorkspace local;
+  AdvectionWorkspace& work = workspace ? *workspace : local;
+  // All three components carried by the old velocity, then swapped in (the old values' storage
+  // is the next step's).
+  GridArray* faces[3] = { &g.u, &g.v, &g.w };
+  for (int c = 0; c < 3; ++c)
+  {
+    advectOne(*faces[c], g, dt, macCormack, nullptr, 0.0, work, work.next[c]);
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    std::swap(faces[c]->values, work.next[c]);
+  }
 }
 
 void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& fields, double dt, bool sharpen,
-                   bool conservative)
+                   bool conservative, AdvectionWorkspace* workspace)
 {
+  AdvectionWorkspace local;
+  AdvectionWorkspace& work = workspace ? *workspace : local;
   const bool* open = g.anyOpen() ? g.open.data() : nullptr;
   if (!conservative)
   {
     for (const ScalarField& f : fields)
     {
-      *f.field = advectOne(*f.field, g, dt, sharpen, open, f.ambient);
+      advectOne(*f.field, g, dt, sharpen, open, f.ambient, work, work.next[0]);
+      std::swap(f.field->values, work.next[0]);
     }
     return;
   }
@@ -235,7 +266,8 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
   const double s = dt / g.h;
   const DirectSampler sampler(layout);
   // 1. Each cell's displacement over the step [cells] (its trace starts at p - move).
-  std::vector<float> move(3 * n);
+  std::vector<float>& move = work.move;
+  move.resize(3 * n);
   double fastest = 0.0;
   for (const GridArray* f : { &g.u, &g.v, &g.w })
   {
@@ -264,7 +296,8 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
   // 2. How much of each source cell the traces draw in all ("drawn"). A trace reaches at most
   // `reach` slabs from its cell, so slabs in blocks more than twice that apart never write the
   // same source: the even blocks run side by side, then the odd ones (no atomics).
-  std::vector<double> drawn(n, 0.0);
+  std::vector<double>& drawn = work.drawn;
+  drawn.assign(n, 0.0);
   const int reach = static_cast<int>(std::ceil(s * fastest)) + 1;
   const int block = 2 * reach + 1;
   const int nz = layout.dims[2];
@@ -333,7 +366,8 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
     }
   }
   // Cells no trace draws from (where the flow diverges) give their content forward instead.
-  std::vector<std::size_t> undrawn;
+  std::vector<std::size_t>& undrawn = work.undrawn;
+  undrawn.clear();
   for (std::size_t id = 0; id < n; ++id)
   {
     if (drawn[id] <= 0.0)
@@ -356,8 +390,12 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
                    [&](std::size_t index, double weight) { out[index] += weight * content[id]; });
     }
   };
-  std::vector<double> excess(n), scaled(n), low(n);
-  std::vector<double> forward(sharpen ? n : 0), lo(sharpen ? n : 0), hi(sharpen ? n : 0), high(sharpen ? n : 0);
+  std::vector<double>&excess = work.next[0], &scaled = work.next[1], &low = work.next[2];
+  std::vector<double>&forward = work.forward, &lo = work.lo, &hi = work.hi, &high = work.high;
+  for (std::vector<double>* a : { &excess, &scaled, &low, &forward, &lo, &hi, &high })
+  {
+    a->resize(sharpen || a == &excess || a == &scaled || a == &low ? n : 0);
+  }
   for (const ScalarField& f : fields)
   {
     GridArray& field = *f.field;

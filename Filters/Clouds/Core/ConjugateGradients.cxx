@@ -39,10 +39,16 @@ void subtractMean(std::vector<double>& v)
 
 SolveReport conjugateGradients(const LinearMap& A, const LinearMap& preconditioner, const std::vector<double>& b,
                                std::vector<double>& x, double tolerance, int maxIterations, bool removeMean,
-                               double scale, const LinearMapDot& ADot)
+                               double scale, const LinearMapDot& ADot, std::array<std::vector<double>, 4>* scratch)
 {
   const long long n = static_cast<long long>(b.size());
-  std::vector<double> r(n), z(n), p(n), q(n);
+  std::array<std::vector<double>, 4> local;
+  std::array<std::vector<double>, 4>& work = scratch ? *scratch : local;
+  for (std::vector<double>& v : work)
+  {
+    v.resize(n);
+  }
+  std::vector<double>&r = work[0], &z = work[1], &p = work[2], &q = work[3];
   A(x, q);
   double rr = 0.0, bb = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : rr, bb)

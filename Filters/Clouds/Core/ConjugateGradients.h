@@ -4,6 +4,7 @@
 // preconditioner) and the implicit diffusion (Jacobi) use it.
 #include "parafluid/clouds/GridSolvers.h"
 
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -17,8 +18,10 @@ using LinearMapDot = std::function<double(const std::vector<double>&, std::vecto
 /// tolerance (`scale` keeps a right-hand side at rounding level from asking the impossible). With
 /// `removeMean` (a singular A whose null space is the constants, e.g. closed walls) the
 /// preconditioned residual's mean is removed each iteration. `ADot`, when given, is A fused with
-/// the dot product the iteration needs.
+/// the dot product the iteration needs. `scratch`, when given, holds the four work vectors between
+/// calls.
 SolveReport conjugateGradients(const LinearMap& A, const LinearMap& preconditioner, const std::vector<double>& b,
                                std::vector<double>& x, double tolerance, int maxIterations, bool removeMean,
-                               double scale = 0.0, const LinearMapDot& ADot = nullptr);
+                               double scale = 0.0, const LinearMapDot& ADot = nullptr,
+                               std::array<std::vector<double>, 4>* scratch = nullptr);
 } // namespace parafluid::clouds::detail

@@ -56,6 +56,7 @@ struct ProjectionWorkspace
 {
   std::unique_ptr<detail::PoissonMultigrid> multigrid;
   std::vector<double> b;
+  std::array<std::vector<double>, 4> cg; // the conjugate gradients' work vectors
 };
 
 std::shared_ptr<ProjectionWorkspace> makeProjectionWorkspace()
@@ -107,7 +108,13 @@ SolveReport project(StaggeredGrid& g, double dt, const ProjectionOptions& option
       value -= mean; // closed walls: consistent up to rounding
     }
   }
-  std::vector<double> p = options.warmStart ? g.pressure.values : std::vector<double>(b.size(), 0.0);
+  // Solved in place: the last pressure is the start (warm) or zero.
+  std::vector<double>& p = g.pressure.values;
+  p.resize(b.size());
+  if (!options.warmStart)
+  {
+    std::fill(p.begin(), p.end(), 0.0);
+  }
   detail::LinearMap A = [&](const std::vector<double>& x, std::vector<double>& y) { multigrid.multiply(x, y); };
   detail::LinearMapDot ADot = [&](const std::vector<double>& x, std::vector<double>& y)
   { return multigrid.multiplyDot(x, y); };
@@ -142,8 +149,8 @@ SolveReport project(StaggeredGrid& g, double dt, const ProjectionOptions& option
     }
   }
   const double scale = (g.h / dt) * std::sqrt(speed2 / 3.0);
-  const SolveReport report =
-    detail::conjugateGradients(A, preconditioner, b, p, options.tolerance, options.maxIterations, closed, scale, ADot);
+  const SolveReport report = detail::conjugateGradients(A, preconditioner, b, p, options.tolerance,
+                                                        options.maxIterations, closed, scale, ADot, &work.cg);
   const double step = dt / g.h;
   const GridArray& cell = g.density;
   auto pressure = [&](int i, int j, int k) { return p[cell.index(i, j, k)]; };
@@ -177,7 +184,6 @@ SolveReport project(StaggeredGrid& g, double dt, const ProjectionOptions& option
       }
     }
   }
-  g.pressure.values = std::move(p);
   return report;
 }
 

@@ -290,8 +290,9 @@ void StableFluids::step(double dt)
   setBoundaryVelocities(g);
   this->Timings.forces = elapsed();
   // Every field is carried by the same (old) velocity: the scalars first.
-  advectScalars(g, { { &g.density, 0.0 }, { &g.temperature, P.ambientTemperature } }, dt, P.macCormack, P.conservative);
-  advectVelocity(g, dt, P.macCormack);
+  advectScalars(g, { { &g.density, 0.0 }, { &g.temperature, P.ambientTemperature } }, dt, P.macCormack, P.conservative,
+                this->Advection.get());
+  advectVelocity(g, dt, P.macCormack, this->Advection.get());
   this->Timings.advection = elapsed();
   if (P.viscosity > 0.0)
   {

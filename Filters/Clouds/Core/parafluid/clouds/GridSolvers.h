@@ -19,8 +19,13 @@ namespace parafluid::clouds
 /// them. Not conservative: see advectScalars.
 GridArray advect(const GridArray& field, const StaggeredGrid& grid, double dt, bool macCormack);
 
+/// The work arrays of the advection, kept between calls (a solver that advects every step
+/// passes the same one; nullptr: made for the call).
+struct AdvectionWorkspace;
+std::shared_ptr<AdvectionWorkspace> makeAdvectionWorkspace();
+
 /// The three velocity components carried by the (old) velocity.
-void advectVelocity(StaggeredGrid& grid, double dt, bool macCormack);
+void advectVelocity(StaggeredGrid& grid, double dt, bool macCormack, AdvectionWorkspace* workspace = nullptr);
 
 struct ScalarField
 {
@@ -35,7 +40,7 @@ struct ScalarField
 /// cell by cell (a mass fixer after Priestley 1993: each cell stays between its low- and
 /// high-order values). Not conservative: each field by advect(), MacCormack with `sharpen`.
 void advectScalars(const StaggeredGrid& grid, const std::vector<ScalarField>& fields, double dt, bool sharpen,
-                   bool conservative);
+                   bool conservative, AdvectionWorkspace* workspace = nullptr);
 
 /// Outflow minus inflow of each cell's faces divided by h [1/s].
 std::vector<double> divergence(const StaggeredGrid& grid);

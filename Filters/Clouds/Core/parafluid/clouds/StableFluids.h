@@ -80,6 +80,7 @@ private:
   StaggeredGrid Grid;
   SolveReport Projection;
   std::shared_ptr<ProjectionWorkspace> Workspace = makeProjectionWorkspace();
+  std::shared_ptr<AdvectionWorkspace> Advection = makeAdvectionWorkspace();
   StepTimings Timings;
   /// Vorticity confinement's arrays, kept between steps.
   struct
