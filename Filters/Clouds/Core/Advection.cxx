@@ -123,6 +123,35 @@ inline double readAt(const DirectSampler& sampler, const GridArray& layout, cons
   return t.apply(data) + t.outside * ambient;
 }
 
+// Whether a trace end of the row may lie beyond an open face (by its extremes along each axis
+// with an open face; most rows are far from them).
+bool rowReachesOpenFace(const GridArray& layout, const Rows& r, const bool* open)
+{
+  const double* coordinates[3] = { r.x, r.y, r.z };
+  const int count = layout.dims[0];
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (!open[2 * axis] && !open[2 * axis + 1])
+    {
+      continue;
+    }
+    const double* c = coordinates[axis];
+    double least = c[0], greatest = c[0];
+#pragma omp simd reduction(min : least) reduction(max : greatest)
+    for (int i = 0; i < count; ++i)
+    {
+      least = std::min(least, c[i]);
+      greatest = std::max(greatest, c[i]);
+    }
+    if ((open[2 * axis] && least - layout.offset[axis] < 0.0) ||
+        (open[2 * axis + 1] && greatest - layout.offset[axis] > layout.dims[axis] - 1))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 // out[i] (and the ranges lo, hi when given) = `data` at the row's trace ends: the vectorised read
 // for all, then the general one for the few beyond an open face, where the ambient weighs in.
 void readTraced(const GridArray& layout, const DirectSampler& sampler, const double* data, const Rows& r,
@@ -130,7 +159,7 @@ void readTraced(const GridArray& layout, const DirectSampler& sampler, const dou
 {
   const int count = layout.dims[0];
   readRow(RowLayout(layout), data, r.x, r.y, r.z, count, out, lo, hi);
-  if (!open)
+  if (!open || !rowReachesOpenFace(layout, r, open))
   {
     return;
   }
@@ -140,6 +169,28 @@ void readTraced(const GridArray& layout, const DirectSampler& sampler, const dou
     if (sampler.beyond(p, open))
     {
       out[i] = readAt(sampler, layout, data, p, open, ambient, lo ? lo + i : nullptr, hi ? hi + i : nullptr);
+    }
+  }
+}
+
+// The same for two arrays (ambient 0) at once: out from `data`, out2 (and its range lo2, hi2)
+// from `data2`.
+void readTracedPair(const GridArray& layout, const DirectSampler& sampler, const double* data, const double* data2,
+                    const Rows& r, const bool* open, double* out, double* out2, double* lo2, double* hi2)
+{
+  const int count = layout.dims[0];
+  detail::readRowPair(RowLayout(layout), data, data2, r.x, r.y, r.z, count, out, out2, lo2, hi2);
+  if (!open || !rowReachesOpenFace(layout, r, open))
+  {
+    return;
+  }
+  for (int i = 0; i < count; ++i)
+  {
+    const double p[3] = { r.x[i], r.y[i], r.z[i] };
+    if (sampler.beyond(p, open))
+    {
+      out[i] = readAt(sampler, layout, data, p, open, 0.0);
+      out2[i] = readAt(sampler, layout, data2, p, open, 0.0, lo2 + i, hi2 + i);
     }
   }
 }
@@ -412,11 +463,14 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
                [&](int j, int k, std::size_t row, Rows& r)
                {
                  traceWithMove(layout, move.data(), row, j, k, -1.0, r);
-                 readTraced(layout, sampler, scaled.data(), r, open, 0.0, low.data() + row);
                  if (sharpen)
                  {
-                   readTraced(layout, sampler, excess.data(), r, open, 0.0, forward.data() + row, lo.data() + row,
-                              hi.data() + row);
+                   readTracedPair(layout, sampler, scaled.data(), excess.data(), r, open, low.data() + row,
+                                  forward.data() + row, lo.data() + row, hi.data() + row);
+                 }
+                 else
+                 {
+                   readTraced(layout, sampler, scaled.data(), r, open, 0.0, low.data() + row);
                  }
                });
     pushForward(excess, low);

@@ -2,6 +2,7 @@
 // Trilinear sampling of a GridArray at a point given in cell units (x / h from the grid's
 // origin), the inner loop of the advection: the 8 corners and weights are found once and can be
 // applied to several arrays of the same layout (density and temperature share their trace).
+#include "RowSampling.h"
 #include "parafluid/clouds/StaggeredGrid.h"
 
 #include <algorithm>
@@ -274,15 +275,20 @@ public:
         const int i0 = clampTo(i + a, fx), i1 = clampTo(i + b, fx);
         out[i] = 0.125 * (r00[i0] + r00[i1] + r10[i0] + r10[i1] + r01[i0] + r01[i1] + r11[i0] + r11[i1]);
       };
-      // Samples whose neighbours need no clamp along x.
+      // Samples whose neighbours need no clamp along x: the mean of the distinct rows and shifts
+      // (the same as the eight-sample mean, whose repeats come in equal numbers).
       const int first = std::min(-a, Dims[0]), last = std::max(std::min(Dims[0] - 1, fx - 1 - b), first - 1);
       for (int i = 0; i < first; ++i)
         edge(i);
-      for (int i = first; i <= last; ++i)
+      const double* rows[4] = { r00 };
+      int rowCount = 1;
+      for (const double* r : { r10, r01, r11 })
       {
-        out[i] = 0.125 * (r00[i + a] + r00[i + b] + r10[i + a] + r10[i + b] + r01[i + a] + r01[i + b] + r11[i + a] +
-                          r11[i + b]);
+        if (std::find(rows, rows + rowCount, r) == rows + rowCount)
+          rows[rowCount++] = r;
       }
+      const int shifts[2] = { a, b };
+      meanOfShiftedRows(rows, rowCount, shifts, a == b ? 1 : 2, first, last, out);
       for (int i = last + 1; i < Dims[0]; ++i)
         edge(i);
     }

@@ -18,10 +18,12 @@ struct AxisStep
   }
 };
 
-template<bool Range>
-inline void readRowImpl(const RowLayout& l, const double* __restrict data, const double* __restrict x,
-                        const double* __restrict y, const double* __restrict z, int count, double* __restrict out,
-                        double* __restrict lo, double* __restrict hi)
+// out[i] = data at point i; with Range also lo/hi of the 8 samples; with Second also out2[i] =
+// data2 at the same point (its corners and weights found once for both).
+template<bool Range, bool Second>
+inline void readRowImpl(const RowLayout& l, const double* __restrict data, const double* __restrict data2,
+                        const double* __restrict x, const double* __restrict y, const double* __restrict z, int count,
+                        double* __restrict out, double* __restrict out2, double* __restrict lo, double* __restrict hi)
 {
   const AxisStep ax(l.n[0], l.offset[0], 1), ay(l.n[1], l.offset[1], l.n[0]), az(l.n[2], l.offset[2], l.n[0] * l.n[1]);
   const int sx = ax.stride, sy = ay.stride, sz = az.stride;
@@ -44,35 +46,91 @@ inline void readRowImpl(const RowLayout& l, const double* __restrict data, const
     const double x01 = v001 + fx * (v101 - v001), x11 = v011 + fx * (v111 - v011);
     const double y0 = x00 + fy * (x10 - x00), y1 = x01 + fy * (x11 - x01);
     out[i] = y0 + fz * (y1 - y0);
+    if constexpr (Second)
+    {
+      const double w000 = data2[b], w100 = data2[b + sx], w010 = data2[b + sy], w110 = data2[b + sx + sy];
+      const double w001 = data2[b + sz], w101 = data2[b + sx + sz], w011 = data2[b + sy + sz],
+                   w111 = data2[b + sx + sy + sz];
+      const double a00 = w000 + fx * (w100 - w000), a10 = w010 + fx * (w110 - w010);
+      const double a01 = w001 + fx * (w101 - w001), a11 = w011 + fx * (w111 - w011);
+      const double b0 = a00 + fy * (a10 - a00), b1 = a01 + fy * (a11 - a01);
+      out2[i] = b0 + fz * (b1 - b0);
+    }
     if constexpr (Range)
     {
-      double a = v000 < v100 ? v000 : v100, c = v010 < v110 ? v010 : v110;
-      double d = v001 < v101 ? v001 : v101, e = v011 < v111 ? v011 : v111;
+      // The range of the second array's samples when there is one, else of the first's.
+      const double* d = Second ? data2 : data;
+      const double u000 = d[b], u100 = d[b + sx], u010 = d[b + sy], u110 = d[b + sx + sy];
+      const double u001 = d[b + sz], u101 = d[b + sx + sz], u011 = d[b + sy + sz], u111 = d[b + sx + sy + sz];
+      double a = u000 < u100 ? u000 : u100, c = u010 < u110 ? u010 : u110;
+      double e = u001 < u101 ? u001 : u101, f = u011 < u111 ? u011 : u111;
       a = a < c ? a : c;
-      d = d < e ? d : e;
-      lo[i] = a < d ? a : d;
-      double A = v000 > v100 ? v000 : v100, C = v010 > v110 ? v010 : v110;
-      double D = v001 > v101 ? v001 : v101, E = v011 > v111 ? v011 : v111;
+      e = e < f ? e : f;
+      lo[i] = a < e ? a : e;
+      double A = u000 > u100 ? u000 : u100, C = u010 > u110 ? u010 : u110;
+      double E = u001 > u101 ? u001 : u101, F = u011 > u111 ? u011 : u111;
       A = A > C ? A : C;
-      D = D > E ? D : E;
-      hi[i] = A > D ? A : D;
+      E = E > F ? E : F;
+      hi[i] = A > E ? A : E;
     }
   }
 }
 } // namespace
 
 // Compiled for AVX-512, AVX2 and the baseline, chosen at load time (GCC's function multi-versioning).
-__attribute__((target_clones("arch=skylake-avx512", "avx2", "default"))) void readRow(
-  const RowLayout& layout, const double* data, const double* x, const double* y, const double* z, int count,
-  double* out, double* lo, double* hi)
+#define PARAFLUID_ROW_SAMPLING_CLONES __attribute__((target_clones("arch=skylake-avx512", "avx2", "default")))
+
+PARAFLUID_ROW_SAMPLING_CLONES
+void readRow(const RowLayout& layout, const double* data, const double* x, const double* y, const double* z, int count,
+             double* out, double* lo, double* hi)
 {
   if (lo && hi)
   {
-    readRowImpl<true>(layout, data, x, y, z, count, out, lo, hi);
+    readRowImpl<true, false>(layout, data, nullptr, x, y, z, count, out, nullptr, lo, hi);
   }
   else
   {
-    readRowImpl<false>(layout, data, x, y, z, count, out, nullptr, nullptr);
+    readRowImpl<false, false>(layout, data, nullptr, x, y, z, count, out, nullptr, nullptr, nullptr);
+  }
+}
+
+PARAFLUID_ROW_SAMPLING_CLONES
+void readRowPair(const RowLayout& layout, const double* data, const double* data2, const double* x, const double* y,
+                 const double* z, int count, double* out, double* out2, double* lo2, double* hi2)
+{
+  if (lo2 && hi2)
+  {
+    readRowImpl<true, true>(layout, data, data2, x, y, z, count, out, out2, lo2, hi2);
+  }
+  else
+  {
+    readRowImpl<false, true>(layout, data, data2, x, y, z, count, out, out2, nullptr, nullptr);
+  }
+}
+
+PARAFLUID_ROW_SAMPLING_CLONES
+void meanOfShiftedRows(const double* const* rows, int rowCount, const int* shifts, int shiftCount, int first, int last,
+                       double* out)
+{
+  const double weight = 1.0 / (rowCount * shiftCount);
+  for (int i = first; i <= last; ++i)
+  {
+    out[i] = 0.0;
+  }
+  for (int r = 0; r < rowCount; ++r)
+  {
+    for (int s = 0; s < shiftCount; ++s)
+    {
+      const double* source = rows[r] + shifts[s];
+      for (int i = first; i <= last; ++i)
+      {
+        out[i] += source[i];
+      }
+    }
+  }
+  for (int i = first; i <= last; ++i)
+  {
+    out[i] *= weight;
   }
 }
 } // namespace parafluid::clouds::detail

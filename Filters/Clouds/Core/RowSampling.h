@@ -22,4 +22,12 @@ struct RowLayout
 /// (both or neither) also the least and greatest of the eight samples it blended.
 void readRow(const RowLayout& layout, const double* data, const double* x, const double* y, const double* z, int count,
              double* out, double* lo = nullptr, double* hi = nullptr);
+/// The same for two arrays of one layout at once (the corners and weights found once): out from
+/// `data`, out2 from `data2`, and with lo2 and hi2 the range of data2's samples.
+void readRowPair(const RowLayout& layout, const double* data, const double* data2, const double* x, const double* y,
+                 const double* z, int count, double* out, double* out2, double* lo2 = nullptr, double* hi2 = nullptr);
+/// out[i] = the mean of rows[r][i + shifts[s]] over the rowCount rows and shiftCount shifts, for i
+/// from first to last (inclusive): the velocity at a row's samples from the faces around them.
+void meanOfShiftedRows(const double* const* rows, int rowCount, const int* shifts, int shiftCount, int first, int last,
+                       double* out);
 } // namespace parafluid::clouds::detail
