@@ -37,7 +37,7 @@ public:
   struct Level
   {
     std::array<int, 3> n;
-    std::vector<double> x, b, r;         // the coarse levels' own; level 0 works in apply()'s
+    std::vector<double> x, b;            // the coarse levels' own; level 0 works in apply()'s
     std::vector<unsigned char> diagonal; // A's diagonal (neighbours + open faces), 1 to 6
     std::vector<double> inverseDiagonal; // its inverse, for the smoother
   };
