@@ -10,6 +10,7 @@ namespace parafluid::clouds::detail
 namespace
 {
 using Level = PoissonMultigrid::Level;
+using Real = PoissonMultigrid::Real;
 
 // Levels of fewer cells run on one thread: a fork and join costs more than their sweep.
 constexpr std::size_t parallelCells = 16384;
@@ -45,10 +46,11 @@ std::vector<unsigned char> diagonalOf(const std::array<int, 3>& n, const std::ar
 
 // Sum of the neighbours' x (missing neighbours, closed or open, add nothing): the general stencil
 // of the box's outer rows and the rows' ends.
-inline double neighbourSum(const std::array<int, 3>& n, const double* x, int i, int j, int k, std::size_t c)
+template<class T>
+inline T neighbourSum(const std::array<int, 3>& n, const T* x, int i, int j, int k, std::size_t c)
 {
   const std::size_t sy = static_cast<std::size_t>(n[0]), sz = sy * n[1];
-  double sum = 0.0;
+  T sum = 0;
   if (i > 0)
     sum += x[c - 1];
   if (i < n[0] - 1)
@@ -67,8 +69,8 @@ inline double neighbourSum(const std::array<int, 3>& n, const double* x, int i, 
 // Calls body(c, sum, inner) for the cells of row (j, k) from i = first in steps of `stride`, sum
 // being the sum of c's neighbours in x; `inner`: all six present (the diagonal is 6). The inner
 // cells of the inner rows, nearly all of them, take no branch.
-template<class Body>
-inline void forRow(const std::array<int, 3>& n, const double* x, int j, int k, int first, int stride, Body&& body)
+template<class T, class Body>
+inline void forRow(const std::array<int, 3>& n, const T* x, int j, int k, int first, int stride, Body&& body)
 {
   const std::size_t sy = static_cast<std::size_t>(n[0]), sz = sy * n[1];
   const std::size_t row = at(n, 0, j, k);
@@ -98,15 +100,14 @@ inline void forRow(const std::array<int, 3>& n, const double* x, int j, int k, i
 
 // One colour's Gauss-Seidel update ((i + j + k) % 2 == colour) on plane k: a colour reads only
 // the other, so its cells can be updated in any order.
-__attribute__((optimize("no-tree-vectorize"))) void smoothPlane(const Level& l, double* x, const double* b, int k,
-                                                                int colour)
+void smoothPlane(const Level& l, Real* x, const Real* b, int k, int colour)
 {
   const auto& n = l.n;
-  const double* inverse = l.inverseDiagonal.data();
+  const Real* inverse = l.inverseDiagonal.data();
   for (int j = 0; j < n[1]; ++j)
   {
     forRow(n, x, j, k, (j + k + colour) & 1, 2,
-           [&](std::size_t c, double sum, bool inner) { x[c] = (b[c] + sum) * (inner ? 1.0 / 6.0 : inverse[c]); });
+           [&](std::size_t c, Real sum, bool inner) { x[c] = (b[c] + sum) * (inner ? Real(1) / 6 : inverse[c]); });
   }
 }
 
@@ -116,7 +117,7 @@ __attribute__((optimize("no-tree-vectorize"))) void smoothPlane(const Level& l, 
 // planes; the second colour of a block's two end planes, which reads the neighbouring blocks'
 // first colour, waits until every block has done its first. The result is that of two half
 // sweeps, on any number of threads.
-void sweep(const Level& l, double* x, const double* b, int first)
+void sweep(const Level& l, Real* x, const Real* b, int first)
 {
   const int nz = l.n[2], second = 1 - first;
 #pragma omp parallel if (cellsOf(l.n) >= parallelCells)
@@ -148,27 +149,27 @@ void sweep(const Level& l, double* x, const double* b, int first)
 // the coarse equation is (2h)^2 times the Laplacian, so it is 4 times the children's mean, half
 // their sum (missing children at odd edges count as zero, which keeps restriction a multiple of
 // prolongation's transpose and the cycle symmetric).
-void restrictResidual(const Level& l, const double* x, const double* b, const std::array<int, 3>& m, double* coarse)
+void restrictResidual(const Level& l, const Real* x, const Real* b, const std::array<int, 3>& m, Real* coarse)
 {
   const auto& n = l.n;
   const unsigned char* d = l.diagonal.data();
 #pragma omp parallel if (cellsOf(n) >= parallelCells)
   {
-    std::vector<double> r(static_cast<std::size_t>(n[0]));
+    std::vector<Real> r(static_cast<std::size_t>(n[0]));
 #pragma omp for schedule(static)
     for (int K = 0; K < m[2]; ++K)
     {
-      double* plane = coarse + at(m, 0, 0, K);
-      std::fill(plane, plane + static_cast<std::size_t>(m[0]) * m[1], 0.0);
+      Real* plane = coarse + at(m, 0, 0, K);
+      std::fill(plane, plane + static_cast<std::size_t>(m[0]) * m[1], Real(0));
       for (int k = 2 * K; k < std::min(2 * K + 2, n[2]); ++k)
       {
         for (int j = 0; j < n[1]; ++j)
         {
           const std::size_t row = at(n, 0, j, k);
           forRow(n, x, j, k, 0, 1,
-                 [&](std::size_t c, double sum, bool inner)
-                 { r[c - row] = b[c] + sum - (inner ? 6.0 : static_cast<double>(d[c])) * x[c]; });
-          double* out = plane + static_cast<std::size_t>(j / 2) * m[0];
+                 [&](std::size_t c, Real sum, bool inner)
+                 { r[c - row] = b[c] + sum - (inner ? Real(6) : static_cast<Real>(d[c])) * x[c]; });
+          Real* out = plane + static_cast<std::size_t>(j / 2) * m[0];
           const int pairs = n[0] / 2;
           for (int I = 0; I < pairs; ++I)
           {
@@ -182,22 +183,22 @@ void restrictResidual(const Level& l, const double* x, const double* b, const st
       }
       for (std::size_t c = 0; c < static_cast<std::size_t>(m[0]) * m[1]; ++c)
       {
-        plane[c] *= 0.5;
+        plane[c] *= Real(0.5);
       }
     }
   }
 }
 
 // x += the coarse correction, constant over each cell's children.
-void prolongate(const std::array<int, 3>& n, double* x, const std::array<int, 3>& m, const double* coarse)
+void prolongate(const std::array<int, 3>& n, Real* x, const std::array<int, 3>& m, const Real* coarse)
 {
 #pragma omp parallel for schedule(static) if (cellsOf(n) >= parallelCells)
   for (int k = 0; k < n[2]; ++k)
   {
     for (int j = 0; j < n[1]; ++j)
     {
-      double* row = x + at(n, 0, j, k);
-      const double* parent = coarse + at(m, 0, j / 2, k / 2);
+      Real* row = x + at(n, 0, j, k);
+      const Real* parent = coarse + at(m, 0, j / 2, k / 2);
       for (int i = 0; i < n[0]; ++i)
       {
         row[i] += parent[i >> 1];
@@ -216,16 +217,13 @@ PoissonMultigrid::PoissonMultigrid(const std::array<int, 3>& dims, const std::ar
     Level l;
     l.n = n;
     const std::size_t cells = cellsOf(n);
-    if (!this->Levels.empty())
-    {
-      l.x.assign(cells, 0.0);
-      l.b.assign(cells, 0.0);
-    }
+    l.x.assign(cells, Real(0));
+    l.b.assign(cells, Real(0));
     l.diagonal = diagonalOf(n, open);
     l.inverseDiagonal.resize(cells);
     for (std::size_t c = 0; c < cells; ++c)
     {
-      l.inverseDiagonal[c] = 1.0 / l.diagonal[c];
+      l.inverseDiagonal[c] = Real(1) / l.diagonal[c];
     }
     this->Levels.push_back(std::move(l));
     if (std::min({ n[0], n[1], n[2] }) <= 4 || static_cast<int>(this->Levels.size()) >= maxLevels)
@@ -270,14 +268,26 @@ double PoissonMultigrid::multiplyDot(const std::vector<double>& xv, std::vector<
 
 void PoissonMultigrid::apply(const std::vector<double>& r, std::vector<double>& z)
 {
+  Level& top = this->Levels.front();
+  const long long n = static_cast<long long>(r.size());
+#pragma omp parallel for schedule(static)
+  for (long long c = 0; c < n; ++c)
+  {
+    top.b[c] = static_cast<Real>(r[c]);
+  }
+  this->vcycle(0, top.x.data(), top.b.data());
   z.resize(r.size());
-  this->vcycle(0, z.data(), r.data());
+#pragma omp parallel for schedule(static)
+  for (long long c = 0; c < n; ++c)
+  {
+    z[c] = top.x[c];
+  }
 }
 
-void PoissonMultigrid::vcycle(std::size_t index, double* x, const double* b)
+void PoissonMultigrid::vcycle(std::size_t index, Real* x, const Real* b)
 {
   Level& l = this->Levels[index];
-  std::fill(x, x + cellsOf(l.n), 0.0);
+  std::fill(x, x + cellsOf(l.n), Real(0));
   if (index + 1 == this->Levels.size())
   {
     // The coarsest level: symmetric sweeps until the slowest mode has had time to settle.

@@ -7,6 +7,10 @@
 // (A x)_c = sum over the neighbours n of (x_c - x_n), plus x_c per open face (zero pressure
 // beyond it); closed faces add nothing (zero normal derivative).
 //
+// Precision: the cycle runs in single precision (it is a preconditioner: CG's own vectors and
+// residual stay in double, so the solve still reaches double-precision tolerances), which halves
+// the memory each sweep streams.
+//
 // Speed: every sweep runs the rows inside the box (all six neighbours present, diagonal 6)
 // without a branch per cell, and only the box's outer rows and ends through the general stencil;
 // the small levels run on one thread (forking costs more than they do).
@@ -34,16 +38,17 @@ public:
     return this->Levels.front().n == dims && this->Open == open;
   }
 
+  using Real = float;
   struct Level
   {
     std::array<int, 3> n;
-    std::vector<double> x, b;            // the coarse levels' own; level 0 works in apply()'s
+    std::vector<Real> x, b;
     std::vector<unsigned char> diagonal; // A's diagonal (neighbours + open faces), 1 to 6
-    std::vector<double> inverseDiagonal; // its inverse, for the smoother
+    std::vector<Real> inverseDiagonal;   // its inverse, for the smoother
   };
 
 private:
-  void vcycle(std::size_t level, double* x, const double* b);
+  void vcycle(std::size_t level, Real* x, const Real* b);
   std::array<bool, 6> Open;
   std::vector<Level> Levels;
 };
