@@ -1,5 +1,7 @@
 #include "parafluid/clouds/StableFluids.h"
 
+#include "BodyForces.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -46,6 +48,7 @@ StableFluids::StableFluids(const StableFluidsParameters& parameters)
   std::copy(P.origin, P.origin + 3, this->Grid.origin.begin());
   std::copy(P.open, P.open + 6, this->Grid.open.begin());
   std::fill(this->Grid.temperature.values.begin(), this->Grid.temperature.values.end(), P.ambientTemperature);
+  this->Forces = std::make_shared<detail::ForceScratch>();
 }
 
 void StableFluids::applySources(double dt)
@@ -139,135 +142,36 @@ void StableFluids::applySources(double dt)
 void StableFluids::applyForces(double dt)
 {
   StaggeredGrid& g = this->Grid;
+  detail::ForceScratch& scratch = *this->Forces;
   GridArray* faces[3] = { &g.u, &g.v, &g.w };
+  // Buoyancy per cell, then on each face the mean of the cells either side (the one cell at a wall).
+  std::vector<double>& lift = scratch.lift;
+  lift.resize(g.cells());
+  const double* rho = g.density.values.data();
+  const double* temperature = g.temperature.values.data();
+  const long long cells = static_cast<long long>(g.cells());
+#pragma omp parallel for schedule(static)
+  for (long long c = 0; c < cells; ++c)
+  {
+    lift[c] = -P.buoyancyDensity * rho[c] + P.buoyancyHeat * (temperature[c] - P.ambientTemperature);
+  }
   for (int axis = 0; axis < 3; ++axis)
   {
     const double up = -P.gravityDirection[axis];
-    if (up == 0.0)
+    if (up != 0.0)
     {
-      continue;
+      detail::addCellValuesToFaces(g, *faces[axis], axis, lift.data(), dt * up, false);
     }
-    GridArray& f = *faces[axis];
-    const int step[3] = { axis == 0, axis == 1, axis == 2 };
-#pragma omp parallel for schedule(static)
-    for (int k = 0; k < f.dims[2]; ++k)
-      for (int j = 0; j < f.dims[1]; ++j)
-        for (int i = 0; i < f.dims[0]; ++i)
-        {
-          // The two cells either side of the face (one at the walls).
-          const int lo[3] = { i - step[0], j - step[1], k - step[2] };
-          const int hi[3] = { i, j, k };
-          double rho = 0.0, heat = 0.0, count = 0.0;
-          for (const int* c : { lo, hi })
-          {
-            if (c[0] >= 0 && c[1] >= 0 && c[2] >= 0 && c[0] < g.nx && c[1] < g.ny && c[2] < g.nz)
-            {
-              rho += g.density.at(c[0], c[1], c[2]);
-              heat += g.temperature.at(c[0], c[1], c[2]) - P.ambientTemperature;
-              count += 1.0;
-            }
-          }
-          if (count > 0.0)
-          {
-            f.at(i, j, k) += dt * up * (-P.buoyancyDensity * rho + P.buoyancyHeat * heat) / count;
-          }
-        }
   }
   if (P.vorticity > 0.0)
   {
-    this->confineVorticity(dt);
+    // Onto the faces between cells: the mean of the two cells' forces.
+    detail::vorticityConfinementForce(g, P.vorticity, scratch);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      detail::addCellValuesToFaces(g, *faces[axis], axis, scratch.force[axis].data(), dt, true);
+    }
   }
-}
-
-void StableFluids::confineVorticity(double dt)
-{
-  StaggeredGrid& g = this->Grid;
-  const int nx = g.nx, ny = g.ny, nz = g.nz;
-  const std::size_t n = g.cells();
-  // Cell-centred velocity, then vorticity by central differences (one-sided at the walls). The
-  // arrays are kept between steps (every entry is written below): allocating ten grids a step
-  // cost as much as the arithmetic.
-  std::vector<double>* c = this->Scratch.centre;
-  std::vector<double>* omega = this->Scratch.vorticity;
-  std::vector<double>* force = this->Scratch.force;
-  std::vector<double>& magnitude = this->Scratch.magnitude;
-  for (int a = 0; a < 3; ++a)
-  {
-    c[a].resize(n);
-    omega[a].resize(n);
-    force[a].resize(n);
-  }
-  magnitude.resize(n);
-  const GridArray& cell = g.density;
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-      {
-        const std::size_t id = cell.index(i, j, k);
-        c[0][id] = 0.5 * (g.u.at(i, j, k) + g.u.at(i + 1, j, k));
-        c[1][id] = 0.5 * (g.v.at(i, j, k) + g.v.at(i, j + 1, k));
-        c[2][id] = 0.5 * (g.w.at(i, j, k) + g.w.at(i, j, k + 1));
-      }
-  // d f / d axis at cell (i, j, k) = id: central, one-sided at the walls.
-  const std::size_t stride[3] = { 1, static_cast<std::size_t>(nx), static_cast<std::size_t>(nx) * ny };
-  const int dims[3] = { nx, ny, nz };
-  auto d = [&](const std::vector<double>& f, int i, int j, int k, int axis)
-  {
-    const int at = axis == 0 ? i : (axis == 1 ? j : k);
-    const std::size_t id = (static_cast<std::size_t>(k) * ny + j) * nx + i;
-    const bool below = at > 0, above = at < dims[axis] - 1;
-    const int cells = below + above;
-    return cells > 0 ? (f[above ? id + stride[axis] : id] - f[below ? id - stride[axis] : id]) / (cells * g.h) : 0.0;
-  };
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-      {
-        const std::size_t id = cell.index(i, j, k);
-        omega[0][id] = d(c[2], i, j, k, 1) - d(c[1], i, j, k, 2);
-        omega[1][id] = d(c[0], i, j, k, 2) - d(c[2], i, j, k, 0);
-        omega[2][id] = d(c[1], i, j, k, 0) - d(c[0], i, j, k, 1);
-        magnitude[id] =
-          std::sqrt(omega[0][id] * omega[0][id] + omega[1][id] * omega[1][id] + omega[2][id] * omega[2][id]);
-      }
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-      {
-        const std::size_t id = cell.index(i, j, k);
-        double N[3] = { d(magnitude, i, j, k, 0), d(magnitude, i, j, k, 1), d(magnitude, i, j, k, 2) };
-        const double len = std::sqrt(N[0] * N[0] + N[1] * N[1] + N[2] * N[2]);
-        if (len < 1e-12)
-        {
-          force[0][id] = force[1][id] = force[2][id] = 0.0;
-          continue;
-        }
-        for (double& v : N)
-        {
-          v /= len;
-        }
-        const double scale = P.vorticity * g.h;
-        force[0][id] = scale * (N[1] * omega[2][id] - N[2] * omega[1][id]);
-        force[1][id] = scale * (N[2] * omega[0][id] - N[0] * omega[2][id]);
-        force[2][id] = scale * (N[0] * omega[1][id] - N[1] * omega[0][id]);
-      }
-      // Onto the interior faces: the mean of the two cells' forces.
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i)
-      {
-        const std::size_t id = cell.index(i, j, k);
-        if (i > 0)
-          g.u.at(i, j, k) += dt * 0.5 * (force[0][id] + force[0][cell.index(i - 1, j, k)]);
-        if (j > 0)
-          g.v.at(i, j, k) += dt * 0.5 * (force[1][id] + force[1][cell.index(i, j - 1, k)]);
-        if (k > 0)
-          g.w.at(i, j, k) += dt * 0.5 * (force[2][id] + force[2][cell.index(i, j, k - 1)]);
-      }
 }
 
 void StableFluids::step(double dt)

@@ -17,6 +17,11 @@
 
 namespace parafluid::clouds
 {
+namespace detail
+{
+struct ForceScratch;
+}
+
 /// Where the last step's time went [ms] (steady clock).
 struct StepTimings
 {
@@ -75,18 +80,13 @@ public:
 private:
   void applySources(double dt);
   void applyForces(double dt);
-  void confineVorticity(double dt);
   StableFluidsParameters P;
   StaggeredGrid Grid;
   SolveReport Projection;
   std::shared_ptr<ProjectionWorkspace> Workspace = makeProjectionWorkspace();
   std::shared_ptr<AdvectionWorkspace> Advection = makeAdvectionWorkspace();
   StepTimings Timings;
-  /// Vorticity confinement's arrays, kept between steps.
-  struct
-  {
-    std::vector<double> centre[3], vorticity[3], force[3], magnitude;
-  } Scratch;
+  std::shared_ptr<detail::ForceScratch> Forces; // the forces' work arrays, kept between steps
   std::vector<double> PointSources;
 };
 } // namespace parafluid::clouds
