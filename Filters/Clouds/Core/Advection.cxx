@@ -173,10 +173,11 @@ void readTraced(const GridArray& layout, const DirectSampler& sampler, const dou
   }
 }
 
-// The same for two arrays (ambient 0) at once: out from `data`, out2 (and its range lo2, hi2)
-// from `data2`.
+// The same for two arrays at once: out from `data` (ambient `ambient`), out2 (and its range lo2,
+// hi2 when given) from `data2` (ambient `ambient2`).
 void readTracedPair(const GridArray& layout, const DirectSampler& sampler, const double* data, const double* data2,
-                    const Rows& r, const bool* open, double* out, double* out2, double* lo2, double* hi2)
+                    const Rows& r, const bool* open, double* out, double* out2, double* lo2, double* hi2,
+                    double ambient = 0.0, double ambient2 = 0.0)
 {
   const int count = layout.dims[0];
   detail::readRowPair(RowLayout(layout), data, data2, r.x, r.y, r.z, count, out, out2, lo2, hi2);
@@ -189,8 +190,8 @@ void readTracedPair(const GridArray& layout, const DirectSampler& sampler, const
     const double p[3] = { r.x[i], r.y[i], r.z[i] };
     if (sampler.beyond(p, open))
     {
-      out[i] = readAt(sampler, layout, data, p, open, 0.0);
-      out2[i] = readAt(sampler, layout, data2, p, open, 0.0, lo2 + i, hi2 + i);
+      out[i] = readAt(sampler, layout, data, p, open, ambient);
+      out2[i] = readAt(sampler, layout, data2, p, open, ambient2, lo2 ? lo2 + i : nullptr, hi2 ? hi2 + i : nullptr);
     }
   }
 }
@@ -305,8 +306,33 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
   const bool* open = g.anyOpen() ? g.open.data() : nullptr;
   if (!conservative)
   {
-    for (const ScalarField& f : fields)
+    std::size_t next = 0;
+    if (!sharpen)
     {
+      // Plain tracing: two fields at a time share each trace and its corners.
+      const double s = dt / g.h;
+      const RowVelocity velocity(g, g.density);
+      const DirectSampler sampler(g.density);
+      for (; next + 1 < fields.size(); next += 2)
+      {
+        const ScalarField &a = fields[next], &b = fields[next + 1];
+        work.next[0].resize(a.field->values.size());
+        work.next[1].resize(b.field->values.size());
+        forEachRow(g.density,
+                   [&](int j, int k, std::size_t row, Rows& r)
+                   {
+                     traceWithVelocity(velocity, g.density, j, k, -s, r);
+                     readTracedPair(g.density, sampler, a.field->values.data(), b.field->values.data(), r, open,
+                                    work.next[0].data() + row, work.next[1].data() + row, nullptr, nullptr, a.ambient,
+                                    b.ambient);
+                   });
+        std::swap(a.field->values, work.next[0]);
+        std::swap(b.field->values, work.next[1]);
+      }
+    }
+    for (; next < fields.size(); ++next)
+    {
+      const ScalarField& f = fields[next];
       advectOne(*f.field, g, dt, sharpen, open, f.ambient, work, work.next[0]);
       std::swap(f.field->values, work.next[0]);
     }
