@@ -108,29 +108,53 @@ void readRowPair(const RowLayout& layout, const double* data, const double* data
   }
 }
 
+namespace
+{
+// The mean over Rows rows and Shifts shifts in one pass (each output written once).
+template<int Rows, int Shifts>
+inline void meanOf(const double* const* rows, const int* shifts, int first, int last, double* __restrict out)
+{
+  constexpr double weight = 1.0 / (Rows * Shifts);
+  const double* r[4] = { rows[0], rows[Rows > 1 ? 1 : 0], rows[Rows > 2 ? 2 : 0], rows[Rows > 3 ? 3 : 0] };
+  const int a = shifts[0], b = shifts[Shifts > 1 ? 1 : 0];
+  for (int i = first; i <= last; ++i)
+  {
+    double sum = r[0][i + a];
+    if constexpr (Shifts > 1)
+      sum += r[0][i + b];
+    if constexpr (Rows > 1)
+    {
+      sum += r[1][i + a];
+      if constexpr (Shifts > 1)
+        sum += r[1][i + b];
+    }
+    if constexpr (Rows > 2)
+    {
+      sum += r[2][i + a] + r[3][i + a];
+      if constexpr (Shifts > 1)
+        sum += r[2][i + b] + r[3][i + b];
+    }
+    out[i] = weight * sum;
+  }
+}
+} // namespace
+
 PARAFLUID_ROW_SAMPLING_CLONES
 void meanOfShiftedRows(const double* const* rows, int rowCount, const int* shifts, int shiftCount, int first, int last,
                        double* out)
 {
-  const double weight = 1.0 / (rowCount * shiftCount);
-  for (int i = first; i <= last; ++i)
+  const bool two = shiftCount == 2;
+  switch (rowCount)
   {
-    out[i] = 0.0;
-  }
-  for (int r = 0; r < rowCount; ++r)
-  {
-    for (int s = 0; s < shiftCount; ++s)
-    {
-      const double* source = rows[r] + shifts[s];
-      for (int i = first; i <= last; ++i)
-      {
-        out[i] += source[i];
-      }
-    }
-  }
-  for (int i = first; i <= last; ++i)
-  {
-    out[i] *= weight;
+    case 1:
+      two ? meanOf<1, 2>(rows, shifts, first, last, out) : meanOf<1, 1>(rows, shifts, first, last, out);
+      break;
+    case 2:
+      two ? meanOf<2, 2>(rows, shifts, first, last, out) : meanOf<2, 1>(rows, shifts, first, last, out);
+      break;
+    default: // 4 (three distinct rows cannot occur: the rows pair up along y and z)
+      two ? meanOf<4, 2>(rows, shifts, first, last, out) : meanOf<4, 1>(rows, shifts, first, last, out);
+      break;
   }
 }
 } // namespace parafluid::clouds::detail
