@@ -173,34 +173,56 @@ SolveReport project(StaggeredGrid& g, double dt, const ProjectionOptions& option
                                                         options.maxIterations, closed, scale, ADot, &work.cg);
   const double step = dt / g.h;
   const GridArray& cell = g.density;
-  auto pressure = [&](int i, int j, int k) { return p[cell.index(i, j, k)]; };
+  const int nx = g.nx;
+  // The pressure gradient across each face, a row at a time; beyond an open face the pressure is 0.
 #pragma omp parallel for schedule(static)
   for (int k = 0; k < g.nz; ++k)
   {
     for (int j = 0; j < g.ny; ++j)
     {
-      for (int i = 0; i < g.nx; ++i)
+      const double* pc = &p[cell.index(0, j, k)];
+      double* u = &g.u.values[g.u.index(0, j, k)];
+      for (int i = 1; i < nx; ++i)
+        u[i] -= step * (pc[i] - pc[i - 1]);
+      if (g.open[0])
+        u[0] -= step * pc[0];
+      if (g.open[1])
+        u[nx] += step * pc[nx - 1];
+      double* v = &g.v.values[g.v.index(0, j, k)];
+      if (j > 0)
       {
-        const double pc = pressure(i, j, k);
-        if (i > 0)
-          g.u.at(i, j, k) -= step * (pc - pressure(i - 1, j, k));
-        if (j > 0)
-          g.v.at(i, j, k) -= step * (pc - pressure(i, j - 1, k));
-        if (k > 0)
-          g.w.at(i, j, k) -= step * (pc - pressure(i, j, k - 1));
-        // Open faces: zero pressure beyond them.
-        if (i == 0 && g.open[0])
-          g.u.at(0, j, k) -= step * pc;
-        if (i == g.nx - 1 && g.open[1])
-          g.u.at(g.nx, j, k) += step * pc;
-        if (j == 0 && g.open[2])
-          g.v.at(i, 0, k) -= step * pc;
-        if (j == g.ny - 1 && g.open[3])
-          g.v.at(i, g.ny, k) += step * pc;
-        if (k == 0 && g.open[4])
-          g.w.at(i, j, 0) -= step * pc;
-        if (k == g.nz - 1 && g.open[5])
-          g.w.at(i, j, g.nz) += step * pc;
+        const double* below = &p[cell.index(0, j - 1, k)];
+        for (int i = 0; i < nx; ++i)
+          v[i] -= step * (pc[i] - below[i]);
+      }
+      else if (g.open[2])
+      {
+        for (int i = 0; i < nx; ++i)
+          v[i] -= step * pc[i];
+      }
+      if (j == g.ny - 1 && g.open[3])
+      {
+        double* top = &g.v.values[g.v.index(0, g.ny, k)];
+        for (int i = 0; i < nx; ++i)
+          top[i] += step * pc[i];
+      }
+      double* w = &g.w.values[g.w.index(0, j, k)];
+      if (k > 0)
+      {
+        const double* below = &p[cell.index(0, j, k - 1)];
+        for (int i = 0; i < nx; ++i)
+          w[i] -= step * (pc[i] - below[i]);
+      }
+      else if (g.open[4])
+      {
+        for (int i = 0; i < nx; ++i)
+          w[i] -= step * pc[i];
+      }
+      if (k == g.nz - 1 && g.open[5])
+      {
+        double* top = &g.w.values[g.w.index(0, j, g.nz)];
+        for (int i = 0; i < nx; ++i)
+          top[i] += step * pc[i];
       }
     }
   }
