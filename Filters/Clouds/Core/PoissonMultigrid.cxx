@@ -98,16 +98,35 @@ inline void forRow(const std::array<int, 3>& n, const T* x, int j, int k, int fi
   }
 }
 
+// The cycle's arrays carry a layer of ghost cells around the box, always 0: a missing neighbour,
+// behind a closed face or an open one, adds nothing to the sum (the diagonal counts the open faces
+// and leaves out the closed ones), so every cell takes the same branch-free stencil.
+inline std::size_t padded(const Level& l, int i, int j, int k)
+{
+  return (static_cast<std::size_t>(k + 1) * (l.n[1] + 2) + (j + 1)) * (l.n[0] + 2) + (i + 1);
+}
+
+inline std::size_t paddedCells(const std::array<int, 3>& n)
+{
+  return static_cast<std::size_t>(n[0] + 2) * (n[1] + 2) * (n[2] + 2);
+}
+
 // One colour's Gauss-Seidel update ((i + j + k) % 2 == colour) on plane k: a colour reads only
 // the other, so its cells can be updated in any order.
 void smoothPlane(const Level& l, Real* x, const Real* b, int k, int colour)
 {
-  const auto& n = l.n;
+  const std::size_t sy = static_cast<std::size_t>(l.n[0] + 2), sz = sy * (l.n[1] + 2);
   const Real* inverse = l.inverseDiagonal.data();
-  for (int j = 0; j < n[1]; ++j)
+  for (int j = 0; j < l.n[1]; ++j)
   {
-    forRow(n, x, j, k, (j + k + colour) & 1, 2,
-           [&](std::size_t c, Real sum, bool inner) { x[c] = (b[c] + sum) * (inner ? Real(1) / 6 : inverse[c]); });
+    const std::size_t row = padded(l, 0, j, k);
+    Real* xr = x + row;
+    const Real* br = b + row;
+    const Real* ir = inverse + row;
+    for (int i = (j + k + colour) & 1; i < l.n[0]; i += 2)
+    {
+      xr[i] = (br[i] + xr[i - 1] + xr[i + 1] + xr[i - sy] + xr[i + sy] + xr[i - sz] + xr[i + sz]) * ir[i];
+    }
   }
 }
 
@@ -149,57 +168,66 @@ void sweep(const Level& l, Real* x, const Real* b, int first)
 // the coarse equation is (2h)^2 times the Laplacian, so it is 4 times the children's mean, half
 // their sum (missing children at odd edges count as zero, which keeps restriction a multiple of
 // prolongation's transpose and the cycle symmetric).
-void restrictResidual(const Level& l, const Real* x, const Real* b, const std::array<int, 3>& m, Real* coarse)
+void restrictResidual(const Level& l, const Real* x, const Real* b, const Level& coarse, Real* coarseB)
 {
   const auto& n = l.n;
-  const unsigned char* d = l.diagonal.data();
+  const auto& m = coarse.n;
+  const std::size_t sy = static_cast<std::size_t>(n[0] + 2), sz = sy * (n[1] + 2);
+  const Real* diagonal = l.paddedDiagonal.data();
 #pragma omp parallel if (cellsOf(n) >= parallelCells)
   {
-    std::vector<Real> r(static_cast<std::size_t>(n[0]));
+    std::vector<Real> r(static_cast<std::size_t>(n[0]) + 1);
 #pragma omp for schedule(static)
     for (int K = 0; K < m[2]; ++K)
     {
-      Real* plane = coarse + at(m, 0, 0, K);
-      std::fill(plane, plane + static_cast<std::size_t>(m[0]) * m[1], Real(0));
+      for (int J = 0; J < m[1]; ++J)
+      {
+        Real* out = coarseB + padded(coarse, 0, J, K);
+        std::fill(out, out + m[0], Real(0));
+      }
       for (int k = 2 * K; k < std::min(2 * K + 2, n[2]); ++k)
       {
         for (int j = 0; j < n[1]; ++j)
         {
-          const std::size_t row = at(n, 0, j, k);
-          forRow(n, x, j, k, 0, 1,
-                 [&](std::size_t c, Real sum, bool inner)
-                 { r[c - row] = b[c] + sum - (inner ? Real(6) : static_cast<Real>(d[c])) * x[c]; });
-          Real* out = plane + static_cast<std::size_t>(j / 2) * m[0];
-          const int pairs = n[0] / 2;
-          for (int I = 0; I < pairs; ++I)
+          const std::size_t row = padded(l, 0, j, k);
+          const Real* xr = x + row;
+          const Real* br = b + row;
+          const Real* dr = diagonal + row;
+          for (int i = 0; i < n[0]; ++i)
+          {
+            r[i] = br[i] + (xr[i - 1] + xr[i + 1] + xr[i - sy] + xr[i + sy] + xr[i - sz] + xr[i + sz]) - dr[i] * xr[i];
+          }
+          r[n[0]] = 0; // the missing child of an odd row's last pair
+          Real* out = coarseB + padded(coarse, 0, j / 2, K);
+          for (int I = 0; I < m[0]; ++I)
           {
             out[I] += r[2 * I] + r[2 * I + 1];
           }
-          if (n[0] & 1)
-          {
-            out[m[0] - 1] += r[n[0] - 1];
-          }
         }
       }
-      for (std::size_t c = 0; c < static_cast<std::size_t>(m[0]) * m[1]; ++c)
+      for (int J = 0; J < m[1]; ++J)
       {
-        plane[c] *= Real(0.5);
+        Real* out = coarseB + padded(coarse, 0, J, K);
+        for (int I = 0; I < m[0]; ++I)
+        {
+          out[I] *= Real(0.5);
+        }
       }
     }
   }
 }
 
 // x += the coarse correction, constant over each cell's children.
-void prolongate(const std::array<int, 3>& n, Real* x, const std::array<int, 3>& m, const Real* coarse)
+void prolongate(const Level& l, Real* x, const Level& coarse, const Real* coarseX)
 {
-#pragma omp parallel for schedule(static) if (cellsOf(n) >= parallelCells)
-  for (int k = 0; k < n[2]; ++k)
+#pragma omp parallel for schedule(static) if (cellsOf(l.n) >= parallelCells)
+  for (int k = 0; k < l.n[2]; ++k)
   {
-    for (int j = 0; j < n[1]; ++j)
+    for (int j = 0; j < l.n[1]; ++j)
     {
-      Real* row = x + at(n, 0, j, k);
-      const Real* parent = coarse + at(m, 0, j / 2, k / 2);
-      for (int i = 0; i < n[0]; ++i)
+      Real* row = x + padded(l, 0, j, k);
+      const Real* parent = coarseX + padded(coarse, 0, j / 2, k / 2);
+      for (int i = 0; i < l.n[0]; ++i)
       {
         row[i] += parent[i >> 1];
       }
@@ -216,15 +244,20 @@ PoissonMultigrid::PoissonMultigrid(const std::array<int, 3>& dims, const std::ar
   {
     Level l;
     l.n = n;
-    const std::size_t cells = cellsOf(n);
-    l.x.assign(cells, Real(0));
-    l.b.assign(cells, Real(0));
     l.diagonal = diagonalOf(n, open);
-    l.inverseDiagonal.resize(cells);
-    for (std::size_t c = 0; c < cells; ++c)
-    {
-      l.inverseDiagonal[c] = Real(1) / l.diagonal[c];
-    }
+    const std::size_t withGhosts = paddedCells(n);
+    l.x.assign(withGhosts, Real(0));
+    l.b.assign(withGhosts, Real(0));
+    l.inverseDiagonal.assign(withGhosts, Real(0));
+    l.paddedDiagonal.assign(withGhosts, Real(0));
+    for (int k = 0; k < n[2]; ++k)
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i)
+        {
+          const Real d = l.diagonal[at(n, i, j, k)];
+          l.paddedDiagonal[padded(l, i, j, k)] = d;
+          l.inverseDiagonal[padded(l, i, j, k)] = Real(1) / d;
+        }
     this->Levels.push_back(std::move(l));
     if (std::min({ n[0], n[1], n[2] }) <= 4 || static_cast<int>(this->Levels.size()) >= maxLevels)
     {
@@ -269,25 +302,34 @@ double PoissonMultigrid::multiplyDot(const std::vector<double>& xv, std::vector<
 void PoissonMultigrid::apply(const std::vector<double>& r, std::vector<double>& z)
 {
   Level& top = this->Levels.front();
-  const long long n = static_cast<long long>(r.size());
-#pragma omp parallel for schedule(static)
-  for (long long c = 0; c < n; ++c)
-  {
-    top.b[c] = static_cast<Real>(r[c]);
-  }
-  this->vcycle(0, top.x.data(), top.b.data());
+  const auto& n = top.n;
   z.resize(r.size());
-#pragma omp parallel for schedule(static)
-  for (long long c = 0; c < n; ++c)
-  {
-    z[c] = top.x[c];
-  }
+  const bool parallel = cellsOf(n) >= parallelCells;
+#pragma omp parallel for schedule(static) if (parallel)
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+    {
+      const double* in = &r[at(n, 0, j, k)];
+      Real* out = &top.b[padded(top, 0, j, k)];
+      for (int i = 0; i < n[0]; ++i)
+        out[i] = static_cast<Real>(in[i]);
+    }
+  this->vcycle(0, top.x.data(), top.b.data());
+#pragma omp parallel for schedule(static) if (parallel)
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+    {
+      const Real* in = &top.x[padded(top, 0, j, k)];
+      double* out = &z[at(n, 0, j, k)];
+      for (int i = 0; i < n[0]; ++i)
+        out[i] = in[i];
+    }
 }
 
 void PoissonMultigrid::vcycle(std::size_t index, Real* x, const Real* b)
 {
   Level& l = this->Levels[index];
-  std::fill(x, x + cellsOf(l.n), Real(0));
+  std::fill(x, x + paddedCells(l.n), Real(0));
   if (index + 1 == this->Levels.size())
   {
     // The coarsest level: symmetric sweeps until the slowest mode has had time to settle.
@@ -307,9 +349,9 @@ void PoissonMultigrid::vcycle(std::size_t index, Real* x, const Real* b)
     sweep(l, x, b, 0);
   }
   Level& coarse = this->Levels[index + 1];
-  restrictResidual(l, x, b, coarse.n, coarse.b.data());
+  restrictResidual(l, x, b, coarse, coarse.b.data());
   this->vcycle(index + 1, coarse.x.data(), coarse.b.data());
-  prolongate(l.n, x, coarse.n, coarse.x.data());
+  prolongate(l, x, coarse, coarse.x.data());
   for (int s = 0; s < presmoothing; ++s)
   {
     sweep(l, x, b, 1);

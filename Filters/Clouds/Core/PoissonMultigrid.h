@@ -11,9 +11,9 @@
 // residual stay in double, so the solve still reaches double-precision tolerances), which halves
 // the memory each sweep streams.
 //
-// Speed: every sweep runs the rows inside the box (all six neighbours present, diagonal 6)
-// without a branch per cell, and only the box's outer rows and ends through the general stencil;
-// the small levels run on one thread (forking costs more than they do).
+// Speed: the cycle's arrays carry a layer of ghost cells that stay 0, so every cell takes one
+// branch-free stencil; a sweep runs both colours in one pass over the planes; the small levels
+// run on one thread (forking costs more than they do).
 #include <array>
 #include <vector>
 
@@ -44,7 +44,8 @@ public:
     std::array<int, 3> n;
     std::vector<Real> x, b;
     std::vector<unsigned char> diagonal; // A's diagonal (neighbours + open faces), 1 to 6
-    std::vector<Real> inverseDiagonal;   // its inverse, for the smoother
+    // The cycle's arrays: (n + 2)^3, with a layer of ghost cells that stay 0.
+    std::vector<Real> inverseDiagonal, paddedDiagonal; // the diagonal and its inverse
   };
 
 private:
