@@ -73,9 +73,14 @@ void stepTimes(bool quick, bool plain)
     std::printf("\n## Time per step against grid size (plume, vorticity 0.3, MacCormack, conservative scalars, "
                 "MGPCG to 1e-5, dt = h / 1 m/s)\n\n");
   }
-  std::printf(
-    "| grid | ms/step | forces | advection | projection | projection iterations |\n|---|---|---|---|---|---|\n");
+  std::printf("| grid | ms/step, median (least) | forces | advection | projection | projection iterations "
+              "|\n|---|---|---|---|---|---|\n");
   const std::vector<int> sizes = quick ? std::vector<int>{ 32, 64 } : std::vector<int>{ 32, 48, 64, 96, 128 };
+  auto median = [](std::vector<double> v)
+  {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+  };
   for (int n : sizes)
   {
     StableFluidsParameters p = plume(n);
@@ -88,21 +93,23 @@ void stepTimes(bool quick, bool plain)
     const double dt = 1.0 / n;
     for (int s = 0; s < 20; ++s)
       fluid.step(dt); // the plume under way
-    const int steps = n >= 128 ? 3 : 8;
-    StepTimings sum;
+    // The median of several steps: this machine's timings jump between runs and within one.
+    const int steps = n >= 128 ? 7 : (n >= 96 ? 9 : 15);
+    std::vector<double> total, forces, advection, projection;
     int iterations = 0;
-    const double start = now();
     for (int s = 0; s < steps; ++s)
     {
+      const double start = now();
       fluid.step(dt);
-      sum.forces += fluid.lastTimings().forces;
-      sum.advection += fluid.lastTimings().advection;
-      sum.projection += fluid.lastTimings().projection;
+      total.push_back(now() - start);
+      forces.push_back(fluid.lastTimings().forces);
+      advection.push_back(fluid.lastTimings().advection);
+      projection.push_back(fluid.lastTimings().projection);
       iterations += fluid.lastProjection().iterations;
     }
-    const double total = (now() - start) / steps;
-    std::printf("| %d^3 | %.1f | %.1f | %.1f | %.1f | %.1f |\n", n, total, sum.forces / steps, sum.advection / steps,
-                sum.projection / steps, static_cast<double>(iterations) / steps);
+    std::printf("| %d^3 | %.1f (%.1f) | %.1f | %.1f | %.1f | %.1f |\n", n, median(total),
+                *std::min_element(total.begin(), total.end()), median(forces), median(advection), median(projection),
+                static_cast<double>(iterations) / steps);
   }
 }
 
