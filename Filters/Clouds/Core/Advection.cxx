@@ -14,10 +14,10 @@ namespace parafluid::clouds
 {
 struct AdvectionWorkspace
 {
-  std::vector<double> next[3];         // the advected arrays before they are swapped in
-  std::vector<double> forward, lo, hi; // the plain step and the range it blended
-  std::vector<double> drawn, high;     // the conservative step's
-  std::vector<float> move;             // each cell's displacement over the step [cells]
+  std::vector<double> next[3];                  // the advected arrays before they are swapped in
+  std::vector<double> forward[3], lo[3], hi[3]; // the plain steps and the ranges they blended
+  std::vector<double> drawn, high;              // the conservative step's
+  std::vector<float> move;                      // each cell's displacement over the step [cells]
   std::vector<std::size_t> undrawn;
 };
 
@@ -55,24 +55,31 @@ struct Rows
   double *x, *y, *z, *values;
 };
 
-// Calls body(j, k, row, rows) for every row of `layout` (row: the index of its first sample), the
-// rows side by side on the threads, each thread with its own buffers.
+// Calls body(j, k, rows) for the rows (j, k), j < rowsY, k < rowsZ, side by side on the threads,
+// each thread with its own buffers for rows of up to `length` samples.
 template<class Body>
-void forEachRow(const GridArray& layout, Body body)
+void forEachRowIn(int rowsY, int rowsZ, int length, Body body)
 {
-  const auto& dims = layout.dims;
 #pragma omp parallel
   {
-    Rows rows(dims[0]);
+    Rows rows(length);
 #pragma omp for schedule(static)
-    for (int k = 0; k < dims[2]; ++k)
+    for (int k = 0; k < rowsZ; ++k)
     {
-      for (int j = 0; j < dims[1]; ++j)
+      for (int j = 0; j < rowsY; ++j)
       {
-        body(j, k, layout.index(0, j, k), rows);
+        body(j, k, rows);
       }
     }
   }
+}
+
+// Calls body(j, k, row, rows) for every row of `layout` (row: the index of its first sample).
+template<class Body>
+void forEachRow(const GridArray& layout, Body body)
+{
+  forEachRowIn(layout.dims[1], layout.dims[2], layout.dims[0],
+               [&](int j, int k, Rows& rows) { body(j, k, layout.index(0, j, k), rows); });
 }
 
 // rows.x, .y, .z = the samples of row (j, k) moved by `scale` times the grid's velocity there
@@ -223,46 +230,80 @@ inline void forCornersAt(const DirectSampler& sampler, const GridArray& layout, 
 // error added back, clamped to the range the backward read blended. The forward Euler trace is
 // enough here: the round trip measures its error together with the interpolation's, and the
 // correction removes both to second order in smooth flow.
+class Carried
+{
+public:
+  /// `field` carried into `out`; `slot` picks the workspace's arrays for the MacCormack step.
+  Carried(const GridArray& field, const StaggeredGrid& g, double dt, bool macCormack, const bool* open, double ambient,
+          AdvectionWorkspace& work, int slot, std::vector<double>& out)
+    : Field(field)
+    , Velocity(g, field)
+    , Sampler(field)
+    , Step(dt / g.h)
+    , MacCormack(macCormack)
+    , Open(open)
+    , Ambient(ambient)
+    , Forward(work.forward[slot])
+    , Low(work.lo[slot])
+    , High(work.hi[slot])
+    , Out(out)
+  {
+    const std::size_t n = field.values.size();
+    out.resize(n);
+    if (macCormack)
+    {
+      Forward.resize(n);
+      Low.resize(n);
+      High.resize(n);
+    }
+  }
+  bool hasRow(int j, int k) const { return j < Field.dims[1] && k < Field.dims[2]; }
+  /// The plain step of row (j, k): traced back and read there (with MacCormack, into the forward
+  /// array, with the range it blended).
+  void back(int j, int k, Rows& r) const
+  {
+    const std::size_t row = Field.index(0, j, k);
+    traceWithVelocity(Velocity, Field, j, k, -Step, r);
+    std::vector<double>& plain = MacCormack ? Forward : Out;
+    readTraced(Field, Sampler, Field.values.data(), r, Open, Ambient, plain.data() + row,
+               MacCormack ? Low.data() + row : nullptr, MacCormack ? High.data() + row : nullptr);
+  }
+  /// The MacCormack correction of row (j, k), once every row has had back().
+  void correct(int j, int k, Rows& r) const
+  {
+    const std::size_t row = Field.index(0, j, k);
+    traceWithVelocity(Velocity, Field, j, k, Step, r);
+    readTraced(Field, Sampler, Forward.data(), r, Open, Ambient, r.values);
+    const double* source = Field.values.data();
+    for (int i = 0; i < Field.dims[0]; ++i)
+    {
+      const std::size_t id = row + i;
+      const double corrected = Forward[id] + 0.5 * (source[id] - r.values[i]);
+      Out[id] = std::clamp(corrected, Low[id], High[id]);
+    }
+  }
+  const GridArray& field() const { return Field; }
+
+private:
+  const GridArray& Field;
+  const RowVelocity Velocity;
+  const DirectSampler Sampler;
+  const double Step; // dt / h
+  const bool MacCormack;
+  const bool* Open;
+  const double Ambient;
+  std::vector<double>&Forward, &Low, &High, &Out;
+};
+
 void advectOne(const GridArray& field, const StaggeredGrid& g, double dt, bool macCormack, const bool* open,
                double ambient, AdvectionWorkspace& work, std::vector<double>& out)
 {
-  const double s = dt / g.h;
-  const std::size_t n = field.values.size();
-  out.resize(n);
-  std::vector<double>&forward = work.forward, &lo = work.lo, &hi = work.hi;
+  const Carried carried(field, g, dt, macCormack, open, ambient, work, 0, out);
+  forEachRow(field, [&](int j, int k, std::size_t, Rows& r) { carried.back(j, k, r); });
   if (macCormack)
   {
-    forward.resize(n);
-    lo.resize(n);
-    hi.resize(n);
+    forEachRow(field, [&](int j, int k, std::size_t, Rows& r) { carried.correct(j, k, r); });
   }
-  std::vector<double>& plain = macCormack ? forward : out;
-  const double* source = field.values.data();
-  const RowVelocity velocity(g, field);
-  const DirectSampler sampler(field);
-  forEachRow(field,
-             [&](int j, int k, std::size_t row, Rows& r)
-             {
-               traceWithVelocity(velocity, field, j, k, -s, r);
-               readTraced(field, sampler, source, r, open, ambient, plain.data() + row,
-                          macCormack ? lo.data() + row : nullptr, macCormack ? hi.data() + row : nullptr);
-             });
-  if (!macCormack)
-  {
-    return;
-  }
-  forEachRow(field,
-             [&](int j, int k, std::size_t row, Rows& r)
-             {
-               traceWithVelocity(velocity, field, j, k, s, r);
-               readTraced(field, sampler, forward.data(), r, open, ambient, r.values);
-               for (int i = 0; i < field.dims[0]; ++i)
-               {
-                 const std::size_t id = row + i;
-                 const double corrected = forward[id] + 0.5 * (source[id] - r.values[i]);
-                 out[id] = std::clamp(corrected, lo[id], hi[id]);
-               }
-             });
 }
 } // namespace
 
@@ -286,11 +327,28 @@ void advectVelocity(StaggeredGrid& g, double dt, bool macCormack, AdvectionWorks
   AdvectionWorkspace local;
   AdvectionWorkspace& work = workspace ? *workspace : local;
   // All three components carried by the old velocity, then swapped in (the old values' storage
-  // is the next step's).
+  // is the next step's). The three run in one pass over the rows: the neighbourhood of a row,
+  // which the velocity and the traces read, is then read once for all three instead of thrice.
   GridArray* faces[3] = { &g.u, &g.v, &g.w };
-  for (int c = 0; c < 3; ++c)
+  const Carried carried[3] = { { g.u, g, dt, macCormack, nullptr, 0.0, work, 0, work.next[0] },
+                               { g.v, g, dt, macCormack, nullptr, 0.0, work, 1, work.next[1] },
+                               { g.w, g, dt, macCormack, nullptr, 0.0, work, 2, work.next[2] } };
+  auto allRows = [&](auto&& each)
   {
-    advectOne(*faces[c], g, dt, macCormack, nullptr, 0.0, work, work.next[c]);
+    forEachRowIn(g.ny + 1, g.nz + 1, g.nx + 1,
+                 [&](int j, int k, Rows& r)
+                 {
+                   for (const Carried& c : carried)
+                   {
+                     if (c.hasRow(j, k))
+                       each(c, j, k, r);
+                   }
+                 });
+  };
+  allRows([](const Carried& c, int j, int k, Rows& r) { c.back(j, k, r); });
+  if (macCormack)
+  {
+    allRows([](const Carried& c, int j, int k, Rows& r) { c.correct(j, k, r); });
   }
   for (int c = 0; c < 3; ++c)
   {
@@ -468,7 +526,7 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
     }
   };
   std::vector<double>&excess = work.next[0], &scaled = work.next[1], &low = work.next[2];
-  std::vector<double>&forward = work.forward, &lo = work.lo, &hi = work.hi, &high = work.high;
+  std::vector<double>&forward = work.forward[0], &lo = work.lo[0], &hi = work.hi[0], &high = work.high;
   for (std::vector<double>* a : { &excess, &scaled, &low, &forward, &lo, &hi, &high })
   {
     a->resize(sharpen || a == &excess || a == &scaled || a == &low ? n : 0);
