@@ -16,8 +16,12 @@ struct AdvectionWorkspace
 {
   std::vector<double> next[3];                  // the advected arrays before they are swapped in
   std::vector<double> forward[3], lo[3], hi[3]; // the plain steps and the ranges they blended
-  std::vector<double> drawn, high;              // the conservative step's
-  std::vector<float> move;                      // each cell's displacement over the step [cells]
+  std::vector<double> drawn;                    // the conservative step's
+  struct Scalar                                 // the conservative step's per field
+  {
+    std::vector<double> excess, scaled, low, forward, lo, hi, high;
+  } scalar[2];
+  std::vector<float> move; // each cell's displacement over the step [cells]
   std::vector<std::size_t> undrawn;
 };
 
@@ -44,15 +48,16 @@ inline void pointOf(const GridArray& a, int i, int j, int k, double p[3])
 struct Rows
 {
   explicit Rows(int n)
-    : storage(4 * static_cast<std::size_t>(n))
+    : storage(5 * static_cast<std::size_t>(n))
     , x(storage.data())
     , y(x + n)
     , z(y + n)
     , values(z + n)
+    , values2(values + n)
   {
   }
   std::vector<double> storage;
-  double *x, *y, *z, *values;
+  double *x, *y, *z, *values, *values2;
 };
 
 // Calls body(j, k, rows) for the rows (j, k), j < rowsY, k < rowsZ, side by side on the threads,
@@ -525,45 +530,70 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
                    [&](std::size_t index, double weight) { out[index] += weight * content[id]; });
     }
   };
-  std::vector<double>&excess = work.next[0], &scaled = work.next[1], &low = work.next[2];
-  std::vector<double>&forward = work.forward[0], &lo = work.lo[0], &hi = work.hi[0], &high = work.high;
-  for (std::vector<double>* a : { &excess, &scaled, &low, &forward, &lo, &hi, &high })
+  // The fields go two at a time (density and temperature): they share each trace and the
+  // corners it reads.
+  for (std::size_t first = 0; first < fields.size(); first += 2)
   {
-    a->resize(sharpen || a == &excess || a == &scaled || a == &low ? n : 0);
-  }
-  for (const ScalarField& f : fields)
-  {
-    GridArray& field = *f.field;
+    const int m = fields.size() - first >= 2 ? 2 : 1;
+    const ScalarField* group[2] = { &fields[first], &fields[first + m - 1] };
+    AdvectionWorkspace::Scalar* w[2] = { &work.scalar[0], &work.scalar[1] };
+    for (int f = 0; f < m; ++f)
+    {
+      for (std::vector<double>* a : { &w[f]->excess, &w[f]->scaled, &w[f]->low })
+        a->resize(n);
+      for (std::vector<double>* a : { &w[f]->forward, &w[f]->lo, &w[f]->hi, &w[f]->high })
+        a->resize(sharpen ? n : 0);
+    }
     // 3. Low order and conservative: each source cell's excess over ambient shared out exactly
     // among the cells that draw from it, in proportion to their weights. With the correction,
     // also the range each trace blends (the clamp of the sharpened result).
-#pragma omp parallel for schedule(static)
-    for (long long id = 0; id < static_cast<long long>(n); ++id)
+    for (int f = 0; f < m; ++f)
     {
-      excess[id] = field.values[id] - f.ambient;
-      scaled[id] = drawn[id] > 0.0 ? excess[id] / drawn[id] : 0.0;
+      const double* values = group[f]->field->values.data();
+      const double ambient = group[f]->ambient;
+      double* excess = w[f]->excess.data();
+      double* scaled = w[f]->scaled.data();
+#pragma omp parallel for schedule(static)
+      for (long long id = 0; id < static_cast<long long>(n); ++id)
+      {
+        excess[id] = values[id] - ambient;
+        scaled[id] = drawn[id] > 0.0 ? excess[id] / drawn[id] : 0.0;
+      }
     }
     forEachRow(layout,
                [&](int j, int k, std::size_t row, Rows& r)
                {
                  traceWithMove(layout, move.data(), row, j, k, -1.0, r);
-                 if (sharpen)
+                 for (int f = 0; f < m; ++f)
                  {
-                   readTracedPair(layout, sampler, scaled.data(), excess.data(), r, open, low.data() + row,
-                                  forward.data() + row, lo.data() + row, hi.data() + row);
-                 }
-                 else
-                 {
-                   readTraced(layout, sampler, scaled.data(), r, open, 0.0, low.data() + row);
+                   AdvectionWorkspace::Scalar& a = *w[f];
+                   if (sharpen)
+                   {
+                     readTracedPair(layout, sampler, a.scaled.data(), a.excess.data(), r, open, a.low.data() + row,
+                                    a.forward.data() + row, a.lo.data() + row, a.hi.data() + row);
+                   }
+                   else
+                   {
+                     readTraced(layout, sampler, a.scaled.data(), r, open, 0.0, a.low.data() + row);
+                   }
                  }
                });
-    pushForward(excess, low);
+    for (int f = 0; f < m; ++f)
+    {
+      pushForward(w[f]->excess, w[f]->low);
+    }
     if (!sharpen)
     {
-#pragma omp parallel for schedule(static)
-      for (long long id = 0; id < static_cast<long long>(n); ++id)
+      for (int f = 0; f < m; ++f)
       {
-        field.values[id] = low[id] + f.ambient;
+        double* values = group[f]->field->values.data();
+        const double* low = w[f]->low.data();
+        const double ambient = group[f]->ambient;
+#pragma omp parallel for schedule(static)
+        for (long long id = 0; id < static_cast<long long>(n); ++id)
+        {
+          values[id] = low[id] + ambient;
+        }
       }
       continue;
     }
@@ -574,53 +604,87 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
                [&](int j, int k, std::size_t row, Rows& r)
                {
                  traceWithMove(layout, move.data(), row, j, k, 1.0, r);
-                 readTraced(layout, sampler, low.data(), r, open, 0.0, r.values);
-                 for (int i = 0; i < layout.dims[0]; ++i)
+                 double* roundTrip[2] = { r.values, r.values2 };
+                 if (m == 2)
                  {
-                   const std::size_t id = row + i;
-                   forward[id] = excess[id] + 0.5 * (excess[id] - r.values[i]);
+                   readTracedPair(layout, sampler, w[0]->low.data(), w[1]->low.data(), r, open, r.values, r.values2,
+                                  nullptr, nullptr);
+                 }
+                 else
+                 {
+                   readTraced(layout, sampler, w[0]->low.data(), r, open, 0.0, r.values);
+                 }
+                 for (int f = 0; f < m; ++f)
+                 {
+                   const double* excess = w[f]->excess.data() + row;
+                   double* forward = w[f]->forward.data() + row;
+                   for (int i = 0; i < layout.dims[0]; ++i)
+                   {
+                     forward[i] = excess[i] + 0.5 * (excess[i] - roundTrip[f][i]);
+                   }
                  }
                });
-#pragma omp parallel for schedule(static)
-    for (long long id = 0; id < static_cast<long long>(n); ++id)
+    for (int f = 0; f < m; ++f)
     {
-      scaled[id] = drawn[id] > 0.0 ? forward[id] / drawn[id] : 0.0;
+      const double* forward = w[f]->forward.data();
+      double* scaled = w[f]->scaled.data();
+#pragma omp parallel for schedule(static)
+      for (long long id = 0; id < static_cast<long long>(n); ++id)
+      {
+        scaled[id] = drawn[id] > 0.0 ? forward[id] / drawn[id] : 0.0;
+      }
     }
     forEachRow(layout,
                [&](int j, int k, std::size_t row, Rows& r)
                {
                  traceWithMove(layout, move.data(), row, j, k, -1.0, r);
-                 readTraced(layout, sampler, scaled.data(), r, open, 0.0, high.data() + row);
+                 if (m == 2)
+                 {
+                   readTracedPair(layout, sampler, w[0]->scaled.data(), w[1]->scaled.data(), r, open,
+                                  w[0]->high.data() + row, w[1]->high.data() + row, nullptr, nullptr);
+                 }
+                 else
+                 {
+                   readTraced(layout, sampler, w[0]->scaled.data(), r, open, 0.0, w[0]->high.data() + row);
+                 }
                });
-    pushForward(forward, high);
-
-    // 5. The mass fixer: the clamp's surplus (or deficit) against the conservative result is
-    // taken back from the cells whose correction carries it, in proportion to that correction;
-    // every cell stays between its low- and high-order values.
-    double surplus = 0.0, positive = 0.0, negative = 0.0;
+    for (int f = 0; f < m; ++f)
+    {
+      pushForward(w[f]->forward, w[f]->high);
+      // 5. The mass fixer: the clamp's surplus (or deficit) against the conservative result is
+      // taken back from the cells whose correction carries it, in proportion to that correction;
+      // every cell stays between its low- and high-order values.
+      double* high = w[f]->high.data();
+      const double* low = w[f]->low.data();
+      const double* lo = w[f]->lo.data();
+      const double* hi = w[f]->hi.data();
+      double surplus = 0.0, positive = 0.0, negative = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : surplus, positive, negative)
-    for (long long id = 0; id < static_cast<long long>(n); ++id)
-    {
-      high[id] = std::clamp(high[id], lo[id], hi[id]);
-      const double d = high[id] - low[id];
-      surplus += d;
-      positive += std::max(d, 0.0);
-      negative += std::min(d, 0.0);
-    }
-    double keepPositive = 1.0, keepNegative = 1.0;
-    if (surplus > 0.0 && positive > 0.0)
-    {
-      keepPositive = std::clamp(-negative / positive, 0.0, 1.0);
-    }
-    else if (surplus < 0.0 && negative < 0.0)
-    {
-      keepNegative = std::clamp(-positive / negative, 0.0, 1.0);
-    }
+      for (long long id = 0; id < static_cast<long long>(n); ++id)
+      {
+        high[id] = std::clamp(high[id], lo[id], hi[id]);
+        const double d = high[id] - low[id];
+        surplus += d;
+        positive += std::max(d, 0.0);
+        negative += std::min(d, 0.0);
+      }
+      double keepPositive = 1.0, keepNegative = 1.0;
+      if (surplus > 0.0 && positive > 0.0)
+      {
+        keepPositive = std::clamp(-negative / positive, 0.0, 1.0);
+      }
+      else if (surplus < 0.0 && negative < 0.0)
+      {
+        keepNegative = std::clamp(-positive / negative, 0.0, 1.0);
+      }
+      double* values = group[f]->field->values.data();
+      const double ambient = group[f]->ambient;
 #pragma omp parallel for schedule(static)
-    for (long long id = 0; id < static_cast<long long>(n); ++id)
-    {
-      const double d = high[id] - low[id];
-      field.values[id] = f.ambient + low[id] + d * (d > 0.0 ? keepPositive : keepNegative);
+      for (long long id = 0; id < static_cast<long long>(n); ++id)
+      {
+        const double d = high[id] - low[id];
+        values[id] = ambient + low[id] + d * (d > 0.0 ? keepPositive : keepNegative);
+      }
     }
   }
 }
