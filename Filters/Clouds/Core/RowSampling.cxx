@@ -21,9 +21,11 @@ struct AxisStep
 // out[i] = data at point i; with Range also lo/hi of the 8 samples; with Second also out2[i] =
 // data2 at the same point (its corners and weights found once for both).
 template<bool Range, bool Second>
-inline void readRowImpl(const RowLayout& l, const double* __restrict data, const double* __restrict data2,
-                        const double* __restrict x, const double* __restrict y, const double* __restrict z, int count,
-                        double* __restrict out, double* __restrict out2, double* __restrict lo, double* __restrict hi)
+__attribute__((always_inline)) inline void readRowImpl(const RowLayout& l, const double* __restrict data,
+                                                       const double* __restrict data2, const double* __restrict x,
+                                                       const double* __restrict y, const double* __restrict z,
+                                                       int count, double* __restrict out, double* __restrict out2,
+                                                       double* __restrict lo, double* __restrict hi)
 {
   const AxisStep ax(l.n[0], l.offset[0], 1), ay(l.n[1], l.offset[1], l.n[0]), az(l.n[2], l.offset[2], l.n[0] * l.n[1]);
   const int sx = ax.stride, sy = ay.stride, sz = az.stride;
@@ -112,7 +114,8 @@ namespace
 {
 // The mean over Rows rows and Shifts shifts in one pass (each output written once).
 template<int Rows, int Shifts>
-inline void meanOf(const double* const* rows, const int* shifts, int first, int last, double* __restrict out)
+__attribute__((always_inline)) inline void meanOf(const double* const* rows, const int* shifts, int first, int last,
+                                                  double* __restrict out)
 {
   constexpr double weight = 1.0 / (Rows * Shifts);
   const double* r[4] = { rows[0], rows[Rows > 1 ? 1 : 0], rows[Rows > 2 ? 2 : 0], rows[Rows > 3 ? 3 : 0] };
