@@ -1,5 +1,7 @@
 #include "PoissonMultigrid.h"
 
+#include "parafluid/common/SimdDispatch.h"
+
 #include <algorithm>
 #include <cstddef>
 
@@ -112,12 +114,11 @@ inline std::size_t paddedCells(const std::array<int, 3>& n)
 }
 
 // The Gauss-Seidel value of every cell of a padded row (x, b and the inverse diagonal from the
-// row's first cell): contiguous, so it runs in vector registers (AVX-512, AVX2 clones); a colour
+// row's first cell): contiguous, so it runs in vector registers (AVX-512, AVX2 copies); a colour
 // reads only the other colour, so the values of one colour's cells are those of the update.
-#define PARAFLUID_SMOOTHER_CLONES __attribute__((target_clones("arch=skylake-avx512", "avx2", "default")))
-PARAFLUID_SMOOTHER_CLONES
-void relaxedRow(const Real* __restrict x, const Real* __restrict b, const Real* __restrict inverse, std::size_t sy,
-                std::size_t sz, int count, Real* __restrict out)
+__attribute__((always_inline)) inline void relaxedRowBody(const Real* __restrict x, const Real* __restrict b,
+                                                          const Real* __restrict inverse, std::size_t sy,
+                                                          std::size_t sz, int count, Real* __restrict out)
 {
 #pragma omp simd
   for (int i = 0; i < count; ++i)
@@ -125,6 +126,10 @@ void relaxedRow(const Real* __restrict x, const Real* __restrict b, const Real* 
     out[i] = (b[i] + x[i - 1] + x[i + 1] + x[i - sy] + x[i + sy] + x[i - sz] + x[i + sz]) * inverse[i];
   }
 }
+PARAFLUID_SIMD_DISPATCH(relaxedRow,
+                        (const Real* __restrict x, const Real* __restrict b, const Real* __restrict inverse,
+                         std::size_t sy, std::size_t sz, int count, Real* __restrict out),
+                        (x, b, inverse, sy, sz, count, out), relaxedRowBody)
 
 // One colour's Gauss-Seidel update ((i + j + k) % 2 == colour) on plane k: a colour reads only
 // the other, so its cells can be updated in any order. Each row is relaxed whole (twice the

@@ -1,5 +1,7 @@
 #include "RowSampling.h"
 
+#include "parafluid/common/SimdDispatch.h"
+
 namespace parafluid::clouds::detail
 {
 namespace
@@ -77,14 +79,11 @@ __attribute__((always_inline)) inline void readRowImpl(const RowLayout& l, const
     }
   }
 }
-} // namespace
 
-// Compiled for AVX-512, AVX2 and the baseline, chosen at load time (GCC's function multi-versioning).
-#define PARAFLUID_ROW_SAMPLING_CLONES __attribute__((target_clones("arch=skylake-avx512", "avx2", "default")))
-
-PARAFLUID_ROW_SAMPLING_CLONES
-void readRow(const RowLayout& layout, const double* data, const double* x, const double* y, const double* z, int count,
-             double* out, double* lo, double* hi)
+// out (with lo, hi: the range) from data; the same for a pair of arrays.
+__attribute__((always_inline)) inline void readRowBody(const RowLayout& layout, const double* data, const double* x,
+                                                       const double* y, const double* z, int count, double* out,
+                                                       double* lo, double* hi)
 {
   if (lo && hi)
   {
@@ -96,9 +95,10 @@ void readRow(const RowLayout& layout, const double* data, const double* x, const
   }
 }
 
-PARAFLUID_ROW_SAMPLING_CLONES
-void readRowPair(const RowLayout& layout, const double* data, const double* data2, const double* x, const double* y,
-                 const double* z, int count, double* out, double* out2, double* lo2, double* hi2)
+__attribute__((always_inline)) inline void readRowPairBody(const RowLayout& layout, const double* data,
+                                                           const double* data2, const double* x, const double* y,
+                                                           const double* z, int count, double* out, double* out2,
+                                                           double* lo2, double* hi2)
 {
   if (lo2 && hi2)
   {
@@ -109,6 +109,19 @@ void readRowPair(const RowLayout& layout, const double* data, const double* data
     readRowImpl<false, true>(layout, data, data2, x, y, z, count, out, out2, nullptr, nullptr);
   }
 }
+} // namespace
+
+// Compiled for AVX-512 (with gathers), AVX2 and the baseline, the widest picked at run time.
+PARAFLUID_SIMD_DISPATCH(readRow,
+                        (const RowLayout& layout, const double* data, const double* x, const double* y, const double* z,
+                         int count, double* out, double* lo, double* hi),
+                        (layout, data, x, y, z, count, out, lo, hi), readRowBody)
+
+PARAFLUID_SIMD_DISPATCH(readRowPair,
+                        (const RowLayout& layout, const double* data, const double* data2, const double* x,
+                         const double* y, const double* z, int count, double* out, double* out2, double* lo2,
+                         double* hi2),
+                        (layout, data, data2, x, y, z, count, out, out2, lo2, hi2), readRowPairBody)
 
 namespace
 {
@@ -140,11 +153,10 @@ __attribute__((always_inline)) inline void meanOf(const double* const* rows, con
     out[i] = weight * sum;
   }
 }
-} // namespace
 
-PARAFLUID_ROW_SAMPLING_CLONES
-void meanOfShiftedRows(const double* const* rows, int rowCount, const int* shifts, int shiftCount, int first, int last,
-                       double* out)
+__attribute__((always_inline)) inline void meanOfShiftedRowsBody(const double* const* rows, int rowCount,
+                                                                 const int* shifts, int shiftCount, int first, int last,
+                                                                 double* out)
 {
   const bool two = shiftCount == 2;
   switch (rowCount)
@@ -160,4 +172,10 @@ void meanOfShiftedRows(const double* const* rows, int rowCount, const int* shift
       break;
   }
 }
+} // namespace
+
+PARAFLUID_SIMD_DISPATCH(meanOfShiftedRows,
+                        (const double* const* rows, int rowCount, const int* shifts, int shiftCount, int first,
+                         int last, double* out),
+                        (rows, rowCount, shifts, shiftCount, first, last, out), meanOfShiftedRowsBody)
 } // namespace parafluid::clouds::detail

@@ -1,7 +1,7 @@
 #pragma once
 // Trilinear reads of one grid array at a row of points, the advection's inner loop, written so
 // that the compiler vectorises it (the eight samples fetched by gathers) and compiled for
-// AVX-512, AVX2 and the baseline, the best chosen at load time. Points are in cell units (x / h
+// AVX-512, AVX2 and the baseline, the widest picked at run time. Points are in cell units (x / h
 // from the grid's origin) and clamped at the array's ends, as DirectSampler reads them.
 #include "parafluid/clouds/StaggeredGrid.h"
 

@@ -1,16 +1,18 @@
 #include "private/DropRows.h"
 
+#include "parafluid/common/SimdDispatch.h"
+
 #include <cmath>
 
 namespace parafluid::rain::detail
 {
-// Compiled for AVX-512, AVX2 and the baseline, chosen at load time (GCC's function multi-versioning).
-#define PARAFLUID_DROP_ROWS_CLONES __attribute__((target_clones("arch=skylake-avx512", "avx2", "default")))
+namespace
+{
 
-PARAFLUID_DROP_ROWS_CLONES
-void evaluateRows(const DropRows& rows, std::int64_t begin, std::int64_t end, double t, bool terminal, double gravity,
-                  double duration, float level, float* __restrict position, float* __restrict velocity,
-                  std::uint8_t* __restrict inAir)
+__attribute__((always_inline)) inline void evaluateRowsBody(const DropRows& rows, std::int64_t begin, std::int64_t end,
+                                                            double t, bool terminal, double gravity, double duration,
+                                                            float level, float* __restrict position,
+                                                            float* __restrict velocity, std::uint8_t* __restrict inAir)
 {
   const double* __restrict birthTime = rows.birth;
   const float* __restrict targetX = rows.targetX;
@@ -41,9 +43,11 @@ void evaluateRows(const DropRows& rows, std::int64_t begin, std::int64_t end, do
   }
 }
 
-PARAFLUID_DROP_ROWS_CLONES
-void changedDrops(const float* __restrict phase, const double* __restrict inversePeriod, const double* __restrict drop,
-                  std::int64_t begin, std::int64_t end, double t, std::uint8_t* __restrict changed)
+__attribute__((always_inline)) inline void changedDropsBody(const float* __restrict phase,
+                                                            const double* __restrict inversePeriod,
+                                                            const double* __restrict drop, std::int64_t begin,
+                                                            std::int64_t end, double t,
+                                                            std::uint8_t* __restrict changed)
 {
   for (std::int64_t i = begin; i < end; ++i)
   {
@@ -51,10 +55,11 @@ void changedDrops(const float* __restrict phase, const double* __restrict invers
   }
 }
 
-PARAFLUID_DROP_ROWS_CLONES
-void impactCandidates(const float* __restrict phase, const double* __restrict inversePeriod,
-                      const std::int64_t* __restrict lastCounted, std::int64_t begin, std::int64_t end, double t,
-                      bool wet, std::uint8_t* __restrict candidate)
+__attribute__((always_inline)) inline void impactCandidatesBody(const float* __restrict phase,
+                                                                const double* __restrict inversePeriod,
+                                                                const std::int64_t* __restrict lastCounted,
+                                                                std::int64_t begin, std::int64_t end, double t,
+                                                                bool wet, std::uint8_t* __restrict candidate)
 {
   for (std::int64_t i = begin; i < end; ++i)
   {
@@ -62,4 +67,25 @@ void impactCandidates(const float* __restrict phase, const double* __restrict in
     candidate[i] = static_cast<std::uint8_t>((newest > static_cast<double>(lastCounted[i]) + 1.0) | wet);
   }
 }
+} // namespace
+
+// Each compiled for AVX-512, AVX2 and the baseline, the widest picked at run time.
+PARAFLUID_SIMD_DISPATCH(evaluateRows,
+                        (const DropRows& rows, std::int64_t begin, std::int64_t end, double t, bool terminal,
+                         double gravity, double duration, float level, float* __restrict position,
+                         float* __restrict velocity, std::uint8_t* __restrict inAir),
+                        (rows, begin, end, t, terminal, gravity, duration, level, position, velocity, inAir),
+                        evaluateRowsBody)
+
+PARAFLUID_SIMD_DISPATCH(changedDrops,
+                        (const float* __restrict phase, const double* __restrict inversePeriod,
+                         const double* __restrict drop, std::int64_t begin, std::int64_t end, double t,
+                         std::uint8_t* __restrict changed),
+                        (phase, inversePeriod, drop, begin, end, t, changed), changedDropsBody)
+
+PARAFLUID_SIMD_DISPATCH(impactCandidates,
+                        (const float* __restrict phase, const double* __restrict inversePeriod,
+                         const std::int64_t* __restrict lastCounted, std::int64_t begin, std::int64_t end, double t,
+                         bool wet, std::uint8_t* __restrict candidate),
+                        (phase, inversePeriod, lastCounted, begin, end, t, wet, candidate), impactCandidatesBody)
 } // namespace parafluid::rain::detail

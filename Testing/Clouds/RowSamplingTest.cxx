@@ -1,0 +1,121 @@
+// The vectorised row reads against the scalar sampler they replace. ctest runs this suite three
+// times, once per compiled copy (PARAFLUID_SIMD=baseline, =avx2, and the widest the CPU has), so
+// a copy that a compiler or a dispatch change breaks fails here by name.
+#include "RowSampling.h"
+#include "GridSampling.h"
+#include "parafluid/common/SimdDispatch.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace
+{
+using namespace parafluid::clouds;
+
+const char* copyName()
+{
+  switch (parafluid::common::simdLevel())
+  {
+    case parafluid::common::SimdLevel::Avx512:
+      return "AVX-512";
+    case parafluid::common::SimdLevel::Avx2:
+      return "AVX2";
+    default:
+      return "baseline";
+  }
+}
+
+// A 13 x 9 x 7 array of a face-centred layout filled with noise, and points in and beyond it.
+struct Fixture
+{
+  GridArray a, b;
+  std::vector<double> x, y, z;
+  explicit Fixture(int count)
+  {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> value(-3.0, 5.0);
+    for (GridArray* g : { &a, &b })
+    {
+      g->dims = { 13, 9, 7 };
+      g->offset = { 0.0, 0.5, 0.5 };
+      g->values.resize(13 * 9 * 7);
+      for (double& v : g->values)
+        v = value(random);
+    }
+    // Most inside, some past every face (the reads clamp there, as the scalar sampler does).
+    std::uniform_real_distribution<double> px(-1.5, 13.5), py(-1.5, 9.5), pz(-1.5, 7.5);
+    for (int i = 0; i < count; ++i)
+    {
+      x.push_back(px(random));
+      y.push_back(py(random));
+      z.push_back(pz(random));
+    }
+  }
+};
+
+TEST(RowSampling, ReadsMatchTheScalarSampler)
+{
+  const int count = 1001; // not a multiple of any vector width: the tails run too
+  const Fixture f(count);
+  const detail::DirectSampler sampler(f.a);
+  std::vector<double> plain(count), ranged(count), lo(count), hi(count), pairA(count), pairB(count), loB(count),
+    hiB(count);
+  detail::readRow(detail::RowLayout(f.a), f.a.values.data(), f.x.data(), f.y.data(), f.z.data(), count, ranged.data(),
+                  lo.data(), hi.data());
+  detail::readRow(detail::RowLayout(f.a), f.a.values.data(), f.x.data(), f.y.data(), f.z.data(), count, plain.data());
+  detail::readRowPair(detail::RowLayout(f.a), f.a.values.data(), f.b.values.data(), f.x.data(), f.y.data(), f.z.data(),
+                      count, pairA.data(), pairB.data(), loB.data(), hiB.data());
+  for (int i = 0; i < count; ++i)
+  {
+    const double p[3] = { f.x[i], f.y[i], f.z[i] };
+    double low, high, lowB, highB;
+    const double expected = sampler.at(f.a.values.data(), p, &low, &high);
+    const double expectedB = sampler.at(f.b.values.data(), p, &lowB, &highB);
+    ASSERT_NEAR(plain[i], expected, 1e-12) << copyName() << " copy, point " << i;
+    ASSERT_EQ(lo[i], low) << copyName() << " copy, point " << i;
+    ASSERT_EQ(hi[i], high) << copyName() << " copy, point " << i;
+    ASSERT_NEAR(ranged[i], expected, 1e-12) << copyName() << " copy, with range, point " << i;
+    ASSERT_NEAR(pairA[i], expected, 1e-12) << copyName() << " copy, pair, point " << i;
+    ASSERT_NEAR(pairB[i], expectedB, 1e-12) << copyName() << " copy, pair, point " << i;
+    ASSERT_EQ(loB[i], lowB) << copyName() << " copy, pair, point " << i;
+    ASSERT_EQ(hiB[i], highB) << copyName() << " copy, pair, point " << i;
+  }
+}
+
+TEST(RowSampling, MeanOfShiftedRowsIsTheMeanOfItsTerms)
+{
+  std::vector<std::vector<double>> rows(4, std::vector<double>(40));
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  for (auto& r : rows)
+    for (double& v : r)
+      v = value(random);
+  const double* pointers[4] = { rows[0].data(), rows[1].data(), rows[2].data(), rows[3].data() };
+  const int shifts[2] = { 0, 1 };
+  for (int rowCount : { 1, 2, 4 })
+  {
+    for (int shiftCount : { 1, 2 })
+    {
+      std::vector<double> out(40, -99.0);
+      detail::meanOfShiftedRows(pointers, rowCount, shifts, shiftCount, 2, 36, out.data());
+      for (int i = 0; i < 40; ++i)
+      {
+        if (i < 2 || i > 36)
+        {
+          EXPECT_EQ(out[i], -99.0) << "outside [first, last] untouched";
+          continue;
+        }
+        double sum = 0.0;
+        for (int r = 0; r < rowCount; ++r)
+          for (int s = 0; s < shiftCount; ++s)
+            sum += rows[r][i + shifts[s]];
+        EXPECT_NEAR(out[i], sum / (rowCount * shiftCount), 1e-15)
+          << copyName() << " copy, " << rowCount << " rows, " << shiftCount << " shifts, i = " << i;
+      }
+    }
+  }
+}
+} // namespace
