@@ -131,7 +131,7 @@ bool RainStreakPass::Run(const RainFrame& frame, const RainPointBuffer& drops, c
     glGenVertexArrays(1, &this->EmptyVAO);
   }
   glBindVertexArray(this->EmptyVAO);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(6 * drops.Count()));
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * drops.Count()));
   glBindVertexArray(0);
   this->Transfer->Deactivate();
   drops.Texture()->Deactivate();
