@@ -3,7 +3,7 @@
 // against its iterations with the multigrid and the Jacobi preconditioner; and the same pressure
 // solve by Eigen's ConjugateGradient (incomplete Cholesky and diagonal preconditioners) on the
 // assembled 7-point matrix, the peer for "Eigen or the hand-written matrix-free CG".
-// Run: build/bin/ParaFluidCloudsBenchmark [--quick | --steps]
+// Run: build/bin/ParaFluidCloudsBenchmark [--quick | --steps | --grid N]
 #include "parafluid/clouds/GridSolvers.h"
 #include "parafluid/clouds/StableFluids.h"
 
@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -61,7 +62,7 @@ double velocityRms(const StaggeredGrid& g)
   return std::sqrt(s / static_cast<double>(count));
 }
 
-void stepTimes(bool quick, bool plain)
+void stepTimes(const std::vector<int>& sizes, bool plain)
 {
   if (plain)
   {
@@ -73,9 +74,8 @@ void stepTimes(bool quick, bool plain)
     std::printf("\n## Time per step against grid size (plume, vorticity 0.3, MacCormack, conservative scalars, "
                 "MGPCG to 1e-5, dt = h / 1 m/s)\n\n");
   }
-  std::printf("| grid | ms/step, median (least) | forces | advection | projection | projection iterations "
-              "|\n|---|---|---|---|---|---|\n");
-  const std::vector<int> sizes = quick ? std::vector<int>{ 32, 64 } : std::vector<int>{ 32, 48, 64, 96, 128 };
+  std::printf("| grid | ms/step, median (least) | forces | advection (of which scalars) | projection | projection "
+              "iterations |\n|---|---|---|---|---|---|\n");
   auto median = [](std::vector<double> v)
   {
     std::sort(v.begin(), v.end());
@@ -95,7 +95,7 @@ void stepTimes(bool quick, bool plain)
       fluid.step(dt); // the plume under way
     // The median of several steps: this machine's timings jump between runs and within one.
     const int steps = n >= 128 ? 7 : (n >= 96 ? 9 : 15);
-    std::vector<double> total, forces, advection, projection;
+    std::vector<double> total, forces, advection, scalars, projection;
     int iterations = 0;
     for (int s = 0; s < steps; ++s)
     {
@@ -104,12 +104,13 @@ void stepTimes(bool quick, bool plain)
       total.push_back(now() - start);
       forces.push_back(fluid.lastTimings().forces);
       advection.push_back(fluid.lastTimings().advection);
+      scalars.push_back(fluid.lastTimings().scalarAdvection);
       projection.push_back(fluid.lastTimings().projection);
       iterations += fluid.lastProjection().iterations;
     }
-    std::printf("| %d^3 | %.1f (%.1f) | %.1f | %.1f | %.1f | %.1f |\n", n, median(total),
-                *std::min_element(total.begin(), total.end()), median(forces), median(advection), median(projection),
-                static_cast<double>(iterations) / steps);
+    std::printf("| %d^3 | %.1f (%.1f) | %.1f | %.1f (%.1f) | %.1f | %.1f |\n", n, median(total),
+                *std::min_element(total.begin(), total.end()), median(forces), median(advection), median(scalars),
+                median(projection), static_cast<double>(iterations) / steps);
   }
 }
 
@@ -244,11 +245,17 @@ void eigenPeer(int n)
 
 int main(int argc, char** argv)
 {
-  // --steps: the step times at 32^3 and 64^3 only.
-  const bool steps = argc > 1 && std::strcmp(argv[1], "--steps") == 0;
+  // --steps: the step times at 32^3 and 64^3 only; --grid N: at N^3 only.
+  const bool grid = argc > 2 && std::strcmp(argv[1], "--grid") == 0;
+  const bool steps = grid || (argc > 1 && std::strcmp(argv[1], "--steps") == 0);
   const bool quick = steps || (argc > 1 && std::strcmp(argv[1], "--quick") == 0);
-  stepTimes(quick, false);
-  stepTimes(quick, true);
+  std::vector<int> sizes = quick ? std::vector<int>{ 32, 64 } : std::vector<int>{ 32, 48, 64, 96, 128 };
+  if (grid)
+  {
+    sizes = { std::clamp(std::atoi(argv[2]), 2, 512) };
+  }
+  stepTimes(sizes, false);
+  stepTimes(sizes, true);
   if (steps)
   {
     return 0;

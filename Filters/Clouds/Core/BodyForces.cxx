@@ -1,62 +1,12 @@
 #include "BodyForces.h"
 
+#include "parafluid/common/SimdDispatch.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace parafluid::clouds::detail
 {
-namespace
-{
-// out[i] = d row / dx at sample i (spacing h): central inside, one-sided at the ends, 0 for a
-// single sample.
-void derivativeAlong(const double* row, int n, double h, double* out)
-{
-  if (n < 2)
-  {
-    out[0] = 0.0;
-    return;
-  }
-  out[0] = (row[1] - row[0]) / h;
-  out[n - 1] = (row[n - 1] - row[n - 2]) / h;
-  const double half = 0.5 / h;
-  for (int i = 1; i < n - 1; ++i)
-  {
-    out[i] = (row[i + 1] - row[i - 1]) * half;
-  }
-}
-
-// out[i] = (above[i] - below[i]) * inverseSpan: the derivative across rows.
-void derivativeAcross(const double* below, const double* above, int n, double inverseSpan, double* out)
-{
-  for (int i = 0; i < n; ++i)
-  {
-    out[i] = (above[i] - below[i]) * inverseSpan;
-  }
-}
-
-// The rows either side of row `at` along an axis of `count` rows (clamped) and 1 / (their distance
-// in metres), 0 for a single row.
-void neighbours(int at, int count, double h, int& below, int& above, double& inverseSpan)
-{
-  below = std::max(at - 1, 0);
-  above = std::min(at + 1, count - 1);
-  inverseSpan = above > below ? 1.0 / ((above - below) * h) : 0.0;
-}
-
-// The derivatives of cell array f along y and z at row (j, k) into dy and dz.
-void derivativesAcross(const GridArray& cells, const std::vector<double>& f, int j, int k, double h, double* dy,
-                       double* dz)
-{
-  const int nx = cells.dims[0];
-  int below, above;
-  double inverse;
-  neighbours(j, cells.dims[1], h, below, above, inverse);
-  derivativeAcross(&f[cells.index(0, below, k)], &f[cells.index(0, above, k)], nx, inverse, dy);
-  neighbours(k, cells.dims[2], h, below, above, inverse);
-  derivativeAcross(&f[cells.index(0, j, below)], &f[cells.index(0, j, above)], nx, inverse, dz);
-}
-} // namespace
-
 void addCellValuesToFaces(const StaggeredGrid& g, GridArray& faces, int axis, const double* perCell, double scale,
                           bool interiorOnly)
 {
@@ -109,99 +59,262 @@ void addCellValuesToFaces(const StaggeredGrid& g, GridArray& faces, int axis, co
   }
 }
 
-void vorticityConfinementForce(const StaggeredGrid& g, double epsilon, ForceScratch& s)
+namespace
+{
+// The cells either side of cell `at` along an axis of `count` cells (clamped at the walls) and
+// 1 / their distance [1/m] (one-sided differences at the walls, 0 for a single cell).
+struct Across
+{
+  int below, above;
+  double inverse;
+  Across(int at, int count, double h)
+    : below(std::max(at - 1, 0))
+    , above(std::min(at + 1, count - 1))
+    , inverse(above > below ? 1.0 / ((above - below) * h) : 0.0)
+  {
+  }
+};
+
+// The derivative along a row of n samples [1/m]: central inside, one-sided at the ends.
+template<class Value>
+__attribute__((always_inline)) inline void alongRow(const Value* __restrict row, int n, double h,
+                                                    double* __restrict out)
+{
+  if (n < 2)
+  {
+    out[0] = 0.0;
+    return;
+  }
+  out[0] = (row[1] - row[0]) / h;
+  out[n - 1] = (row[n - 1] - row[n - 2]) / h;
+  const double half = 0.5 / h;
+  for (int i = 1; i < n - 1; ++i)
+  {
+    out[i] = (row[i + 1] - row[i - 1]) * half;
+  }
+}
+
+// A thread's row buffers for the vorticity confinement.
+struct ConfinementRows
+{
+  explicit ConfinementRows(int n)
+    : storage(10 * static_cast<std::size_t>(n))
+  {
+    double* p = storage.data();
+    for (double** row : { &cv, &cw, &dvx, &dwx, &gx, &fx, &fy, &fz, &previousFy, &belowFz })
+    {
+      *row = p;
+      p += n;
+    }
+  }
+  std::vector<double> storage;
+  double *cv, *cw, *dvx, *dwx, *gx, *fx, *fy, *fz, *previousFy, *belowFz;
+};
+
+// What the curl of one cell row reads and writes: the face rows either side of it along y and z
+// (b: below, a: above), its own v and w face rows, the strides to the next v row along y and the
+// next w row along z, half the inverse spans along y and z [1/m], the cell size [m].
+struct CurlRow
+{
+  const double *uyb, *uya, *uzb, *uza, *vzb, *vza, *wyb, *wya, *vrow, *wrow;
+  std::size_t vy, wz;
+  double hy, hz, h;
+  int nx;
+  ConfinementRows* rows;
+  float *ox, *oy, *oz, *magnitude;
+};
+
+__attribute__((always_inline)) inline void curlRowBody(const CurlRow& c)
+{
+  const int nx = c.nx;
+  double* __restrict cv = c.rows->cv;
+  double* __restrict cw = c.rows->cw;
+  for (int i = 0; i < nx; ++i)
+  {
+    cv[i] = 0.5 * (c.vrow[i] + c.vrow[i + c.vy]);
+    cw[i] = 0.5 * (c.wrow[i] + c.wrow[i + c.wz]);
+  }
+  double* __restrict dvx = c.rows->dvx;
+  double* __restrict dwx = c.rows->dwx;
+  alongRow(cv, nx, c.h, dvx);
+  alongRow(cw, nx, c.h, dwx);
+  const double* __restrict uyb = c.uyb, * __restrict uya = c.uya, * __restrict uzb = c.uzb, * __restrict uza = c.uza;
+  const double* __restrict vzb = c.vzb, * __restrict vza = c.vza, * __restrict wyb = c.wyb, * __restrict wya = c.wya;
+  float* __restrict ox = c.ox, * __restrict oy = c.oy, * __restrict oz = c.oz, * __restrict m = c.magnitude;
+  const std::size_t vy = c.vy, wz = c.wz;
+  const double hy = c.hy, hz = c.hz;
+  for (int i = 0; i < nx; ++i)
+  {
+    const double duy = hy * ((uya[i] + uya[i + 1]) - (uyb[i] + uyb[i + 1]));
+    const double duz = hz * ((uza[i] + uza[i + 1]) - (uzb[i] + uzb[i + 1]));
+    const double dvz = hz * ((vza[i] + vza[i + vy]) - (vzb[i] + vzb[i + vy]));
+    const double dwy = hy * ((wya[i] + wya[i + wz]) - (wyb[i] + wyb[i + wz]));
+    const double a = dwy - dvz, b = duz - dwx[i], d = dvx[i] - duy;
+    ox[i] = static_cast<float>(a);
+    oy[i] = static_cast<float>(b);
+    oz[i] = static_cast<float>(d);
+    m[i] = static_cast<float>(std::sqrt(a * a + b * b + d * d)); // -fno-math-errno: vectorises
+  }
+}
+
+PARAFLUID_SIMD_DISPATCH(curlOfRow, (const CurlRow& c), (c), curlRowBody)
+
+// omega (the curl of the cell-centred velocity) and |omega| of cell row (j, k). The centred
+// velocity is the mean of each component's two faces, taken where the differences need it
+// instead of stored.
+void curlRow(const StaggeredGrid& g, int j, int k, ConfinementRows& r, ForceScratch& s)
+{
+  const Across y(j, g.ny, g.h), z(k, g.nz, g.h);
+  const double* u = &g.u.values[0];
+  const double* v = &g.v.values[0];
+  const double* w = &g.w.values[0];
+  const std::size_t row = g.density.index(0, j, k);
+  CurlRow c;
+  c.uyb = u + g.u.index(0, y.below, k);
+  c.uya = u + g.u.index(0, y.above, k);
+  c.uzb = u + g.u.index(0, j, z.below);
+  c.uza = u + g.u.index(0, j, z.above);
+  c.vzb = v + g.v.index(0, j, z.below);
+  c.vza = v + g.v.index(0, j, z.above);
+  c.wyb = w + g.w.index(0, y.below, k);
+  c.wya = w + g.w.index(0, y.above, k);
+  c.vrow = v + g.v.index(0, j, k);
+  c.wrow = w + g.w.index(0, j, k);
+  c.vy = g.v.index(0, 1, 0);
+  c.wz = g.w.index(0, 0, 1);
+  c.hy = 0.5 * y.inverse;
+  c.hz = 0.5 * z.inverse;
+  c.h = g.h;
+  c.nx = g.nx;
+  c.rows = &r;
+  c.ox = &s.vorticity[0][row];
+  c.oy = &s.vorticity[1][row];
+  c.oz = &s.vorticity[2][row];
+  c.magnitude = &s.magnitude[row];
+  curlOfRow(c);
+}
+
+// What the confinement force of one cell row reads: |omega| along the row and at the rows either
+// side along y and z, the inverse spans [1/m], omega of the row; epsilon h.
+struct ForceRow
+{
+  const float *m, *myb, *mya, *mzb, *mza, *ox, *oy, *oz;
+  double inverseY, inverseZ, h, scale;
+  int nx;
+  ConfinementRows* rows;
+};
+
+__attribute__((always_inline)) inline void forceRowBody(const ForceRow& f)
+{
+  const int nx = f.nx;
+  double* __restrict gxRow = f.rows->gx;
+  alongRow(f.m, nx, f.h, gxRow);
+  const float* __restrict myb = f.myb, * __restrict mya = f.mya, * __restrict mzb = f.mzb, * __restrict mza = f.mza;
+  const float* __restrict ox = f.ox, * __restrict oy = f.oy, * __restrict oz = f.oz;
+  double* __restrict fx = f.rows->fx, * __restrict fy = f.rows->fy, * __restrict fz = f.rows->fz;
+  const double iy = f.inverseY, iz = f.inverseZ, scale = f.scale;
+  for (int i = 0; i < nx; ++i)
+  {
+    const double gx = gxRow[i];
+    const double gy = (double(mya[i]) - double(myb[i])) * iy;
+    const double gz = (double(mza[i]) - double(mzb[i])) * iz;
+    const double length = std::sqrt(gx * gx + gy * gy + gz * gz);
+    const double inverse = length < 1e-12 ? 0.0 : scale / length;
+    const double Nx = gx * inverse, Ny = gy * inverse, Nz = gz * inverse;
+    fx[i] = Ny * oz[i] - Nz * oy[i];
+    fy[i] = Nz * ox[i] - Nx * oz[i];
+    fz[i] = Nx * oy[i] - Ny * ox[i];
+  }
+}
+
+PARAFLUID_SIMD_DISPATCH(forceOfRow, (const ForceRow& f), (f), forceRowBody)
+
+// The confinement force epsilon h (N x omega) of cell row (j, k) into r.fx, r.fy, r.fz,
+// N = grad |omega| / |grad |omega||, zero where that gradient vanishes.
+void forceRow(const StaggeredGrid& g, const ForceScratch& s, double scale, int j, int k, ConfinementRows& r)
 {
   const GridArray& cells = g.density;
+  const std::size_t row = cells.index(0, j, k);
+  const Across y(j, g.ny, g.h), z(k, g.nz, g.h);
+  const float* m = s.magnitude.data();
+  ForceRow f;
+  f.m = m + row;
+  f.myb = m + cells.index(0, y.below, k);
+  f.mya = m + cells.index(0, y.above, k);
+  f.mzb = m + cells.index(0, j, z.below);
+  f.mza = m + cells.index(0, j, z.above);
+  f.ox = &s.vorticity[0][row];
+  f.oy = &s.vorticity[1][row];
+  f.oz = &s.vorticity[2][row];
+  f.inverseY = y.inverse;
+  f.inverseZ = z.inverse;
+  f.h = g.h;
+  f.scale = scale;
+  f.nx = g.nx;
+  f.rows = &r;
+  forceOfRow(f);
+}
+} // namespace
+
+void addVorticityConfinement(StaggeredGrid& g, double epsilon, double dt, ForceScratch& s)
+{
   const int nx = g.nx, ny = g.ny, nz = g.nz;
-  const double h = g.h;
   const std::size_t n = g.cells();
   for (int a = 0; a < 3; ++a)
   {
-    s.centre[a].resize(n);
     s.vorticity[a].resize(n);
-    s.force[a].resize(n);
   }
   s.magnitude.resize(n);
-  // Cell-centred velocity: the mean of each component's two faces.
-#pragma omp parallel for schedule(static)
-  for (int k = 0; k < nz; ++k)
-  {
-    for (int j = 0; j < ny; ++j)
-    {
-      const std::size_t row = cells.index(0, j, k);
-      const double* u = &g.u.values[g.u.index(0, j, k)];
-      const double* v0 = &g.v.values[g.v.index(0, j, k)];
-      const double* v1 = &g.v.values[g.v.index(0, j + 1, k)];
-      const double* w0 = &g.w.values[g.w.index(0, j, k)];
-      const double* w1 = &g.w.values[g.w.index(0, j, k + 1)];
-      for (int i = 0; i < nx; ++i)
-      {
-        s.centre[0][row + i] = 0.5 * (u[i] + u[i + 1]);
-        s.centre[1][row + i] = 0.5 * (v0[i] + v1[i]);
-        s.centre[2][row + i] = 0.5 * (w0[i] + w1[i]);
-      }
-    }
-  }
-  // omega = curl of the centred velocity, and its magnitude.
+  // 1. omega and |omega| per cell (single precision: they only steer the force's direction).
 #pragma omp parallel
   {
-    std::vector<double> rows(6 * static_cast<std::size_t>(nx));
-    double *duy = rows.data(), *duz = duy + nx, *dvx = duz + nx, *dvz = dvx + nx, *dwx = dvz + nx, *dwy = dwx + nx;
-    std::vector<double> unused(static_cast<std::size_t>(nx));
+    ConfinementRows r(nx);
+#pragma omp for schedule(static)
+    for (int k = 0; k < nz; ++k)
+      for (int j = 0; j < ny; ++j)
+        curlRow(g, j, k, r, s);
+  }
+  // 2. The force of each cell row, onto the faces between cells as the mean of the two cells'
+  // forces (the walls' faces are left alone). A row of faces is written by one iteration only:
+  // the x faces of row (j, k) take cell row (j, k)'s force, its y faces also row (j - 1, k)'s
+  // (the previous iteration's), its z faces row (j, k - 1)'s (worked out again here).
+  const double scale = epsilon * g.h;
+#pragma omp parallel
+  {
+    ConfinementRows r(nx);
 #pragma omp for schedule(static)
     for (int k = 0; k < nz; ++k)
     {
       for (int j = 0; j < ny; ++j)
       {
-        const std::size_t row = cells.index(0, j, k);
-        derivativesAcross(cells, s.centre[0], j, k, h, duy, duz);
-        derivativesAcross(cells, s.centre[1], j, k, h, unused.data(), dvz);
-        derivativesAcross(cells, s.centre[2], j, k, h, dwy, unused.data());
-        derivativeAlong(&s.centre[1][row], nx, h, dvx);
-        derivativeAlong(&s.centre[2][row], nx, h, dwx);
-        double* ox = &s.vorticity[0][row];
-        double* oy = &s.vorticity[1][row];
-        double* oz = &s.vorticity[2][row];
-        double* m = &s.magnitude[row];
-        for (int i = 0; i < nx; ++i)
+        if (k > 0)
         {
-          ox[i] = dwy[i] - dvz[i];
-          oy[i] = duz[i] - dwx[i];
-          oz[i] = dvx[i] - duy[i];
-          m[i] = std::sqrt(ox[i] * ox[i] + oy[i] * oy[i] + oz[i] * oz[i]);
+          forceRow(g, s, scale, j, k - 1, r);
+          std::copy(r.fz, r.fz + nx, r.belowFz);
         }
-      }
-    }
-  }
-  // force = epsilon h (N x omega), N = grad |omega| / |grad |omega||.
-  const double scale = epsilon * h;
-#pragma omp parallel
-  {
-    std::vector<double> rows(3 * static_cast<std::size_t>(nx));
-    double *gx = rows.data(), *gy = gx + nx, *gz = gy + nx;
-#pragma omp for schedule(static)
-    for (int k = 0; k < nz; ++k)
-    {
-      for (int j = 0; j < ny; ++j)
-      {
-        const std::size_t row = cells.index(0, j, k);
-        derivativeAlong(&s.magnitude[row], nx, h, gx);
-        derivativesAcross(cells, s.magnitude, j, k, h, gy, gz);
-        const double* ox = &s.vorticity[0][row];
-        const double* oy = &s.vorticity[1][row];
-        const double* oz = &s.vorticity[2][row];
-        double* fx = &s.force[0][row];
-        double* fy = &s.force[1][row];
-        double* fz = &s.force[2][row];
-        for (int i = 0; i < nx; ++i)
+        forceRow(g, s, scale, j, k, r);
+        double* u = &g.u.values[g.u.index(0, j, k)];
+        for (int i = 1; i < nx; ++i)
         {
-          const double length = std::sqrt(gx[i] * gx[i] + gy[i] * gy[i] + gz[i] * gz[i]);
-          const double inverse = length < 1e-12 ? 0.0 : scale / length;
-          const double Nx = gx[i] * inverse, Ny = gy[i] * inverse, Nz = gz[i] * inverse;
-          fx[i] = Ny * oz[i] - Nz * oy[i];
-          fy[i] = Nz * ox[i] - Nx * oz[i];
-          fz[i] = Nx * oy[i] - Ny * ox[i];
+          u[i] += dt * 0.5 * (r.fx[i - 1] + r.fx[i]);
         }
+        if (j > 0)
+        {
+          double* v = &g.v.values[g.v.index(0, j, k)];
+          for (int i = 0; i < nx; ++i)
+          {
+            v[i] += dt * 0.5 * (r.previousFy[i] + r.fy[i]);
+          }
+        }
+        if (k > 0)
+        {
+          double* w = &g.w.values[g.w.index(0, j, k)];
+          for (int i = 0; i < nx; ++i)
+          {
+            w[i] += dt * 0.5 * (r.belowFz[i] + r.fz[i]);
+          }
+        }
+        std::swap(r.previousFy, r.fy);
       }
     }
   }

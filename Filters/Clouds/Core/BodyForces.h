@@ -17,12 +17,14 @@ void addCellValuesToFaces(const StaggeredGrid& g, GridArray& faces, int axis, co
 /// The arrays the forces are worked out in, kept between steps.
 struct ForceScratch
 {
-  std::vector<double> lift;                                         // buoyancy per cell [m/s^2]
-  std::vector<double> centre[3], vorticity[3], magnitude, force[3]; // vorticity confinement
+  std::vector<double> lift;                   // buoyancy per cell [m/s^2]
+  std::vector<float> vorticity[3], magnitude; // omega and |omega| per cell [1/s]
 };
 
-/// force[a] per cell = epsilon h (N x omega), omega the curl of the cell-centred velocity and N
-/// the unit gradient of |omega| (central differences, one-sided at the walls); zero where that
-/// gradient vanishes.
-void vorticityConfinementForce(const StaggeredGrid& g, double epsilon, ForceScratch& scratch);
+/// The faces between cells += dt times the mean of the two cells' vorticity-confinement force
+/// epsilon h (N x omega), omega the curl of the cell-centred velocity and N the unit gradient of
+/// |omega| (central differences, one-sided at the walls; zero where that gradient vanishes). The
+/// faces on the walls are left alone. Two passes over the grid: omega, then the force onto the
+/// faces row by row, without a per-cell force array.
+void addVorticityConfinement(StaggeredGrid& g, double epsilon, double dt, ForceScratch& scratch);
 } // namespace parafluid::clouds::detail

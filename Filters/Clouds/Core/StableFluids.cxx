@@ -165,12 +165,7 @@ void StableFluids::applyForces(double dt)
   }
   if (P.vorticity > 0.0)
   {
-    // Onto the faces between cells: the mean of the two cells' forces.
-    detail::vorticityConfinementForce(g, P.vorticity, scratch);
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      detail::addCellValuesToFaces(g, *faces[axis], axis, scratch.force[axis].data(), dt, true);
-    }
+    detail::addVorticityConfinement(g, P.vorticity, dt, scratch);
   }
 }
 
@@ -196,8 +191,9 @@ void StableFluids::step(double dt)
   // Every field is carried by the same (old) velocity: the scalars first.
   advectScalars(g, { { &g.density, 0.0 }, { &g.temperature, P.ambientTemperature } }, dt, P.macCormack, P.conservative,
                 this->Advection.get());
+  this->Timings.scalarAdvection = elapsed();
   advectVelocity(g, dt, P.macCormack, this->Advection.get());
-  this->Timings.advection = elapsed();
+  this->Timings.advection = this->Timings.scalarAdvection + elapsed();
   if (P.viscosity > 0.0)
   {
     for (GridArray* f : { &g.u, &g.v, &g.w })

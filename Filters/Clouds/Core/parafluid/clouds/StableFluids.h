@@ -25,8 +25,9 @@ struct ForceScratch;
 /// Where the last step's time went [ms] (steady clock).
 struct StepTimings
 {
-  double forces = 0.0; // sources, buoyancy, vorticity confinement
-  double advection = 0.0;
+  double forces = 0.0;          // sources, buoyancy, vorticity confinement
+  double advection = 0.0;       // of everything
+  double scalarAdvection = 0.0; // of density and temperature (part of `advection`)
   double diffusion = 0.0;
   double projection = 0.0;
 };
