@@ -85,6 +85,56 @@ TEST(RowSampling, ReadsMatchTheScalarSampler)
   }
 }
 
+TEST(RowSampling, PairWithRangesOfTwoOtherArraysMatchesTheScalarSampler)
+{
+  // Reads of a and b, ranges of b and a (crossed, so a swapped pointer shows).
+  const int count = 1001;
+  const Fixture f(count);
+  const detail::DirectSampler sampler(f.a);
+  std::vector<double> outA(count), outB(count), loB(count), hiB(count), loA(count), hiA(count);
+  detail::readRowPairRanged(detail::RowLayout(f.a), f.a.values.data(), f.b.values.data(), f.b.values.data(),
+                            f.a.values.data(), f.x.data(), f.y.data(), f.z.data(), count, outA.data(), outB.data(),
+                            loB.data(), hiB.data(), loA.data(), hiA.data());
+  for (int i = 0; i < count; ++i)
+  {
+    const double p[3] = { f.x[i], f.y[i], f.z[i] };
+    double lowA, highA, lowB, highB;
+    const double expectedA = sampler.at(f.a.values.data(), p, &lowA, &highA);
+    const double expectedB = sampler.at(f.b.values.data(), p, &lowB, &highB);
+    ASSERT_NEAR(outA[i], expectedA, 1e-12) << copyName() << " copy, point " << i;
+    ASSERT_NEAR(outB[i], expectedB, 1e-12) << copyName() << " copy, point " << i;
+    ASSERT_EQ(loB[i], lowB) << copyName() << " copy, point " << i;
+    ASSERT_EQ(hiB[i], highB) << copyName() << " copy, point " << i;
+    ASSERT_EQ(loA[i], lowA) << copyName() << " copy, point " << i;
+    ASSERT_EQ(hiA[i], highA) << copyName() << " copy, point " << i;
+  }
+}
+
+TEST(RowSampling, ScatterIsTheTransposeOfTheRead)
+{
+  // The weights a row scatters are those the scalar sampler's forCorners gives, summed.
+  const int count = 1001;
+  const Fixture f(count);
+  const detail::DirectSampler sampler(f.a);
+  std::vector<double> expected(f.a.values.size(), 0.0), scattered(f.a.values.size(), 0.0);
+  for (int i = 0; i < count; ++i)
+  {
+    const double p[3] = { f.x[i], f.y[i], f.z[i] };
+    sampler.forCorners(p, [&](std::size_t index, double weight) { expected[index] += weight; });
+  }
+  std::vector<int> base(count);
+  std::vector<double> fx(count), fy(count), fz(count);
+  detail::scatterRow(detail::RowLayout(f.a), f.x.data(), f.y.data(), f.z.data(), count, base.data(), fx.data(),
+                     fy.data(), fz.data(), scattered.data());
+  double total = 0.0;
+  for (std::size_t c = 0; c < expected.size(); ++c)
+  {
+    ASSERT_NEAR(scattered[c], expected[c], 1e-12) << copyName() << " copy, sample " << c;
+    total += scattered[c];
+  }
+  EXPECT_NEAR(total, count, 1e-9) << "each point's weights sum to one";
+}
+
 TEST(RowSampling, MeanOfShiftedRowsIsTheMeanOfItsTerms)
 {
   std::vector<std::vector<double>> rows(4, std::vector<double>(40));

@@ -19,7 +19,7 @@ struct AdvectionWorkspace
   std::vector<double> drawn;                    // the conservative step's
   struct Scalar                                 // the conservative step's per field
   {
-    std::vector<double> excess, scaled, low, forward, lo, hi, high;
+    std::vector<double> scaled, low, high;
   } scalar[2];
   std::vector<float> move; // each cell's displacement over the step [cells]
   std::vector<std::size_t> undrawn;
@@ -43,21 +43,25 @@ inline void pointOf(const GridArray& a, int i, int j, int k, double p[3])
   p[2] = k + a.offset[2];
 }
 
-// A thread's row buffers: the trace ends of a row's samples (x, y, z in cell units) and a row of
-// values.
+// A thread's row buffers: the trace ends of a row's samples (x, y, z in cell units), two rows of
+// values and two ranges.
 struct Rows
 {
   explicit Rows(int n)
-    : storage(5 * static_cast<std::size_t>(n))
+    : storage(9 * static_cast<std::size_t>(n))
     , x(storage.data())
     , y(x + n)
     , z(y + n)
     , values(z + n)
     , values2(values + n)
+    , lo(values2 + n)
+    , hi(lo + n)
+    , lo2(hi + n)
+    , hi2(lo2 + n)
   {
   }
   std::vector<double> storage;
-  double *x, *y, *z, *values, *values2;
+  double *x, *y, *z, *values, *values2, *lo, *hi, *lo2, *hi2;
 };
 
 // Calls body(j, k, rows) for the rows (j, k), j < rowsY, k < rowsZ, side by side on the threads,
@@ -204,6 +208,33 @@ void readTracedPair(const GridArray& layout, const DirectSampler& sampler, const
     {
       out[i] = readAt(sampler, layout, data, p, open, ambient);
       out2[i] = readAt(sampler, layout, data2, p, open, ambient2, lo2 ? lo2 + i : nullptr, hi2 ? hi2 + i : nullptr);
+    }
+  }
+}
+
+// out, out2 = `data`, `data2` (ambient 0) at the row's trace ends, and in r.lo, r.hi (r.lo2,
+// r.hi2) the range of `range` (`range2`, ambients `ambient`, `ambient2` beyond open faces) that
+// a read there blends.
+void readTracedPairRanged(const GridArray& layout, const DirectSampler& sampler, const double* data,
+                          const double* data2, const double* range, const double* range2, double ambient,
+                          double ambient2, const Rows& r, const bool* open, double* out, double* out2)
+{
+  const int count = layout.dims[0];
+  detail::readRowPairRanged(RowLayout(layout), data, data2, range, range2, r.x, r.y, r.z, count, out, out2, r.lo, r.hi,
+                            r.lo2, r.hi2);
+  if (!open || !rowReachesOpenFace(layout, r, open))
+  {
+    return;
+  }
+  for (int i = 0; i < count; ++i)
+  {
+    const double p[3] = { r.x[i], r.y[i], r.z[i] };
+    if (sampler.beyond(p, open))
+    {
+      out[i] = readAt(sampler, layout, data, p, open, 0.0);
+      out2[i] = readAt(sampler, layout, data2, p, open, 0.0);
+      readAt(sampler, layout, range, p, open, ambient, r.lo + i, r.hi + i);
+      readAt(sampler, layout, range2, p, open, ambient2, r.lo2 + i, r.hi2 + i);
     }
   }
 }
@@ -447,6 +478,7 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
 #pragma omp parallel
     {
       Rows r(layout.dims[0]);
+      std::vector<int> corners(layout.dims[0]);
 #pragma omp for schedule(dynamic)
       for (int b = phase; b < blocks; b += 2)
       {
@@ -455,6 +487,13 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
           for (int j = 0; j < layout.dims[1]; ++j)
           {
             traceWithMove(layout, move.data(), layout.index(0, j, k), j, k, -1.0, r);
+            if (!open || !rowReachesOpenFace(layout, r, open))
+            {
+              // The row's corners and fractions in vectors, then the adds.
+              detail::scatterRow(RowLayout(layout), r.x, r.y, r.z, layout.dims[0], corners.data(), r.values, r.values2,
+                                 r.lo, drawn.data());
+              continue;
+            }
             for (int i = 0; i < layout.dims[0]; ++i)
             {
               const double back[3] = { r.x[i], r.y[i], r.z[i] };
@@ -531,138 +570,118 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
     }
   };
   // The fields go two at a time (density and temperature): they share each trace and the
-  // corners it reads.
+  // corners it reads. (A lone field runs as a pair with itself; only its own result is kept.)
+  // Each field's excess over ambient is e = value - ambient. A cell that no trace draws from
+  // holds in `scaled` its content itself instead of content / drawn: no read weighs it, and
+  // pushForward gives it forward from there.
   for (std::size_t first = 0; first < fields.size(); first += 2)
   {
     const int m = fields.size() - first >= 2 ? 2 : 1;
     const ScalarField* group[2] = { &fields[first], &fields[first + m - 1] };
     AdvectionWorkspace::Scalar* w[2] = { &work.scalar[0], &work.scalar[1] };
-    for (int f = 0; f < m; ++f)
+    const double* values[2] = { group[0]->field->values.data(), group[1]->field->values.data() };
+    const double ambient[2] = { group[0]->ambient, group[1]->ambient };
+    for (int f = 0; f < 2; ++f)
     {
-      for (std::vector<double>* a : { &w[f]->excess, &w[f]->scaled, &w[f]->low })
-        a->resize(n);
-      for (std::vector<double>* a : { &w[f]->forward, &w[f]->lo, &w[f]->hi, &w[f]->high })
-        a->resize(sharpen ? n : 0);
+      w[f]->scaled.resize(n);
+      w[f]->low.resize(n);
+      w[f]->high.resize(sharpen ? n : 0);
     }
-    // 3. Low order and conservative: each source cell's excess over ambient shared out exactly
-    // among the cells that draw from it, in proportion to their weights. With the correction,
-    // also the range each trace blends (the clamp of the sharpened result).
-    for (int f = 0; f < m; ++f)
+    // 3. Low order and conservative: each source cell's excess shared out exactly among the
+    // cells that draw from it, in proportion to their weights.
+    for (int f = 0; f < 2; ++f)
     {
-      const double* values = group[f]->field->values.data();
-      const double ambient = group[f]->ambient;
-      double* excess = w[f]->excess.data();
+      const double* value = values[f];
+      const double air = ambient[f];
       double* scaled = w[f]->scaled.data();
 #pragma omp parallel for schedule(static)
       for (long long id = 0; id < static_cast<long long>(n); ++id)
       {
-        excess[id] = values[id] - ambient;
-        scaled[id] = drawn[id] > 0.0 ? excess[id] / drawn[id] : 0.0;
+        const double e = value[id] - air;
+        scaled[id] = drawn[id] > 0.0 ? e / drawn[id] : e;
       }
     }
     forEachRow(layout,
                [&](int j, int k, std::size_t row, Rows& r)
                {
                  traceWithMove(layout, move.data(), row, j, k, -1.0, r);
-                 for (int f = 0; f < m; ++f)
-                 {
-                   AdvectionWorkspace::Scalar& a = *w[f];
-                   if (sharpen)
-                   {
-                     readTracedPair(layout, sampler, a.scaled.data(), a.excess.data(), r, open, a.low.data() + row,
-                                    a.forward.data() + row, a.lo.data() + row, a.hi.data() + row);
-                   }
-                   else
-                   {
-                     readTraced(layout, sampler, a.scaled.data(), r, open, 0.0, a.low.data() + row);
-                   }
-                 }
+                 readTracedPair(layout, sampler, w[0]->scaled.data(), w[1]->scaled.data(), r, open,
+                                w[0]->low.data() + row, w[1]->low.data() + row, nullptr, nullptr);
                });
     for (int f = 0; f < m; ++f)
     {
-      pushForward(w[f]->excess, w[f]->low);
+      pushForward(w[f]->scaled, w[f]->low);
     }
     if (!sharpen)
     {
       for (int f = 0; f < m; ++f)
       {
-        double* values = group[f]->field->values.data();
+        double* value = group[f]->field->values.data();
         const double* low = w[f]->low.data();
-        const double ambient = group[f]->ambient;
+        const double air = ambient[f];
 #pragma omp parallel for schedule(static)
         for (long long id = 0; id < static_cast<long long>(n); ++id)
         {
-          values[id] = low[id] + ambient;
+          value[id] = low[id] + air;
         }
       }
       continue;
     }
     // 4. High order: BFECC (Kim et al. 2005) with the conservative step: the error of a round
-    // trip (forward conservatively, back plainly) taken out of the field first, then the
-    // conservative step again, clamped to what the trace blended.
+    // trip (forward conservatively, back plainly) taken out of the field first (into `scaled`,
+    // whose low-order use is over), then the conservative step again, clamped to the range of
+    // the excess the trace blends.
     forEachRow(layout,
                [&](int j, int k, std::size_t row, Rows& r)
                {
                  traceWithMove(layout, move.data(), row, j, k, 1.0, r);
-                 double* roundTrip[2] = { r.values, r.values2 };
-                 if (m == 2)
+                 readTracedPair(layout, sampler, w[0]->low.data(), w[1]->low.data(), r, open, r.values, r.values2,
+                                nullptr, nullptr);
+                 const double* roundTrip[2] = { r.values, r.values2 };
+                 const double* weight = drawn.data() + row;
+                 for (int f = 0; f < 2; ++f)
                  {
-                   readTracedPair(layout, sampler, w[0]->low.data(), w[1]->low.data(), r, open, r.values, r.values2,
-                                  nullptr, nullptr);
-                 }
-                 else
-                 {
-                   readTraced(layout, sampler, w[0]->low.data(), r, open, 0.0, r.values);
-                 }
-                 for (int f = 0; f < m; ++f)
-                 {
-                   const double* excess = w[f]->excess.data() + row;
-                   double* forward = w[f]->forward.data() + row;
+                   const double* value = values[f] + row;
+                   const double air = ambient[f];
+                   double* scaled = w[f]->scaled.data() + row;
                    for (int i = 0; i < layout.dims[0]; ++i)
                    {
-                     forward[i] = excess[i] + 0.5 * (excess[i] - roundTrip[f][i]);
+                     const double e = value[i] - air;
+                     const double forward = e + 0.5 * (e - roundTrip[f][i]);
+                     scaled[i] = weight[i] > 0.0 ? forward / weight[i] : forward;
+                   }
+                 }
+               });
+    forEachRow(layout,
+               [&](int j, int k, std::size_t row, Rows& r)
+               {
+                 traceWithMove(layout, move.data(), row, j, k, -1.0, r);
+                 double* high[2] = { w[0]->high.data() + row, w[1]->high.data() + row };
+                 readTracedPairRanged(layout, sampler, w[0]->scaled.data(), w[1]->scaled.data(), values[0], values[1],
+                                      ambient[0], ambient[1], r, open, high[0], high[1]);
+                 const double* lo[2] = { r.lo, r.lo2 };
+                 const double* hi[2] = { r.hi, r.hi2 };
+                 for (int f = 0; f < 2; ++f)
+                 {
+                   const double air = ambient[f];
+                   for (int i = 0; i < layout.dims[0]; ++i)
+                   {
+                     high[f][i] = std::clamp(high[f][i], lo[f][i] - air, hi[f][i] - air);
                    }
                  }
                });
     for (int f = 0; f < m; ++f)
     {
-      const double* forward = w[f]->forward.data();
-      double* scaled = w[f]->scaled.data();
-#pragma omp parallel for schedule(static)
-      for (long long id = 0; id < static_cast<long long>(n); ++id)
-      {
-        scaled[id] = drawn[id] > 0.0 ? forward[id] / drawn[id] : 0.0;
-      }
-    }
-    forEachRow(layout,
-               [&](int j, int k, std::size_t row, Rows& r)
-               {
-                 traceWithMove(layout, move.data(), row, j, k, -1.0, r);
-                 if (m == 2)
-                 {
-                   readTracedPair(layout, sampler, w[0]->scaled.data(), w[1]->scaled.data(), r, open,
-                                  w[0]->high.data() + row, w[1]->high.data() + row, nullptr, nullptr);
-                 }
-                 else
-                 {
-                   readTraced(layout, sampler, w[0]->scaled.data(), r, open, 0.0, w[0]->high.data() + row);
-                 }
-               });
-    for (int f = 0; f < m; ++f)
-    {
-      pushForward(w[f]->forward, w[f]->high);
+      pushForward(w[f]->scaled, w[f]->high);
       // 5. The mass fixer: the clamp's surplus (or deficit) against the conservative result is
       // taken back from the cells whose correction carries it, in proportion to that correction;
       // every cell stays between its low- and high-order values.
-      double* high = w[f]->high.data();
+      const double* high = w[f]->high.data();
       const double* low = w[f]->low.data();
-      const double* lo = w[f]->lo.data();
-      const double* hi = w[f]->hi.data();
       double surplus = 0.0, positive = 0.0, negative = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : surplus, positive, negative)
       for (long long id = 0; id < static_cast<long long>(n); ++id)
       {
-        high[id] = std::clamp(high[id], lo[id], hi[id]);
         const double d = high[id] - low[id];
         surplus += d;
         positive += std::max(d, 0.0);
@@ -677,13 +696,13 @@ void advectScalars(const StaggeredGrid& g, const std::vector<ScalarField>& field
       {
         keepNegative = std::clamp(-positive / negative, 0.0, 1.0);
       }
-      double* values = group[f]->field->values.data();
-      const double ambient = group[f]->ambient;
+      double* value = group[f]->field->values.data();
+      const double air = ambient[f];
 #pragma omp parallel for schedule(static)
       for (long long id = 0; id < static_cast<long long>(n); ++id)
       {
         const double d = high[id] - low[id];
-        values[id] = ambient + low[id] + d * (d > 0.0 ? keepPositive : keepNegative);
+        value[id] = air + low[id] + d * (d > 0.0 ? keepPositive : keepNegative);
       }
     }
   }

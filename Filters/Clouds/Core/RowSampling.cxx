@@ -18,7 +18,43 @@ struct AxisStep
     , stride(n > 1 ? stride_ : 0)
   {
   }
+  // The fraction of coordinate p (clamped to the array) past its lower corner, and that corner.
+  __attribute__((always_inline)) double at(double p, int& corner) const
+  {
+    double c = p - offset;
+    c = c < 0.0 ? 0.0 : (c > last ? last : c);
+    const int i = static_cast<int>(c);
+    corner = i > lastCorner ? lastCorner : i;
+    return c - corner;
+  }
 };
+
+// The trilinear blend of the eight samples c0..c7 of d (x fastest, then y, then z) at fractions
+// fx, fy, fz; and their least and greatest.
+__attribute__((always_inline)) inline double blendCorners(const double* __restrict d, int c0, int c1, int c2, int c3,
+                                                          int c4, int c5, int c6, int c7, double fx, double fy,
+                                                          double fz)
+{
+  const double v0 = d[c0], v1 = d[c1], v2 = d[c2], v3 = d[c3], v4 = d[c4], v5 = d[c5], v6 = d[c6], v7 = d[c7];
+  const double x00 = v0 + fx * (v1 - v0), x10 = v2 + fx * (v3 - v2);
+  const double x01 = v4 + fx * (v5 - v4), x11 = v6 + fx * (v7 - v6);
+  const double y0 = x00 + fy * (x10 - x00), y1 = x01 + fy * (x11 - x01);
+  return y0 + fz * (y1 - y0);
+}
+
+__attribute__((always_inline)) inline void rangeOfCorners(const double* __restrict d, int c0, int c1, int c2, int c3,
+                                                          int c4, int c5, int c6, int c7, double& lo, double& hi)
+{
+  const double v0 = d[c0], v1 = d[c1], v2 = d[c2], v3 = d[c3], v4 = d[c4], v5 = d[c5], v6 = d[c6], v7 = d[c7];
+  double a = v0 < v1 ? v0 : v1, c = v2 < v3 ? v2 : v3, e = v4 < v5 ? v4 : v5, f = v6 < v7 ? v6 : v7;
+  a = a < c ? a : c;
+  e = e < f ? e : f;
+  lo = a < e ? a : e;
+  double A = v0 > v1 ? v0 : v1, C = v2 > v3 ? v2 : v3, E = v4 > v5 ? v4 : v5, F = v6 > v7 ? v6 : v7;
+  A = A > C ? A : C;
+  E = E > F ? E : F;
+  hi = A > E ? A : E;
+}
 
 // out[i] = data at point i; with Range also lo/hi of the 8 samples; with Second also out2[i] =
 // data2 at the same point (its corners and weights found once for both).
@@ -34,49 +70,47 @@ __attribute__((always_inline)) inline void readRowImpl(const RowLayout& l, const
 #pragma omp simd
   for (int i = 0; i < count; ++i)
   {
-    double px = x[i] - ax.offset, py = y[i] - ay.offset, pz = z[i] - az.offset;
-    px = px < 0.0 ? 0.0 : (px > ax.last ? ax.last : px);
-    py = py < 0.0 ? 0.0 : (py > ay.last ? ay.last : py);
-    pz = pz < 0.0 ? 0.0 : (pz > az.last ? az.last : pz);
-    int ix = static_cast<int>(px), iy = static_cast<int>(py), iz = static_cast<int>(pz);
-    ix = ix > ax.lastCorner ? ax.lastCorner : ix;
-    iy = iy > ay.lastCorner ? ay.lastCorner : iy;
-    iz = iz > az.lastCorner ? az.lastCorner : iz;
-    const double fx = px - ix, fy = py - iy, fz = pz - iz;
+    int ix, iy, iz;
+    const double fx = ax.at(x[i], ix), fy = ay.at(y[i], iy), fz = az.at(z[i], iz);
     const int b = ix + l.n[0] * (iy + l.n[1] * iz);
-    const double v000 = data[b], v100 = data[b + sx], v010 = data[b + sy], v110 = data[b + sx + sy];
-    const double v001 = data[b + sz], v101 = data[b + sx + sz], v011 = data[b + sy + sz], v111 = data[b + sx + sy + sz];
-    const double x00 = v000 + fx * (v100 - v000), x10 = v010 + fx * (v110 - v010);
-    const double x01 = v001 + fx * (v101 - v001), x11 = v011 + fx * (v111 - v011);
-    const double y0 = x00 + fy * (x10 - x00), y1 = x01 + fy * (x11 - x01);
-    out[i] = y0 + fz * (y1 - y0);
+    const int c1 = b + sx, c2 = b + sy, c3 = b + sx + sy, c4 = b + sz, c5 = b + sx + sz, c6 = b + sy + sz,
+              c7 = b + sx + sy + sz;
+    out[i] = blendCorners(data, b, c1, c2, c3, c4, c5, c6, c7, fx, fy, fz);
     if constexpr (Second)
     {
-      const double w000 = data2[b], w100 = data2[b + sx], w010 = data2[b + sy], w110 = data2[b + sx + sy];
-      const double w001 = data2[b + sz], w101 = data2[b + sx + sz], w011 = data2[b + sy + sz],
-                   w111 = data2[b + sx + sy + sz];
-      const double a00 = w000 + fx * (w100 - w000), a10 = w010 + fx * (w110 - w010);
-      const double a01 = w001 + fx * (w101 - w001), a11 = w011 + fx * (w111 - w011);
-      const double b0 = a00 + fy * (a10 - a00), b1 = a01 + fy * (a11 - a01);
-      out2[i] = b0 + fz * (b1 - b0);
+      out2[i] = blendCorners(data2, b, c1, c2, c3, c4, c5, c6, c7, fx, fy, fz);
     }
     if constexpr (Range)
     {
       // The range of the second array's samples when there is one, else of the first's.
-      const double* d = Second ? data2 : data;
-      const double u000 = d[b], u100 = d[b + sx], u010 = d[b + sy], u110 = d[b + sx + sy];
-      const double u001 = d[b + sz], u101 = d[b + sx + sz], u011 = d[b + sy + sz], u111 = d[b + sx + sy + sz];
-      double a = u000 < u100 ? u000 : u100, c = u010 < u110 ? u010 : u110;
-      double e = u001 < u101 ? u001 : u101, f = u011 < u111 ? u011 : u111;
-      a = a < c ? a : c;
-      e = e < f ? e : f;
-      lo[i] = a < e ? a : e;
-      double A = u000 > u100 ? u000 : u100, C = u010 > u110 ? u010 : u110;
-      double E = u001 > u101 ? u001 : u101, F = u011 > u111 ? u011 : u111;
-      A = A > C ? A : C;
-      E = E > F ? E : F;
-      hi[i] = A > E ? A : E;
+      rangeOfCorners(Second ? data2 : data, b, c1, c2, c3, c4, c5, c6, c7, lo[i], hi[i]);
     }
+  }
+}
+
+// out[i], out2[i] = data, data2 at point i, and lo[i], hi[i] / lo2[i], hi2[i] the ranges of the
+// eight samples of range, range2 that a read there blends (four arrays of one layout; the
+// corners and weights found once).
+__attribute__((always_inline)) inline void readRowPairRangedBody(
+  const RowLayout& l, const double* __restrict data, const double* __restrict data2, const double* __restrict range,
+  const double* __restrict range2, const double* __restrict x, const double* __restrict y, const double* __restrict z,
+  int count, double* __restrict out, double* __restrict out2, double* __restrict lo, double* __restrict hi,
+  double* __restrict lo2, double* __restrict hi2)
+{
+  const AxisStep ax(l.n[0], l.offset[0], 1), ay(l.n[1], l.offset[1], l.n[0]), az(l.n[2], l.offset[2], l.n[0] * l.n[1]);
+  const int sx = ax.stride, sy = ay.stride, sz = az.stride;
+#pragma omp simd
+  for (int i = 0; i < count; ++i)
+  {
+    int ix, iy, iz;
+    const double fx = ax.at(x[i], ix), fy = ay.at(y[i], iy), fz = az.at(z[i], iz);
+    const int b = ix + l.n[0] * (iy + l.n[1] * iz);
+    const int c1 = b + sx, c2 = b + sy, c3 = b + sx + sy, c4 = b + sz, c5 = b + sx + sz, c6 = b + sy + sz,
+              c7 = b + sx + sy + sz;
+    out[i] = blendCorners(data, b, c1, c2, c3, c4, c5, c6, c7, fx, fy, fz);
+    out2[i] = blendCorners(data2, b, c1, c2, c3, c4, c5, c6, c7, fx, fy, fz);
+    rangeOfCorners(range, b, c1, c2, c3, c4, c5, c6, c7, lo[i], hi[i]);
+    rangeOfCorners(range2, b, c1, c2, c3, c4, c5, c6, c7, lo2[i], hi2[i]);
   }
 }
 
@@ -122,6 +156,61 @@ PARAFLUID_SIMD_DISPATCH(readRowPair,
                          const double* y, const double* z, int count, double* out, double* out2, double* lo2,
                          double* hi2),
                         (layout, data, data2, x, y, z, count, out, out2, lo2, hi2), readRowPairBody)
+
+PARAFLUID_SIMD_DISPATCH(readRowPairRanged,
+                        (const RowLayout& layout, const double* data, const double* data2, const double* range,
+                         const double* range2, const double* x, const double* y, const double* z, int count,
+                         double* out, double* out2, double* lo, double* hi, double* lo2, double* hi2),
+                        (layout, data, data2, range, range2, x, y, z, count, out, out2, lo, hi, lo2, hi2),
+                        readRowPairRangedBody)
+
+namespace
+{
+__attribute__((always_inline)) inline void cornersOfRowBody(const RowLayout& l, const double* __restrict x,
+                                                            const double* __restrict y, const double* __restrict z,
+                                                            int count, int* __restrict base, double* __restrict fx,
+                                                            double* __restrict fy, double* __restrict fz)
+{
+  const AxisStep ax(l.n[0], l.offset[0], 1), ay(l.n[1], l.offset[1], l.n[0]), az(l.n[2], l.offset[2], l.n[0] * l.n[1]);
+#pragma omp simd
+  for (int i = 0; i < count; ++i)
+  {
+    int ix, iy, iz;
+    fx[i] = ax.at(x[i], ix);
+    fy[i] = ay.at(y[i], iy);
+    fz[i] = az.at(z[i], iz);
+    base[i] = ix + l.n[0] * (iy + l.n[1] * iz);
+  }
+}
+} // namespace
+
+PARAFLUID_SIMD_DISPATCH(cornersOfRow,
+                        (const RowLayout& layout, const double* x, const double* y, const double* z, int count,
+                         int* base, double* fx, double* fy, double* fz),
+                        (layout, x, y, z, count, base, fx, fy, fz), cornersOfRowBody)
+
+void scatterRow(const RowLayout& layout, const double* x, const double* y, const double* z, int count, int* base,
+                double* fx, double* fy, double* fz, double* target)
+{
+  cornersOfRow(layout, x, y, z, count, base, fx, fy, fz);
+  const int sx = layout.n[0] > 1 ? 1 : 0;
+  const int sy = layout.n[1] > 1 ? layout.n[0] : 0;
+  const int sz = layout.n[2] > 1 ? layout.n[0] * layout.n[1] : 0;
+  for (int i = 0; i < count; ++i)
+  {
+    double* t = target + base[i];
+    const double x1 = fx[i], x0 = 1.0 - x1, y1 = fy[i], y0 = 1.0 - y1, z1 = fz[i], z0 = 1.0 - z1;
+    const double w00 = y0 * z0, w10 = y1 * z0, w01 = y0 * z1, w11 = y1 * z1;
+    t[0] += w00 * x0;
+    t[sx] += w00 * x1;
+    t[sy] += w10 * x0;
+    t[sy + sx] += w10 * x1;
+    t[sz] += w01 * x0;
+    t[sz + sx] += w01 * x1;
+    t[sz + sy] += w11 * x0;
+    t[sz + sy + sx] += w11 * x1;
+  }
+}
 
 namespace
 {

@@ -26,6 +26,16 @@ void readRow(const RowLayout& layout, const double* data, const double* x, const
 /// `data`, out2 from `data2`, and with lo2 and hi2 the range of data2's samples.
 void readRowPair(const RowLayout& layout, const double* data, const double* data2, const double* x, const double* y,
                  const double* z, int count, double* out, double* out2, double* lo2 = nullptr, double* hi2 = nullptr);
+/// Two reads and two ranges at the same points: out from `data`, out2 from `data2`, and lo, hi
+/// (lo2, hi2) the least and greatest of the eight samples of `range` (`range2`) a read blends.
+void readRowPairRanged(const RowLayout& layout, const double* data, const double* data2, const double* range,
+                       const double* range2, const double* x, const double* y, const double* z, int count, double* out,
+                       double* out2, double* lo, double* hi, double* lo2, double* hi2);
+/// The transpose of readRow: target[corner] += its weight in a read at point i, for the eight
+/// corners of each of the count points (clamped at the array's ends as the reads are). base, fx,
+/// fy, fz: buffers of count values (the corners and fractions, found in vectors first).
+void scatterRow(const RowLayout& layout, const double* x, const double* y, const double* z, int count, int* base,
+                double* fx, double* fy, double* fz, double* target);
 /// out[i] = the mean of rows[r][i + shifts[s]] over the rowCount rows and shiftCount shifts, for i
 /// from first to last (inclusive): the velocity at a row's samples from the faces around them.
 void meanOfShiftedRows(const double* const* rows, int rowCount, const int* shifts, int shiftCount, int first, int last,
