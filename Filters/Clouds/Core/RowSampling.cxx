@@ -56,14 +56,17 @@ __attribute__((always_inline)) inline void rangeOfCorners(const double* __restri
   hi = A > E ? A : E;
 }
 
-// out[i] = data at point i; with Range also lo/hi of the 8 samples; with Second also out2[i] =
-// data2 at the same point (its corners and weights found once for both).
-template<bool Range, bool Second>
+// out[i] = data at point i, and with Second also out2[i] = data2 there; with Ranges >= 1 also
+// lo/hi = the range of the 8 samples of `range` a read there blends, with Ranges == 2 also
+// lo2/hi2 of `range2` (the corners and weights found once for all).
+template<bool Second, int Ranges>
 __attribute__((always_inline)) inline void readRowImpl(const RowLayout& l, const double* __restrict data,
-                                                       const double* __restrict data2, const double* __restrict x,
+                                                       const double* __restrict data2, const double* __restrict range,
+                                                       const double* __restrict range2, const double* __restrict x,
                                                        const double* __restrict y, const double* __restrict z,
                                                        int count, double* __restrict out, double* __restrict out2,
-                                                       double* __restrict lo, double* __restrict hi)
+                                                       double* __restrict lo, double* __restrict hi,
+                                                       double* __restrict lo2, double* __restrict hi2)
 {
   const AxisStep ax(l.n[0], l.offset[0], 1), ay(l.n[1], l.offset[1], l.n[0]), az(l.n[2], l.offset[2], l.n[0] * l.n[1]);
   const int sx = ax.stride, sy = ay.stride, sz = az.stride;
@@ -80,38 +83,25 @@ __attribute__((always_inline)) inline void readRowImpl(const RowLayout& l, const
     {
       out2[i] = blendCorners(data2, b, c1, c2, c3, c4, c5, c6, c7, fx, fy, fz);
     }
-    if constexpr (Range)
+    if constexpr (Ranges >= 1)
     {
-      // The range of the second array's samples when there is one, else of the first's.
-      rangeOfCorners(Second ? data2 : data, b, c1, c2, c3, c4, c5, c6, c7, lo[i], hi[i]);
+      rangeOfCorners(range, b, c1, c2, c3, c4, c5, c6, c7, lo[i], hi[i]);
+    }
+    if constexpr (Ranges == 2)
+    {
+      rangeOfCorners(range2, b, c1, c2, c3, c4, c5, c6, c7, lo2[i], hi2[i]);
     }
   }
 }
 
-// out[i], out2[i] = data, data2 at point i, and lo[i], hi[i] / lo2[i], hi2[i] the ranges of the
-// eight samples of range, range2 that a read there blends (four arrays of one layout; the
-// corners and weights found once).
-__attribute__((always_inline)) inline void readRowPairRangedBody(
-  const RowLayout& l, const double* __restrict data, const double* __restrict data2, const double* __restrict range,
-  const double* __restrict range2, const double* __restrict x, const double* __restrict y, const double* __restrict z,
-  int count, double* __restrict out, double* __restrict out2, double* __restrict lo, double* __restrict hi,
-  double* __restrict lo2, double* __restrict hi2)
+// Four arrays of one layout: reads of data and data2, the ranges of range and range2.
+__attribute__((always_inline)) inline void readRowPairRangedBody(const RowLayout& l, const double* data,
+                                                                 const double* data2, const double* range,
+                                                                 const double* range2, const double* x, const double* y,
+                                                                 const double* z, int count, double* out, double* out2,
+                                                                 double* lo, double* hi, double* lo2, double* hi2)
 {
-  const AxisStep ax(l.n[0], l.offset[0], 1), ay(l.n[1], l.offset[1], l.n[0]), az(l.n[2], l.offset[2], l.n[0] * l.n[1]);
-  const int sx = ax.stride, sy = ay.stride, sz = az.stride;
-#pragma omp simd
-  for (int i = 0; i < count; ++i)
-  {
-    int ix, iy, iz;
-    const double fx = ax.at(x[i], ix), fy = ay.at(y[i], iy), fz = az.at(z[i], iz);
-    const int b = ix + l.n[0] * (iy + l.n[1] * iz);
-    const int c1 = b + sx, c2 = b + sy, c3 = b + sx + sy, c4 = b + sz, c5 = b + sx + sz, c6 = b + sy + sz,
-              c7 = b + sx + sy + sz;
-    out[i] = blendCorners(data, b, c1, c2, c3, c4, c5, c6, c7, fx, fy, fz);
-    out2[i] = blendCorners(data2, b, c1, c2, c3, c4, c5, c6, c7, fx, fy, fz);
-    rangeOfCorners(range, b, c1, c2, c3, c4, c5, c6, c7, lo[i], hi[i]);
-    rangeOfCorners(range2, b, c1, c2, c3, c4, c5, c6, c7, lo2[i], hi2[i]);
-  }
+  readRowImpl<true, 2>(l, data, data2, range, range2, x, y, z, count, out, out2, lo, hi, lo2, hi2);
 }
 
 // out (with lo, hi: the range) from data; the same for a pair of arrays.
@@ -121,11 +111,12 @@ __attribute__((always_inline)) inline void readRowBody(const RowLayout& layout, 
 {
   if (lo && hi)
   {
-    readRowImpl<true, false>(layout, data, nullptr, x, y, z, count, out, nullptr, lo, hi);
+    readRowImpl<false, 1>(layout, data, nullptr, data, nullptr, x, y, z, count, out, nullptr, lo, hi, nullptr, nullptr);
   }
   else
   {
-    readRowImpl<false, false>(layout, data, nullptr, x, y, z, count, out, nullptr, nullptr, nullptr);
+    readRowImpl<false, 0>(layout, data, nullptr, nullptr, nullptr, x, y, z, count, out, nullptr, nullptr, nullptr,
+                          nullptr, nullptr);
   }
 }
 
@@ -136,11 +127,12 @@ __attribute__((always_inline)) inline void readRowPairBody(const RowLayout& layo
 {
   if (lo2 && hi2)
   {
-    readRowImpl<true, true>(layout, data, data2, x, y, z, count, out, out2, lo2, hi2);
+    readRowImpl<true, 1>(layout, data, data2, data2, nullptr, x, y, z, count, out, out2, lo2, hi2, nullptr, nullptr);
   }
   else
   {
-    readRowImpl<false, true>(layout, data, data2, x, y, z, count, out, out2, nullptr, nullptr);
+    readRowImpl<true, 0>(layout, data, data2, nullptr, nullptr, x, y, z, count, out, out2, nullptr, nullptr, nullptr,
+                         nullptr);
   }
 }
 } // namespace
