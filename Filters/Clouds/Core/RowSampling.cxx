@@ -29,37 +29,53 @@ struct AxisStep
   }
 };
 
-// The trilinear blend of the eight samples c0..c7 of d (x fastest, then y, then z) at fractions
-// fx, fy, fz; and their least and greatest.
-__attribute__((always_inline)) inline double blendCorners(const double* __restrict d, int c0, int c1, int c2, int c3,
-                                                          int c4, int c5, int c6, int c7, double fx, double fy,
-                                                          double fz)
+// The eight samples of d at corners c0..c7 (x fastest, then y, then z).
+struct Corners
 {
-  const double v0 = d[c0], v1 = d[c1], v2 = d[c2], v3 = d[c3], v4 = d[c4], v5 = d[c5], v6 = d[c6], v7 = d[c7];
-  const double x00 = v0 + fx * (v1 - v0), x10 = v2 + fx * (v3 - v2);
-  const double x01 = v4 + fx * (v5 - v4), x11 = v6 + fx * (v7 - v6);
+  double v0, v1, v2, v3, v4, v5, v6, v7;
+};
+
+__attribute__((always_inline)) inline Corners loadCorners(const double* __restrict d, int c0, int c1, int c2, int c3,
+                                                          int c4, int c5, int c6, int c7)
+{
+  return { d[c0], d[c1], d[c2], d[c3], d[c4], d[c5], d[c6], d[c7] };
+}
+
+// Their trilinear blend at fractions fx, fy, fz.
+__attribute__((always_inline)) inline double blend(const Corners& c, double fx, double fy, double fz)
+{
+  const double x00 = c.v0 + fx * (c.v1 - c.v0), x10 = c.v2 + fx * (c.v3 - c.v2);
+  const double x01 = c.v4 + fx * (c.v5 - c.v4), x11 = c.v6 + fx * (c.v7 - c.v6);
   const double y0 = x00 + fy * (x10 - x00), y1 = x01 + fy * (x11 - x01);
   return y0 + fz * (y1 - y0);
 }
 
-__attribute__((always_inline)) inline void rangeOfCorners(const double* __restrict d, int c0, int c1, int c2, int c3,
-                                                          int c4, int c5, int c6, int c7, double& lo, double& hi)
+// Their least and greatest.
+__attribute__((always_inline)) inline void rangeOf(const Corners& c, double& lo, double& hi)
 {
-  const double v0 = d[c0], v1 = d[c1], v2 = d[c2], v3 = d[c3], v4 = d[c4], v5 = d[c5], v6 = d[c6], v7 = d[c7];
-  double a = v0 < v1 ? v0 : v1, c = v2 < v3 ? v2 : v3, e = v4 < v5 ? v4 : v5, f = v6 < v7 ? v6 : v7;
-  a = a < c ? a : c;
+  double a = c.v0 < c.v1 ? c.v0 : c.v1, b = c.v2 < c.v3 ? c.v2 : c.v3;
+  double e = c.v4 < c.v5 ? c.v4 : c.v5, f = c.v6 < c.v7 ? c.v6 : c.v7;
+  a = a < b ? a : b;
   e = e < f ? e : f;
   lo = a < e ? a : e;
-  double A = v0 > v1 ? v0 : v1, C = v2 > v3 ? v2 : v3, E = v4 > v5 ? v4 : v5, F = v6 > v7 ? v6 : v7;
-  A = A > C ? A : C;
+  double A = c.v0 > c.v1 ? c.v0 : c.v1, B = c.v2 > c.v3 ? c.v2 : c.v3;
+  double E = c.v4 > c.v5 ? c.v4 : c.v5, F = c.v6 > c.v7 ? c.v6 : c.v7;
+  A = A > B ? A : B;
   E = E > F ? E : F;
   hi = A > E ? A : E;
 }
 
-// out[i] = data at point i, and with Second also out2[i] = data2 there; with Ranges >= 1 also
-// lo/hi = the range of the 8 samples of `range` a read there blends, with Ranges == 2 also
-// lo2/hi2 of `range2` (the corners and weights found once for all).
-template<bool Second, int Ranges>
+// Which ranges a row read also finds.
+enum class Ranges
+{
+  None,
+  OfRead,  // lo/hi of the samples blended (data2's when there are two arrays, else data's)
+  OfOthers // lo/hi of range's samples, lo2/hi2 of range2's, at the same corners
+};
+
+// out[i] = data at point i, and with Second also out2[i] = data2 there, with the ranges R asks
+// for (the corners and weights found once for all).
+template<bool Second, Ranges R>
 __attribute__((always_inline)) inline void readRowImpl(const RowLayout& l, const double* __restrict data,
                                                        const double* __restrict data2, const double* __restrict range,
                                                        const double* __restrict range2, const double* __restrict x,
@@ -78,18 +94,23 @@ __attribute__((always_inline)) inline void readRowImpl(const RowLayout& l, const
     const int b = ix + l.n[0] * (iy + l.n[1] * iz);
     const int c1 = b + sx, c2 = b + sy, c3 = b + sx + sy, c4 = b + sz, c5 = b + sx + sz, c6 = b + sy + sz,
               c7 = b + sx + sy + sz;
-    out[i] = blendCorners(data, b, c1, c2, c3, c4, c5, c6, c7, fx, fy, fz);
+    const Corners first = loadCorners(data, b, c1, c2, c3, c4, c5, c6, c7);
+    out[i] = blend(first, fx, fy, fz);
     if constexpr (Second)
     {
-      out2[i] = blendCorners(data2, b, c1, c2, c3, c4, c5, c6, c7, fx, fy, fz);
+      const Corners second = loadCorners(data2, b, c1, c2, c3, c4, c5, c6, c7);
+      out2[i] = blend(second, fx, fy, fz);
+      if constexpr (R == Ranges::OfRead)
+        rangeOf(second, lo[i], hi[i]);
     }
-    if constexpr (Ranges >= 1)
+    else if constexpr (R == Ranges::OfRead)
     {
-      rangeOfCorners(range, b, c1, c2, c3, c4, c5, c6, c7, lo[i], hi[i]);
+      rangeOf(first, lo[i], hi[i]);
     }
-    if constexpr (Ranges == 2)
+    if constexpr (R == Ranges::OfOthers)
     {
-      rangeOfCorners(range2, b, c1, c2, c3, c4, c5, c6, c7, lo2[i], hi2[i]);
+      rangeOf(loadCorners(range, b, c1, c2, c3, c4, c5, c6, c7), lo[i], hi[i]);
+      rangeOf(loadCorners(range2, b, c1, c2, c3, c4, c5, c6, c7), lo2[i], hi2[i]);
     }
   }
 }
@@ -101,7 +122,7 @@ __attribute__((always_inline)) inline void readRowPairRangedBody(const RowLayout
                                                                  const double* z, int count, double* out, double* out2,
                                                                  double* lo, double* hi, double* lo2, double* hi2)
 {
-  readRowImpl<true, 2>(l, data, data2, range, range2, x, y, z, count, out, out2, lo, hi, lo2, hi2);
+  readRowImpl<true, Ranges::OfOthers>(l, data, data2, range, range2, x, y, z, count, out, out2, lo, hi, lo2, hi2);
 }
 
 // out (with lo, hi: the range) from data; the same for a pair of arrays.
@@ -111,12 +132,13 @@ __attribute__((always_inline)) inline void readRowBody(const RowLayout& layout, 
 {
   if (lo && hi)
   {
-    readRowImpl<false, 1>(layout, data, nullptr, data, nullptr, x, y, z, count, out, nullptr, lo, hi, nullptr, nullptr);
+    readRowImpl<false, Ranges::OfRead>(layout, data, nullptr, nullptr, nullptr, x, y, z, count, out, nullptr, lo, hi,
+                                       nullptr, nullptr);
   }
   else
   {
-    readRowImpl<false, 0>(layout, data, nullptr, nullptr, nullptr, x, y, z, count, out, nullptr, nullptr, nullptr,
-                          nullptr, nullptr);
+    readRowImpl<false, Ranges::None>(layout, data, nullptr, nullptr, nullptr, x, y, z, count, out, nullptr, nullptr,
+                                     nullptr, nullptr, nullptr);
   }
 }
 
@@ -127,12 +149,13 @@ __attribute__((always_inline)) inline void readRowPairBody(const RowLayout& layo
 {
   if (lo2 && hi2)
   {
-    readRowImpl<true, 1>(layout, data, data2, data2, nullptr, x, y, z, count, out, out2, lo2, hi2, nullptr, nullptr);
+    readRowImpl<true, Ranges::OfRead>(layout, data, data2, nullptr, nullptr, x, y, z, count, out, out2, lo2, hi2,
+                                      nullptr, nullptr);
   }
   else
   {
-    readRowImpl<true, 0>(layout, data, data2, nullptr, nullptr, x, y, z, count, out, out2, nullptr, nullptr, nullptr,
-                         nullptr);
+    readRowImpl<true, Ranges::None>(layout, data, data2, nullptr, nullptr, x, y, z, count, out, out2, nullptr, nullptr,
+                                    nullptr, nullptr);
   }
 }
 } // namespace
