@@ -399,6 +399,40 @@ TEST(StableFluids, HotEmitterMakesAPlumeRise)
   EXPECT_LE(fluid.lastProjection().residual, p.projectionTolerance);
 }
 
+TEST(StableFluids, EmitterFillsExactlyTheCellsWhoseCentresLieInItsBox)
+{
+  // A box off the cell boundaries, away from the origin; after one vanishing step the density
+  // is the emitter's in exactly the cells whose centres it holds.
+  StableFluidsParameters p;
+  p.resolution[0] = 13;
+  p.resolution[1] = 11;
+  p.resolution[2] = 9;
+  p.cellSize = 0.1;
+  p.origin[0] = -0.4;
+  p.origin[1] = 0.2;
+  p.origin[2] = 1.0;
+  p.emitter = true;
+  const double box[6] = { -0.17, 0.31, 0.52, 0.78, 1.26, 1.61 };
+  std::copy(box, box + 6, p.emitterBox);
+  p.emitterDensity = 2.0;
+  StableFluids fluid(p);
+  fluid.step(1e-9);
+  const StaggeredGrid& g = fluid.grid();
+  int filled = 0;
+  for (int k = 0; k < g.nz; ++k)
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i)
+      {
+        const double c[3] = { p.origin[0] + (i + 0.5) * p.cellSize, p.origin[1] + (j + 0.5) * p.cellSize,
+                              p.origin[2] + (k + 0.5) * p.cellSize };
+        const bool in =
+          c[0] >= box[0] && c[0] <= box[1] && c[1] >= box[2] && c[1] <= box[3] && c[2] >= box[4] && c[2] <= box[5];
+        EXPECT_NEAR(g.density.at(i, j, k), in ? 2.0 : 0.0, 1e-6) << i << " " << j << " " << k;
+        filled += in;
+      }
+  EXPECT_EQ(filled, 5 * 3 * 3);
+}
+
 TEST(StableFluids, RejectsBadParametersByName)
 {
   StableFluidsParameters p;

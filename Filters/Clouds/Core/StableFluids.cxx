@@ -108,16 +108,33 @@ void StableFluids::applySources(double dt)
     }
     return true;
   };
+  // The samples of `a` that may lie in the box (one more each side for rounding; inside() decides).
+  auto span = [&](const GridArray& a, int axis, int& first, int& last)
+  {
+    const double lo = (P.emitterBox[2 * axis] - g.origin[axis]) / g.h - a.offset[axis];
+    const double hi = (P.emitterBox[2 * axis + 1] - g.origin[axis]) / g.h - a.offset[axis];
+    first = static_cast<int>(std::max(std::floor(lo) - 1.0, 0.0));
+    last = static_cast<int>(std::min(std::ceil(hi) + 1.0, a.dims[axis] - 1.0));
+  };
+  auto forEachInside = [&](const GridArray& a, auto&& f)
+  {
+    int first[3], last[3];
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      span(a, axis, first[axis], last[axis]);
+    }
 #pragma omp parallel for schedule(static)
-  for (int k = 0; k < g.nz; ++k)
-    for (int j = 0; j < g.ny; ++j)
-      for (int i = 0; i < g.nx; ++i)
-      {
-        if (inside(g.density, i, j, k))
+    for (int k = first[2]; k <= last[2]; ++k)
+      for (int j = first[1]; j <= last[1]; ++j)
+        for (int i = first[0]; i <= last[0]; ++i)
         {
-          inject(g.density.index(i, j, k));
+          if (inside(a, i, j, k))
+          {
+            f(a.index(i, j, k));
+          }
         }
-      }
+  };
+  forEachInside(g.density, inject);
   for (int axis = 0; axis < 3; ++axis)
   {
     const double speed = -P.emitterSpeed * P.gravityDirection[axis];
@@ -126,16 +143,7 @@ void StableFluids::applySources(double dt)
       continue;
     }
     GridArray& f = *faces[axis];
-#pragma omp parallel for schedule(static)
-    for (int k = 0; k < f.dims[2]; ++k)
-      for (int j = 0; j < f.dims[1]; ++j)
-        for (int i = 0; i < f.dims[0]; ++i)
-        {
-          if (inside(f, i, j, k))
-          {
-            f.at(i, j, k) = speed;
-          }
-        }
+    forEachInside(f, [&](std::size_t id) { f.values[id] = speed; });
   }
 }
 
