@@ -1,9 +1,13 @@
 #pragma once
-// The Rain representation's one pass: every drop a streak billboard (six vertices from
+// The Rain representation's one pass: every drop a streak billboard (one triangle from
 // gl_VertexID) coloured by precomputed radiance transfer, blended over the scene with the depth
-// test on and depth writes off. Owns the drop's transfer table (a texture computed once per
-// refractive index from parafluid::rain::DropTransfer).
+// test on and depth writes off. Owns the drop's transfer table (computed once per refractive
+// index from parafluid::rain::DropTransfer) and, as a texture, its product with the
+// environment's coefficients: the drop's radiance toward each view direction.
 #include "vtkSmartPointer.h"
+
+#include <array>
+#include <vector>
 
 class vtkShaderProgram;
 class vtkTextureObject;
@@ -34,11 +38,15 @@ public:
   static constexpr int kTransferRows = 64;
 
 private:
-  void EnsureTransfer(const RainFrame& frame, double refractiveIndex);
+  /// The drop's radiance toward each view direction for this frame's environment (a texture,
+  /// rebuilt when the environment or the refractive index changes).
+  void EnsureRadiance(const RainFrame& frame, double refractiveIndex);
 
   vtkShaderProgram* Program = nullptr; // owned by the window's shader cache
-  vtkSmartPointer<vtkTextureObject> Transfer;
-  double TransferIndex = 0.0;
+  std::vector<float> TransferTable;    // per view direction, the drop's 16 transfer coefficients
+  double TransferIndex = 0.0;          // the refractive index it is for
+  vtkSmartPointer<vtkTextureObject> Radiance;
+  std::array<float, 48> RadianceEnvironment{}; // the environment it is for
   unsigned int EmptyVAO = 0;
 };
 } // namespace parafluid

@@ -8,7 +8,8 @@
 // the rest): under a software rasteriser (llvmpipe) the cost of a streak is its triangles' setup,
 // and one triangle with few interpolated values sets up in well under half the time of a quad.
 // The drop's colour is computed here, once per vertex, and passed flat: across a streak a few
-// pixels long the view direction does not change.
+// pixels long the view direction does not change. It is one read of the drop's radiance toward
+// the eye, tabulated per view direction for the environment on the CPU.
 //=========================================================================
 uniform samplerBuffer drops; // per drop: (x, y, z, diameter), (vx, vy, vz, streak_length)
 uniform mat4 WCVCMatrix;
@@ -20,31 +21,22 @@ uniform float brightness;
 uniform float opacity;
 uniform float fogDistance;   // 0: no fog
 
-uniform sampler2D transfer;  // width x (4 * rows): 4 blocks of 4 coefficients
-uniform int transferRows;
-uniform vec3 environment[16]; // the environment's SH coefficients (RGB)
+// The drop's radiance toward each view direction (2 x rows azimuths by rows heights): its
+// transfer vector (lambda_l Y_lm(v): the geometric-optics phase function of a water drop
+// convolved with the harmonics) dotted with the environment's coefficients, on the CPU once per
+// environment.
+uniform sampler2D radiance;
 
-// The drop's transfer vector for the view direction (lambda_l Y_lm(v): the geometric-optics
-// phase function of a water drop convolved with the harmonics, a table computed once on the CPU)
-// dotted with the environment's coefficients: the radiance the drop sends to the eye.
 vec3 dropRadiance(vec3 v)
 {
   v = normalize(v);
-  int width = textureSize(transfer, 0).x;
+  ivec2 size = textureSize(radiance, 0);
   float azimuth = atan(v.y, v.x);
   azimuth = azimuth < 0.0 ? azimuth + 6.28318530718 : azimuth;
-  int col = int(azimuth / 6.28318530718 * float(width)) % width;
-  int row = clamp(int((v.z + 1.0) * 0.5 * float(transferRows)), 0, transferRows - 1);
-  vec3 radiance = vec3(0.0);
-  for (int block = 0; block < 4; ++block)
-  {
-    vec4 t = texelFetch(transfer, ivec2(col, block * transferRows + row), 0);
-    radiance += t.x * environment[4 * block] + t.y * environment[4 * block + 1] +
-                t.z * environment[4 * block + 2] + t.w * environment[4 * block + 3];
-  }
-  return max(radiance, vec3(0.0));
+  int col = int(azimuth / 6.28318530718 * float(size.x)) % size.x;
+  int row = clamp(int((v.z + 1.0) * 0.5 * float(size.y)), 0, size.y - 1);
+  return texelFetch(radiance, ivec2(col, row), 0).rgb;
 }
-
 
 out vec2 streakCoord;        // x: along (0 at the tail's cap, 1 at the head's), y: across (-1..1)
 flat out float capFraction;  // each cap's share of streakCoord.x
