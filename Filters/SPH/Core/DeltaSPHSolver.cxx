@@ -2,6 +2,7 @@
 #include "parafluid/sph/DeltaSPHSolver.h"
 
 #include "parafluid/common/Kernels.h"
+#include "parafluid/common/SimdDispatch.h"
 #include "parafluid/sph/SPHSolver.h"
 #include "parafluid/sph/WallMirrors.h"
 #include "private/NeighbourCandidates.h"
@@ -56,17 +57,43 @@ struct Sums
   float densityRate = 0.0f;
 };
 
-/// (dW/dr) / r of the Wendland kernel, and the kernel itself, at distance r.
+/// (dW/dr) / r of the Wendland kernel, and the kernel itself, at distance r. (Builtins only: it is
+/// inlined into the pair loops' AVX-512 copies, which inline no ordinary function.)
 struct WendlandPair
 {
   float gradient, value;
-  WendlandPair(const WendlandC2Kernel& w, float r)
+  __attribute__((always_inline)) WendlandPair(const WendlandC2Kernel& w, float r)
   {
     const float q = r * w.inverseH;
-    const float d = std::max(1.0f - q, 0.0f);
+    const float d = 1.0f - q > 0.0f ? 1.0f - q : 0.0f;
     const float d3 = d * d * d;
     gradient = -20.0f * w.coefficient * w.inverseH * w.inverseH * d3;
     value = w.coefficient * d3 * d * (1.0f + 4.0f * q);
+  }
+};
+
+/// The candidates within the kernel's support (their buffer positions `hits`) and the buffer's
+/// arrays, as raw pointers: the pair loops below are compiled as AVX-512, AVX2 and baseline copies
+/// (parafluid/common/SimdDispatch.h), and an AVX-512 copy, tuned for another processor, inlines
+/// no ordinary function (GCC requires the same tuning), so they touch no std:: call.
+struct PairInput
+{
+  const float *px, *py, *pz, *r2, *vx, *vy, *vz, *rho, *pressure;
+  const std::uint32_t* hits;
+  std::uint32_t count;
+  PairInput(CandidateBuffer& c, const float q[3], float h2)
+    : px(c.x.data())
+    , py(c.y.data())
+    , pz(c.z.data())
+    , r2(c.distanceSquared.data())
+    , vx(c.channel[VX].data())
+    , vy(c.channel[VY].data())
+    , vz(c.channel[VZ].data())
+    , rho(c.channel[DENSITY].data())
+    , pressure(c.channel[PRESSURE].data())
+    , hits(c.hits.data())
+    , count(c.findHits(q, h2))
+  {
   }
 };
 
@@ -74,14 +101,15 @@ struct WendlandPair
 /// candidates: pressure, tensile correction, artificial and laminar viscosity. `t` turns the
 /// laminar term's relative velocity into that of a no-slip wall image (all ones otherwise).
 template<bool Laminar>
-Sums forceTerms(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, float pI, const float t[3],
-                const Constants& k)
+__attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, const float* q, const float* vq,
+                                                          float rhoI, float pI, const float* t, const Constants& k,
+                                                          Sums* out)
 {
-  const std::uint32_t count = c.findHits(q, k.h2);
-  const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
-  const float *vx = c.channel[VX].data(), *vy = c.channel[VY].data(), *vz = c.channel[VZ].data();
-  const float *rho = c.channel[DENSITY].data(), *pressure = c.channel[PRESSURE].data();
-  const std::uint32_t* hits = c.hits.data();
+  const std::uint32_t count = in.count;
+  const float *px = in.px, *py = in.py, *pz = in.pz, *r2 = in.r2;
+  const float *vx = in.vx, *vy = in.vy, *vz = in.vz;
+  const float *rho = in.rho, *pressure = in.pressure;
+  const std::uint32_t* hits = in.hits;
   const float inverseRhoI = 1.0f / rhoI;
   const float termI = pI * inverseRhoI * inverseRhoI;
   const float tensileI = pI < 0.0f ? -kTensileCoefficient * termI : 0.0f;
@@ -92,18 +120,19 @@ Sums forceTerms(CandidateBuffer& c, const float q[3], const float vq[3], float r
     const std::uint32_t j = hits[n];
     const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
     const float rr = r2[j];
-    const WendlandPair w(k.w, std::sqrt(rr));
+    const WendlandPair w(k.w, __builtin_sqrtf(rr));
     const float approach = (vq[0] - vx[j]) * dx + (vq[1] - vy[j]) * dy + (vq[2] - vz[j]) * dz; // v_ij . x_ij
     const float inverseRhoJ = 1.0f / rho[j];
     const float termJ = pressure[j] * inverseRhoJ * inverseRhoJ;
     const float tensileJ = pressure[j] < 0.0f ? -kTensileCoefficient * termJ : 0.0f;
     // Capped at 1: Wendland C2 at h = 2 spacings is so peaked that W(0) / W(spacing) = 5.3, and
     // the uncapped f^4 (800) blows a stretched pair apart instead of holding it at a spacing.
-    const float f = std::min(w.value * k.inverseWSpacing, 1.0f);
+    const float ratio = w.value * k.inverseWSpacing;
+    const float f = ratio < 1.0f ? ratio : 1.0f;
     const float f2 = f * f;
     const float inverseR2 = 1.0f / (rr + k.eta2);
     // Monaghan's viscosity acts on approaching pairs only.
-    const float mu = std::min(approach, 0.0f) * k.hSmooth * inverseR2;
+    const float mu = (approach < 0.0f ? approach : 0.0f) * k.hSmooth * inverseR2;
     const float artificial = -k.alpha * k.c0 * mu * 2.0f / (rhoI + rho[j]);
     float scalar = -(k.pressureCorrection * (termI + termJ) + (tensileI + tensileJ) * f2 * f2 + artificial);
     if constexpr (Laminar)
@@ -117,10 +146,32 @@ Sums forceTerms(CandidateBuffer& c, const float q[3], const float vq[3], float r
     ay += scalar * dy;
     az += scalar * dz;
   }
+  out->a[0] = ax;
+  out->a[1] = ay;
+  out->a[2] = az;
+}
+
+// The pair loops compiled for AVX-512, AVX2 and the baseline, the widest this CPU runs picked
+// at each call (parafluid/common/SimdDispatch.h).
+PARAFLUID_SIMD_DISPATCH(laminarForceTerms,
+                        (const PairInput& in, const float* q, const float* vq, float rhoI, float pI, const float* t,
+                         const Constants& k, Sums* out),
+                        (in, q, vq, rhoI, pI, t, k, out), forceTermsBody<true>)
+PARAFLUID_SIMD_DISPATCH(inviscidForceTerms,
+                        (const PairInput& in, const float* q, const float* vq, float rhoI, float pI, const float* t,
+                         const Constants& k, Sums* out),
+                        (in, q, vq, rhoI, pI, t, k, out), forceTermsBody<false>)
+
+template<bool Laminar>
+Sums forceTerms(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, float pI, const float t[3],
+                const Constants& k)
+{
+  const PairInput in(c, q, k.h2);
   Sums sums;
-  sums.a[0] = ax;
-  sums.a[1] = ay;
-  sums.a[2] = az;
+  if constexpr (Laminar)
+    laminarForceTerms(in, q, vq, rhoI, pI, t, k, &sums);
+  else
+    inviscidForceTerms(in, q, vq, rhoI, pI, t, k, &sums);
   return sums;
 }
 
@@ -128,13 +179,14 @@ Sums forceTerms(CandidateBuffer& c, const float q[3], const float vq[3], float r
 /// particle's own, not that of the depth it is mirrored to) diffusion of the density's departure
 /// from hydrostatic (Fourtakas et al. 2019, linearised: rho_j^H - rho_i^H = rho0 g . (x_j - x_i) /
 /// c0^2 to first order in the compression, which stays about 1 % at c0 = 10 v_max).
-float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, bool diffuse, const Constants& k)
+__attribute__((always_inline)) inline void densityRateBody(const PairInput& in, const float* q, const float* vq,
+                                                           float rhoI, bool diffuse, const Constants& k, float* out)
 {
-  const std::uint32_t count = c.findHits(q, k.h2);
-  const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
-  const float *vx = c.channel[VX].data(), *vy = c.channel[VY].data(), *vz = c.channel[VZ].data();
-  const float* rho = c.channel[DENSITY].data();
-  const std::uint32_t* hits = c.hits.data();
+  const std::uint32_t count = in.count;
+  const float *px = in.px, *py = in.py, *pz = in.pz, *r2 = in.r2;
+  const float *vx = in.vx, *vy = in.vy, *vz = in.vz;
+  const float* rho = in.rho;
+  const std::uint32_t* hits = in.hits;
   const float diffusion = diffuse ? k.delta * k.hSmooth * k.c0 * 2.0f * k.mass : 0.0f;
   float rate = 0.0f;
 #pragma omp simd reduction(+ : rate)
@@ -143,13 +195,26 @@ float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float
     const std::uint32_t j = hits[n];
     const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
     const float rr = r2[j];
-    const WendlandPair w(k.w, std::sqrt(rr));
+    const WendlandPair w(k.w, __builtin_sqrtf(rr));
     const float approach = (vq[0] - vx[j]) * dx + (vq[1] - vy[j]) * dy + (vq[2] - vz[j]) * dz;
     const float hydrostatic =
       -k.rho0 * (k.gravity[0] * dx + k.gravity[1] * dy + k.gravity[2] * dz) * k.inverseC0Squared;
     const float psi = (rho[j] - rhoI) - hydrostatic;
     rate += w.gradient * (k.mass * approach - diffusion * psi / rho[j] * rr / (rr + k.eta2));
   }
+  *out = rate;
+}
+
+PARAFLUID_SIMD_DISPATCH(densityRateInto,
+                        (const PairInput& in, const float* q, const float* vq, float rhoI, bool diffuse,
+                         const Constants& k, float* out),
+                        (in, q, vq, rhoI, diffuse, k, out), densityRateBody)
+
+float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, bool diffuse, const Constants& k)
+{
+  const PairInput in(c, q, k.h2);
+  float rate = 0.0f;
+  densityRateInto(in, q, vq, rhoI, diffuse, k, &rate);
   return rate;
 }
 

@@ -45,6 +45,12 @@ void permute(std::vector<T>& a, std::vector<T>& scratch, const std::vector<std::
   a.swap(scratch);
 }
 
+/// distanceSquared[j] = |q - (x, y, z)[j]|^2 for j < size, and hits[0..count) the j (ascending)
+/// with distanceSquared[j] < h2; returns count. Compiled for AVX-512, AVX2 and the baseline
+/// (CandidateHits.cxx).
+std::uint32_t findHitsKernel(const float* x, const float* y, const float* z, std::uint32_t size, const float q[3],
+                             float h2, float* distanceSquared, std::uint32_t* hits);
+
 /// Up to this many per-particle values ride along with the positions of the candidates.
 constexpr int kMaxChannels = 5;
 
@@ -143,22 +149,7 @@ struct CandidateBuffer
   /// are their buffer positions and distanceSquared[j] holds |q − x_j|² for every candidate j.
   std::uint32_t findHits(const float q[3], float h2)
   {
-    const float *px = x.data(), *py = y.data(), *pz = z.data();
-    float* r2 = distanceSquared.data();
-#pragma omp simd
-    for (std::uint32_t j = 0; j < size; ++j)
-    {
-      const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
-      r2[j] = dx * dx + dy * dy + dz * dz;
-    }
-    std::uint32_t count = 0;
-    std::uint32_t* h = hits.data();
-    for (std::uint32_t j = 0; j < size; ++j)
-    {
-      h[count] = j;
-      count += r2[j] < h2 ? 1u : 0u;
-    }
-    return count;
+    return findHitsKernel(x.data(), y.data(), z.data(), size, q, h2, distanceSquared.data(), hits.data());
   }
 };
 
