@@ -1,12 +1,12 @@
 #pragma once
-// The hot vector loops (trilinear row reads, the multigrid smoother, the drop rows) are compiled
-// three times, for AVX-512, AVX2 and the baseline, and the widest this CPU runs is picked on the
-// first call. Why not GCC's target_clones: its "arch=skylake-avx512" clone is chosen only when the
-// CPU *is* a Skylake-SP (__builtin_cpu_is), so Ice Lake, Sapphire and Emerald Rapids servers ran
-// the AVX2 copy; and under generic tuning Debian's GCC 12 emits no gather instructions (its fix
-// for Intel's GDS, CVE-2022-40982), so the trilinear reads were eight scalar loads a lane. The
-// AVX-512 copy here names its instruction sets and a tuning that gathers: on an Emerald Rapids
-// core a trilinear read of a 64^3 grid takes 4-5 ns in it against 10-11 ns in the AVX2 copy.
+// The hot vector loops (trilinear row reads, the multigrid smoother, vorticity confinement, the
+// drop rows, δ-SPH's pair loops and the neighbour search's hits) are compiled three times, for AVX-512, AVX2 and the
+// baseline, and the widest this CPU runs is picked on the first call. Why not GCC's target_clones: its
+// "arch=skylake-avx512" clone is chosen only when the CPU *is* a Skylake-SP (__builtin_cpu_is), so Ice Lake, Sapphire
+// and Emerald Rapids servers ran the AVX2 copy; and under generic tuning Debian's GCC 12 emits no gather instructions
+// (its fix for Intel's GDS, CVE-2022-40982), so the trilinear reads were eight scalar loads a lane. The AVX-512 copy
+// here names its instruction sets and a tuning that gathers: on an Emerald Rapids core a trilinear read of a 64^3 grid
+// takes 4-5 ns in it against 10-11 ns in the AVX2 copy.
 //
 // PARAFLUID_SIMD=avx2 or =baseline in the environment caps the choice (benchmarks compare the
 // copies in one run; the tests check that they agree).
@@ -62,7 +62,10 @@ inline SimdLevel simdLevel()
 #define PARAFLUID_TARGET_AVX2 __attribute__((target("avx2")))
 
 /// Defines `void name params` to call `body args` (an always_inline function taking the same
-/// arguments) compiled as the three copies, the widest this CPU runs picked at each call.
+/// arguments) compiled as the three copies, the widest this CPU runs picked at each call. The
+/// AVX-512 copy's tuning differs from the rest of the program's, and GCC then inlines into it only
+/// functions marked always_inline: a body that calls std:: functions (std::vector::data,
+/// std::sqrt(float)) runs them as calls and does not vectorise; give it raw pointers and builtins.
 #define PARAFLUID_SIMD_DISPATCH(name, params, args, body)                                                              \
   PARAFLUID_TARGET_AVX512 static void name##Avx512 params                                                              \
   {                                                                                                                    \
