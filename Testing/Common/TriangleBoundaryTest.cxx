@@ -99,6 +99,72 @@ TEST(TriangleBoundary, GridIndexAgreesWithTestingEveryTriangle)
   EXPECT_GT(crossings, 200);
 }
 
+TEST(TriangleBoundary, NearestPointAgreesWithDenseSamplingOfEveryTriangle)
+{
+  // A coarse wavy sheet with its edges and corners in reach: points near faces, edges, vertices and
+  // beyond the border. The reference samples every triangle on a 200 x 200 barycentric lattice, so
+  // it is at most 1 / 200 of a triangle's size from the true distance (and never below it).
+  const TriangleBoundary mesh = heightField(4, 1.0f, wavy);
+  std::vector<float> points;
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> u(-0.15f, 1.15f), w(-0.25f, 0.25f);
+  const float radius = 0.3f;
+  int found = 0;
+  for (int k = 0; k < 300; ++k)
+  {
+    const float p[3] = { u(random), u(random), w(random) };
+    float distance = -1.0f, direction[3];
+    const bool near = mesh.nearest(p, radius, distance, direction);
+    // Reference: the triangles of the same sheet, sampled.
+    double best = 1e30;
+    for (int j = 0; j < 4; ++j)
+    {
+      for (int i = 0; i < 4; ++i)
+      {
+        const float x0 = 0.25f * i, y0 = 0.25f * j, x1 = x0 + 0.25f, y1 = y0 + 0.25f;
+        const float corners[2][3][3] = {
+          { { x0, y0, wavy(x0, y0) }, { x1, y0, wavy(x1, y0) }, { x1, y1, wavy(x1, y1) } },
+          { { x0, y0, wavy(x0, y0) }, { x1, y1, wavy(x1, y1) }, { x0, y1, wavy(x0, y1) } }
+        };
+        for (const auto& t : corners)
+        {
+          for (int a = 0; a <= 200; ++a)
+          {
+            for (int b = 0; a + b <= 200; ++b)
+            {
+              const double s = a / 200.0, r = b / 200.0;
+              double d2 = 0.0;
+              for (int c = 0; c < 3; ++c)
+              {
+                const double q = t[0][c] + s * (t[1][c] - t[0][c]) + r * (t[2][c] - t[0][c]);
+                d2 += (p[c] - q) * (p[c] - q);
+              }
+              best = std::min(best, d2);
+            }
+          }
+        }
+      }
+    }
+    const double reference = std::sqrt(best);
+    if (reference < radius - 0.01)
+    {
+      ASSERT_TRUE(near) << "point " << k;
+      EXPECT_LE(distance, reference + 1e-5) << "point " << k;
+      EXPECT_GE(distance, reference - 0.0025) << "point " << k;
+      // The direction leads from the nearest point back to p.
+      const float length =
+        std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+      EXPECT_NEAR(length, 1.0f, 1e-5f);
+      ++found;
+    }
+    else if (reference > radius + 0.01)
+    {
+      EXPECT_FALSE(near) << "point " << k;
+    }
+  }
+  EXPECT_GT(found, 150);
+}
+
 TEST(TriangleBoundary, PutsParticlesBackAndReflectsTheirVelocityWithDamping)
 {
   const TriangleBoundary plane = heightField(2, 1.0f, flat);

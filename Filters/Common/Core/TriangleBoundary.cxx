@@ -225,6 +225,170 @@ bool TriangleBoundary::cellRange(const float lo[3], const float hi[3], int first
   return true;
 }
 
+template<class F>
+void TriangleBoundary::forEachTriangleIn(const int first[3], const int last[3], F&& f) const
+{
+  for (int k = first[2]; k <= last[2]; ++k)
+  {
+    for (int j = first[1]; j <= last[1]; ++j)
+    {
+      for (int i = first[0]; i <= last[0]; ++i)
+      {
+        const std::size_t c =
+          static_cast<std::size_t>(i) + static_cast<std::size_t>(this->Dims[0]) *
+                                          (static_cast<std::size_t>(j) + static_cast<std::size_t>(this->Dims[1]) * k);
+        for (std::uint32_t e = this->CellStart[c]; e < this->CellStart[c + 1]; ++e)
+        {
+          f(this->CellTriangles[e]);
+        }
+      }
+    }
+  }
+}
+
+namespace
+{
+// The point of triangle (a, b, c) nearest to p: in the face, on an edge or at a vertex, by the
+// region of the plane p projects into (tested through the barycentric coordinates' signs).
+void nearestOnTriangle(const double p[3], const double a[3], const double b[3], const double c[3], double out[3])
+{
+  double ab[3], ac[3], ap[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    ab[k] = b[k] - a[k];
+    ac[k] = c[k] - a[k];
+    ap[k] = p[k] - a[k];
+  }
+  auto set = [&](const double* from, const double* along, double t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      out[k] = from[k] + t * along[k];
+    }
+  };
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0)
+  {
+    return set(a, ab, 0.0); // vertex a
+  }
+  double bp[3], cp[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    bp[k] = p[k] - b[k];
+    cp[k] = p[k] - c[k];
+  }
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3)
+  {
+    return set(b, ab, 0.0); // vertex b
+  }
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6)
+  {
+    return set(c, ac, 0.0); // vertex c
+  }
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
+  {
+    return set(a, ab, d1 / (d1 - d3)); // edge ab
+  }
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
+  {
+    return set(a, ac, d2 / (d2 - d6)); // edge ac
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
+  {
+    double bc[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      bc[k] = c[k] - b[k];
+    }
+    return set(b, bc, (d4 - d3) / ((d4 - d3) + (d5 - d6))); // edge bc
+  }
+  const double sum = va + vb + vc;
+  const double v = vb / sum, w = vc / sum;
+  for (int k = 0; k < 3; ++k)
+  {
+    out[k] = a[k] + v * ab[k] + w * ac[k]; // inside the face
+  }
+}
+} // namespace
+
+bool TriangleBoundary::nearest(const float p[3], float radius, float& distance, float direction[3],
+                               std::uint32_t* triangle) const
+{
+  if (this->Triangles.empty() || !(radius > 0.0f))
+  {
+    return false;
+  }
+  const float lo[3] = { p[0] - radius, p[1] - radius, p[2] - radius };
+  const float hi[3] = { p[0] + radius, p[1] + radius, p[2] + radius };
+  int first[3], last[3];
+  if (!this->cellRange(lo, hi, first, last))
+  {
+    return false;
+  }
+  const double q[3] = { p[0], p[1], p[2] };
+  double best = static_cast<double>(radius) * radius;
+  bool found = false;
+  double closest[3] = { 0.0, 0.0, 0.0 };
+  std::uint32_t bestTriangle = 0;
+  this->forEachTriangleIn(
+    first, last,
+    [&](std::uint32_t t)
+    {
+      const float* v0 = &this->Points[3 * this->Triangles[3 * t]];
+      const float* n = this->faceNormal(t);
+      // The plane's distance bounds the triangle's from below: most triangles end here.
+      const double plane = n[0] * (q[0] - v0[0]) + n[1] * (q[1] - v0[1]) + n[2] * (q[2] - v0[2]);
+      if (plane * plane >= best)
+      {
+        return;
+      }
+      const float* v1 = &this->Points[3 * this->Triangles[3 * t + 1]];
+      const float* v2 = &this->Points[3 * this->Triangles[3 * t + 2]];
+      const double a[3] = { v0[0], v0[1], v0[2] }, b[3] = { v1[0], v1[1], v1[2] }, cc[3] = { v2[0], v2[1], v2[2] };
+      double point[3];
+      nearestOnTriangle(q, a, b, cc, point);
+      const double d2 = (q[0] - point[0]) * (q[0] - point[0]) + (q[1] - point[1]) * (q[1] - point[1]) +
+                        (q[2] - point[2]) * (q[2] - point[2]);
+      if (d2 < best)
+      {
+        best = d2;
+        found = true;
+        bestTriangle = t;
+        std::copy(point, point + 3, closest);
+      }
+    });
+  if (!found)
+  {
+    return false;
+  }
+  const double d = std::sqrt(best);
+  distance = static_cast<float>(d);
+  if (triangle)
+  {
+    *triangle = bestTriangle;
+  }
+  if (d > 1e-9 * this->CellSize)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      direction[k] = static_cast<float>((q[k] - closest[k]) / d);
+    }
+    return true;
+  }
+  const float* n = this->faceNormal(bestTriangle);
+  const double side = n[0] * (q[0] - closest[0]) + n[1] * (q[1] - closest[1]) + n[2] * (q[2] - closest[2]);
+  for (int k = 0; k < 3; ++k)
+  {
+    direction[k] = side < 0.0 ? -n[k] : n[k];
+  }
+  return true;
+}
+
 bool TriangleBoundary::firstCrossing(const float a[3], const float b[3], Crossing& crossing, float skin) const
 {
   if (this->Triangles.empty())
@@ -247,81 +411,70 @@ bool TriangleBoundary::firstCrossing(const float a[3], const float b[3], Crossin
   constexpr double tolerance = 1e-4;
   bool found = false;
   double bestT = 2.0;
-  for (int k = first[2]; k <= last[2]; ++k)
-  {
-    for (int j = first[1]; j <= last[1]; ++j)
+  this->forEachTriangleIn(
+    first, last,
+    [&](std::uint32_t t)
     {
-      for (int i = first[0]; i <= last[0]; ++i)
+      const float* p0 = &this->Points[3 * this->Triangles[3 * t]];
+      const float* p1 = &this->Points[3 * this->Triangles[3 * t + 1]];
+      const float* p2 = &this->Points[3 * this->Triangles[3 * t + 2]];
+      const double n[3] = { this->FaceNormals[3 * t], this->FaceNormals[3 * t + 1], this->FaceNormals[3 * t + 2] };
+      double da[3], db[3];
+      subtract(a, p0, da);
+      subtract(b, p0, db);
+      const double sa = dot(n, da);
+      const double sb = dot(n, db);
+      // A point on the plane has no side to keep.
+      if (sa == 0.0)
       {
-        const std::size_t c =
-          static_cast<std::size_t>(i) + static_cast<std::size_t>(this->Dims[0]) *
-                                          (static_cast<std::size_t>(j) + static_cast<std::size_t>(this->Dims[1]) * k);
-        for (std::uint32_t e = this->CellStart[c]; e < this->CellStart[c + 1]; ++e)
-        {
-          const std::uint32_t t = this->CellTriangles[e];
-          const float* p0 = &this->Points[3 * this->Triangles[3 * t]];
-          const float* p1 = &this->Points[3 * this->Triangles[3 * t + 1]];
-          const float* p2 = &this->Points[3 * this->Triangles[3 * t + 2]];
-          const double n[3] = { this->FaceNormals[3 * t], this->FaceNormals[3 * t + 1], this->FaceNormals[3 * t + 2] };
-          double da[3], db[3];
-          subtract(a, p0, da);
-          subtract(b, p0, db);
-          const double sa = dot(n, da);
-          const double sb = dot(n, db);
-          // A point on the plane has no side to keep.
-          if (sa == 0.0)
-          {
-            continue;
-          }
-          const double side = sa > 0.0 ? 1.0 : -1.0;
-          const double startDistance = side * sa, endDistance = side * sb;
-          if (endDistance >= skin)
-          {
-            continue;
-          }
-          const double s = startDistance > skin ? (startDistance - skin) / (startDistance - endDistance) : 0.0;
-          if (s >= bestT)
-          {
-            continue;
-          }
-          // Barycentric coordinates of q = a + s (b - a) projected onto the triangle's plane.
-          double q[3], e1[3], e2[3], w[3];
-          for (int d = 0; d < 3; ++d)
-          {
-            q[d] = a[d] + s * (static_cast<double>(b[d]) - a[d]);
-          }
-          double height = 0.0;
-          for (int d = 0; d < 3; ++d)
-          {
-            height += n[d] * (q[d] - p0[d]);
-          }
-          for (int d = 0; d < 3; ++d)
-          {
-            w[d] = q[d] - height * n[d] - p0[d];
-          }
-          subtract(p1, p0, e1);
-          subtract(p2, p0, e2);
-          const double d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
-          const double w1 = dot(w, e1), w2 = dot(w, e2);
-          const double det = d11 * d22 - d12 * d12;
-          const double u = (d22 * w1 - d12 * w2) / det;
-          const double v = (d11 * w2 - d12 * w1) / det;
-          if (u < -tolerance || v < -tolerance || u + v > 1.0 + tolerance)
-          {
-            continue;
-          }
-          found = true;
-          bestT = s;
-          crossing.t = static_cast<float>(s);
-          crossing.triangle = t;
-          crossing.barycentric[0] = static_cast<float>(1.0 - u - v);
-          crossing.barycentric[1] = static_cast<float>(u);
-          crossing.barycentric[2] = static_cast<float>(v);
-          crossing.side = sa > 0.0 ? 1.0f : -1.0f;
-        }
+        return;
       }
-    }
-  }
+      const double side = sa > 0.0 ? 1.0 : -1.0;
+      const double startDistance = side * sa, endDistance = side * sb;
+      if (endDistance >= skin)
+      {
+        return;
+      }
+      const double s = startDistance > skin ? (startDistance - skin) / (startDistance - endDistance) : 0.0;
+      if (s >= bestT)
+      {
+        return;
+      }
+      // Barycentric coordinates of q = a + s (b - a) projected onto the triangle's plane.
+      double q[3], e1[3], e2[3], w[3];
+      for (int d = 0; d < 3; ++d)
+      {
+        q[d] = a[d] + s * (static_cast<double>(b[d]) - a[d]);
+      }
+      double height = 0.0;
+      for (int d = 0; d < 3; ++d)
+      {
+        height += n[d] * (q[d] - p0[d]);
+      }
+      for (int d = 0; d < 3; ++d)
+      {
+        w[d] = q[d] - height * n[d] - p0[d];
+      }
+      subtract(p1, p0, e1);
+      subtract(p2, p0, e2);
+      const double d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
+      const double w1 = dot(w, e1), w2 = dot(w, e2);
+      const double det = d11 * d22 - d12 * d12;
+      const double u = (d22 * w1 - d12 * w2) / det;
+      const double v = (d11 * w2 - d12 * w1) / det;
+      if (u < -tolerance || v < -tolerance || u + v > 1.0 + tolerance)
+      {
+        return;
+      }
+      found = true;
+      bestT = s;
+      crossing.t = static_cast<float>(s);
+      crossing.triangle = t;
+      crossing.barycentric[0] = static_cast<float>(1.0 - u - v);
+      crossing.barycentric[1] = static_cast<float>(u);
+      crossing.barycentric[2] = static_cast<float>(v);
+      crossing.side = sa > 0.0 ? 1.0f : -1.0f;
+    });
   return found;
 }
 

@@ -56,15 +56,24 @@ Runoff::Runoff(const RainParameters& rain, const RunoffParameters& runoff, std::
   const auto& z = ground->elevation();
   const auto [lowest, highest] = std::minmax_element(z.begin(), z.end());
   const double top = std::max(rain.height, static_cast<double>(*highest) + 10.0 * d);
+  const bool delta = s.pressureSolver == sph::PressureSolverType::DeltaSPH;
+  s.smoothingLength = static_cast<float>((delta ? 3.0 : 2.0) * d);
+  // δ-SPH's terrain is not a wall in its sums here (SPH Step's δ-SPH over a mesh has it): under
+  // the cloudburst of Runoff.BasinKeepsTheRainVolume δ-SPH with the wall blew up after 11 s at the
+  // default CFL number (without it, it ran the 30 s); DFSPH keeps it.
+  if (delta)
+  {
+    s.meshWallDensity = false;
+  }
+  // The box's floor a kernel radius and a spacing below the lowest ground: the terrain is the
+  // floor, and the box floor's mirror images (inside the ground) never reach water above it.
   s.domainBounds = { static_cast<float>(b[0]),
                      static_cast<float>(b[1]),
                      static_cast<float>(b[2]),
                      static_cast<float>(b[3]),
-                     static_cast<float>(*lowest - 2.0 * d),
+                     static_cast<float>(*lowest - s.smoothingLength - d),
                      static_cast<float>(top) };
   s.gravity = { 0.0f, 0.0f, static_cast<float>(-rain.gravity) };
-  const bool delta = s.pressureSolver == sph::PressureSolverType::DeltaSPH;
-  s.smoothingLength = static_cast<float>((delta ? 3.0 : 2.0) * d);
   s.particleMass = sph::latticeParticleMass(static_cast<float>(d), s.smoothingLength, s.restDensity, s.densityKernel());
   if (!(s.soundSpeed > 0.0f))
   {
@@ -203,12 +212,35 @@ void Runoff::insert(const std::vector<Impact>& impacts)
       double pz = impact.onWater
                     ? impact.position[2] + 0.5 * d
                     : std::max(this->Ground->heightAt(px, py), triangulatedHeight(*this->Ground, px, py)) + 0.5 * d;
+      float v[3] = { impact.velocity[0], impact.velocity[1], impact.velocity[2] };
+      if (pz - triangulatedHeight(*this->Ground, px, py) < p.sph.smoothingLength)
+      {
+        // On the ground, or on water too thin to take the drop's momentum (a cell's water level is
+        // its highest particle's: a film, or one particle somewhere in the cell), the drop's water
+        // keeps only its speed along the ground: it spreads. (The mesh's wall in the SPH's sums
+        // would otherwise stop the normal speed elastically and bounce the particle off as a ball.)
+        const double e = 0.5 * d;
+        const double gx =
+          (triangulatedHeight(*this->Ground, px + e, py) - triangulatedHeight(*this->Ground, px - e, py)) / (2 * e);
+        const double gy =
+          (triangulatedHeight(*this->Ground, px, py + e) - triangulatedHeight(*this->Ground, px, py - e)) / (2 * e);
+        const double length = std::sqrt(gx * gx + gy * gy + 1.0);
+        const double n[3] = { -gx / length, -gy / length, 1.0 / length };
+        const double normal = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+        if (normal < 0.0)
+        {
+          for (int a = 0; a < 3; ++a)
+          {
+            v[a] = static_cast<float>(v[a] - normal * n[a]);
+          }
+        }
+      }
       x.push_back(static_cast<float>(px));
       y.push_back(static_cast<float>(py));
       z.push_back(static_cast<float>(pz));
-      vx.push_back(impact.velocity[0]);
-      vy.push_back(impact.velocity[1]);
-      vz.push_back(impact.velocity[2]);
+      vx.push_back(v[0]);
+      vy.push_back(v[1]);
+      vz.push_back(v[2]);
       this->Inserted += volume;
     }
   }

@@ -11,6 +11,7 @@
 
 #include "parafluid/common/Kernels.h"
 #include "parafluid/sph/WallMirrors.h"
+#include "private/MeshWall.h"
 #include "private/NeighbourCandidates.h"
 
 #include <algorithm>
@@ -167,6 +168,18 @@ void DFSPHSolver::computeDensityAndFactor(SPHSolver& sim)
                    gz += scale[2] * sz;
                    squares += ss;
                  });
+      detail::MeshWallTable::Weight wall;
+      const float* normal = nullptr;
+      if (sim.Wall && sim.Wall->of(i, wall, normal))
+      {
+        // The lattice beyond the mesh: density and the gradient of the particle's own move (it
+        // stays put, so it has no term of its own in the sum of squares: Bender & Koschier 2017).
+        rho += wall.sum;
+        gx += wall.slope * normal[0];
+        gy += wall.slope * normal[1];
+        gz += wall.slope * normal[2];
+        neighbours += static_cast<unsigned>(wall.neighbours + 0.5f);
+      }
       rho *= m;
       s.density[i] = rho;
       // alpha_i = rho_i / (|sum_j m grad W_ij|^2 + sum_j |m grad W_ij|^2); an isolated particle has
@@ -213,6 +226,13 @@ void DFSPHSolver::computeDensityRate(SPHSolver& sim)
                    }
                    rate += sum;
                  });
+      detail::MeshWallTable::Weight wall;
+      const float* normal = nullptr;
+      if (sim.Wall && sim.Wall->of(i, wall, normal))
+      {
+        // The wall is at rest: v_i . sum_b grad W_ib.
+        rate += wall.slope * (velocity[0] * normal[0] + velocity[1] * normal[1] + velocity[2] * normal[2]);
+      }
       this->DensityRate[i] = m * rate;
     });
 }
@@ -255,6 +275,16 @@ void DFSPHSolver::applyPressureImpulse(SPHSolver& sim, float dt)
                                        f[1] += scale[1] * fy;
                                        f[2] += scale[2] * fz;
                                      });
+                          detail::MeshWallTable::Weight wall;
+                          const float* normal = nullptr;
+                          if (sim.Wall && sim.Wall->of(i, wall, normal))
+                          {
+                            // The wall's particles have no pressure of their own: k_i alone.
+                            for (int a = 0; a < 3; ++a)
+                            {
+                              f[a] += ki * wall.slope * normal[a];
+                            }
+                          }
                           // a_i = -sum_j m (k_i + k_j) grad W_ij, k = p / rho^2
                           const float a[3] = { -m * f[0], -m * f[1], -m * f[2] };
                           s.vx[i] += dt * a[0];

@@ -5,6 +5,7 @@
 #include "parafluid/common/SimdDispatch.h"
 #include "parafluid/sph/SPHSolver.h"
 #include "parafluid/sph/WallMirrors.h"
+#include "private/MeshWall.h"
 #include "private/NeighbourCandidates.h"
 #include "private/WallImages.h"
 
@@ -219,7 +220,8 @@ float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float
 }
 
 template<bool Laminar>
-void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const Constants& k)
+void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const Constants& k,
+               const detail::MeshWall* wall)
 {
   forEachParticleByCell(grid, s, p.smoothingLength, threadCount(p),
                         { s.vx.data(), s.vy.data(), s.vz.data(), s.density.data(), s.pressure.data() },
@@ -238,6 +240,21 @@ void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters&
                                                a[d] += scale[d] * g.a[d];
                                              }
                                            });
+                          detail::MeshWallTable::Weight weight;
+                          const float* normal = nullptr;
+                          if (wall && wall->of(i, weight, normal))
+                          {
+                            // The mesh's lattice is the particle's mirror image: p_b = p_i, negative
+                            // too (a wall that only pushed would take in energy wherever the water
+                            // is in tension, as a film spreading over a terrain is).
+                            const float rho = s.density[i];
+                            const float term = s.pressure[i] / (rho * rho);
+                            const float scalar = -2.0f * k.pressureCorrection * term * k.mass * weight.slope;
+                            for (int d = 0; d < 3; ++d)
+                            {
+                              a[d] += scalar * normal[d];
+                            }
+                          }
                           s.ax[i] = a[0];
                           s.ay[i] = a[1];
                           s.az[i] = a[2];
@@ -294,6 +311,15 @@ void DeltaSPHSolver::start(SPHSolver& sim)
     this->startHydrostatic(sim);
   }
   this->DensityRate.assign(s.size(), 0.0f);
+  // The wall's sum where each particle starts: its density counts from there.
+  this->WallSum.assign(s.size(), 0.0f);
+  if (sim.Wall)
+  {
+    for (std::size_t i = 0; i < s.size(); ++i)
+    {
+      this->WallSum[i] = sim.Wall->table.at(sim.Wall->contacts.distance[i]).sum;
+    }
+  }
   this->updatePressure(sim);
   this->computeAccelerations(sim);
 }
@@ -353,7 +379,7 @@ void DeltaSPHSolver::permute(SPHSolver& sim, const std::vector<std::uint32_t>& o
 {
   // Density is state here (it is integrated, not summed), so it moves with its particle.
   ParticleState& s = sim.State;
-  for (auto* a : { &s.density, &this->DensityRate })
+  for (auto* a : { &s.density, &this->DensityRate, &this->WallSum })
   {
     if (a->size() == s.size())
     {
@@ -410,11 +436,11 @@ void DeltaSPHSolver::computeAccelerations(SPHSolver& sim)
     constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing, sim.LaplacianCorrection, this->PressureCorrection);
   if (sim.Parameters.kinematicViscosity > 0.0f || sim.Parameters.viscosity > 0.0f)
   {
-    forcePass<true>(sim.Grid, sim.State, sim.Parameters, k);
+    forcePass<true>(sim.Grid, sim.State, sim.Parameters, k, sim.Wall.get());
   }
   else
   {
-    forcePass<false>(sim.Grid, sim.State, sim.Parameters, k);
+    forcePass<false>(sim.Grid, sim.State, sim.Parameters, k, sim.Wall.get());
   }
   sim.addSurfaceTension();
 }
@@ -446,6 +472,22 @@ void DeltaSPHSolver::advanceDensity(SPHSolver& sim, float dt)
   for (std::int64_t i = 0; i < n; ++i)
   {
     rho[i] += dt * rate[i];
+  }
+  if (sim.Wall)
+  {
+    // The mesh's wall moves density with the particle's position, not its velocity: the change of
+    // the wall's sum since the last step. Its lattice is the particle's mirror image (moving with
+    // the mirrored velocity, p_b = p_i), hence 2 m. Position, not rate: a particle the mesh bounces
+    // back gets its compression back, which a rate integrated over the bounce does not give.
+    const float twiceMass = 2.0f * p.particleMass;
+    const detail::MeshWall& wall = *sim.Wall;
+#pragma omp parallel for schedule(static) num_threads(threadCount(p))
+    for (std::int64_t i = 0; i < n; ++i)
+    {
+      const float sum = wall.table.at(wall.contacts.distance[i]).sum;
+      rho[i] += twiceMass * (sum - this->WallSum[i]);
+      this->WallSum[i] = sum;
+    }
   }
 }
 
@@ -549,6 +591,7 @@ double DeltaSPHSolver::step(SPHSolver& sim, double remaining)
   if (sim.Parameters.particleShifting)
   {
     this->shiftParticles(sim, h);
+    sim.findMeshWalls();
   }
   this->advanceDensity(sim, h);
   this->updatePressure(sim);

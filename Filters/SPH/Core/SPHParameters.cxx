@@ -1,6 +1,7 @@
 #include "parafluid/sph/SPHParameters.h"
 
 #include "parafluid/common/Kernels.h"
+#include "private/AnyKernel.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -13,47 +14,8 @@ bool positiveFinite(float v)
 {
   return std::isfinite(v) && v > 0.0f;
 }
-
-/// W(r) and dW/dr of the density kernel of the given support radius.
-struct AnyKernel
-{
-  DensityKernel kind;
-  Poly6Kernel poly6;
-  CubicSplineKernel cubic;
-  WendlandC2Kernel wendland;
-  AnyKernel(DensityKernel kind, float h)
-    : kind(kind)
-    , poly6(h)
-    , cubic(h)
-    , wendland(h)
-  {
-  }
-  double value(float r) const
-  {
-    switch (kind)
-    {
-      case DensityKernel::Poly6:
-        return poly6.valueFromSquared(r * r);
-      case DensityKernel::CubicSpline:
-        return cubic.value(r);
-      default:
-        return wendland.value(r);
-    }
-  }
-  double derivative(float r) const
-  {
-    switch (kind)
-    {
-      case DensityKernel::Poly6:
-        return static_cast<double>(poly6.gradientFactorFromSquared(r * r)) * r;
-      case DensityKernel::CubicSpline:
-        return cubic.radialDerivative(r);
-      default:
-        return wendland.radialDerivative(r);
-    }
-  }
-};
-}
+} // namespace
+using detail::AnyKernel;
 
 std::string SPHParameters::validate() const
 {

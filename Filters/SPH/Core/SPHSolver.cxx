@@ -2,6 +2,7 @@
 
 #include "parafluid/common/TriangleBoundary.h"
 #include "parafluid/sph/WallMirrors.h"
+#include "private/MeshWall.h"
 #include "private/NeighbourCandidates.h"
 
 #include <algorithm>
@@ -98,6 +99,13 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial,
   this->LaplacianCorrection = latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength,
                                                          spiky ? DensityKernel::Poly6 : p.densityKernel(), spiky);
   this->SpikyGradientCorrection = latticeSpikyGradientCorrection(this->ParticleSpacing, p.smoothingLength);
+  if (this->Boundary && this->Boundary->triangleCount() > 0 && p.meshWallDensity &&
+      p.pressureSolver != PressureSolverType::WCSPH)
+  {
+    this->Wall = std::make_unique<detail::MeshWall>();
+    this->Wall->table = detail::MeshWallTable(p.densityKernel(), p.smoothingLength, this->ParticleSpacing);
+    this->findMeshWalls();
+  }
   this->Pressure = makePressureSolver(p.pressureSolver);
   this->Pressure->start(*this);
   this->measureCompression();
@@ -510,7 +518,46 @@ void SPHSolver::sortByCell()
   }
   permute(s.id, this->ScratchId, order, threads);
   permute(s.originalIndex, this->ScratchIndex, order, threads);
+  this->findMeshWalls();
   // Densities and pressures are recomputed from the sorted positions next.
+}
+
+void SPHSolver::findMeshWalls()
+{
+  if (!this->Wall)
+  {
+    return;
+  }
+  const ParticleState& s = this->State;
+  detail::MeshWallContacts& c = this->Wall->contacts;
+  const auto n = static_cast<std::int64_t>(s.size());
+  c.distance.resize(s.size());
+  c.normal.resize(3 * s.size());
+  const float reach = this->Wall->table.reach();
+  const TriangleBoundary& mesh = *this->Boundary;
+#pragma omp parallel for schedule(dynamic, 512) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    const float p[3] = { s.x[i], s.y[i], s.z[i] };
+    float distance = reach;
+    float* normal = &c.normal[3 * i];
+    std::uint32_t triangle = 0;
+    // The fluid's side of a mesh is the one its faces' normals point to (a terrain's top, an
+    // obstacle's outside). A particle behind it (on a container's mesh that faces out, or pushed
+    // through) gets no wall: the wall would push it further in.
+    bool near = mesh.nearest(p, reach, distance, normal, &triangle);
+    if (near)
+    {
+      const float* face = mesh.faceNormal(triangle);
+      near = normal[0] * face[0] + normal[1] * face[1] + normal[2] * face[2] > 0.0f;
+    }
+    if (!near)
+    {
+      distance = reach;
+      normal[0] = normal[1] = normal[2] = 0.0f;
+    }
+    c.distance[i] = distance;
+  }
 }
 
 void SPHSolver::kick(float dt)

@@ -39,6 +39,12 @@ public:
   /// when the particle hit the mesh.
   bool resolve(const float from[3], float to[3], float velocity[3], float damping, float offset) const;
 
+  /// The point of the mesh nearest to p, if one lies within `radius` [m]: its distance, the unit
+  /// vector from it to p (the face's normal, turned towards p, when p lies on the mesh) and, when
+  /// asked, the triangle it lies on. A particle's wall in the SPH's sums.
+  bool nearest(const float p[3], float radius, float& distance, float direction[3],
+               std::uint32_t* triangle = nullptr) const;
+
   std::size_t triangleCount() const { return this->Triangles.size() / 3; }
   const float* bounds() const { return this->Bounds; }
   /// Unit normal of triangle t (right-handed in its vertex order).
@@ -50,6 +56,9 @@ private:
   void buildGrid();
   void triangleBox(std::size_t t, float lo[3], float hi[3]) const;
   bool cellRange(const float lo[3], const float hi[3], int first[3], int last[3]) const;
+  /// Calls f(triangle) for each triangle listed in the cells first..last (once per cell it is in).
+  template<class F>
+  void forEachTriangleIn(const int first[3], const int last[3], F&& f) const;
 
   std::vector<float> Points;
   std::vector<std::uint32_t> Triangles;

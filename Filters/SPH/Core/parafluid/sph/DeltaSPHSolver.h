@@ -12,7 +12,8 @@
 //    the fluid's physical viscosity (the laminar term of SPHParameters::kinematicViscosity);
 //  - negative pressure kept, with Monaghan's (2000) tensile correction against particle pairing
 //    and particle shifting (Lind et al. 2012) against the voids of stretched flow;
-//  - the Wendland C2 kernel, and a kick-drift-kick leapfrog in which density moves with position.
+//  - the Wendland C2 kernel, and a kick-drift-kick leapfrog in which density moves with position;
+//  - a boundary mesh as a wall in the density and pressure sums (private/MeshWall.h).
 #include "parafluid/common/ParticleState.h"
 #include "parafluid/sph/PressureSolver.h"
 
@@ -46,7 +47,8 @@ private:
   void advanceDensity(SPHSolver& sim, float dt);
 
   std::vector<float> DensityRate;
-  std::vector<float> Shift; // 3 per particle
+  std::vector<float> Shift;   // 3 per particle
+  std::vector<float> WallSum; // the mesh wall's sum at each particle when its density last moved
   double SoundSpeed = 0.0;
   float PressureCorrection = 1.0f; // pressure forces, see latticeGradientCorrection
 };

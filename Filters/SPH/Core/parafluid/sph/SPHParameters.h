@@ -83,6 +83,11 @@ struct SPHParameters
   std::array<bool, 6> frictionWalls = { true, true, true, true, true, true };
   float wallKinematicViscosity = 1.0e-6f; // nu [m^2/s] for LogLaw; water at 20 °C is 1.0e-6
   float boundaryDamping = 0.5f;           // fraction of the normal velocity lost when bouncing off a boundary mesh
+  // DFSPH and δ-SPH: a boundary mesh adds to a nearby particle's density and pressure sums what the
+  // fluid's rest lattice continued beyond it would (a wall-weight table, private/MeshWall.h), so
+  // water rests on it at rest density instead of packing onto it. Off (and in Müller's WCSPH), the
+  // mesh only stops particles.
+  bool meshWallDensity = true;
   // Periodic axes (x, y, z): a particle leaving through one face of the domain comes back through
   // the opposite one, and neighbours are found across the pair of faces; those faces are no walls.
   // A periodic axis must be at least three smoothing lengths long.

@@ -26,6 +26,11 @@ class TriangleBoundary;
 
 namespace parafluid::sph
 {
+namespace detail
+{
+struct MeshWall;
+}
+
 class SPHSolver
 {
 public:
@@ -99,6 +104,9 @@ public:
 
 private:
   void sortByCell();
+  /// Each particle's nearest point of the boundary mesh (when the solver adds the mesh's wall to
+  /// its sums, SPHParameters::meshWallDensity); after every sort and every move that follows one.
+  void findMeshWalls();
   void checkFinite() const;
   double chooseTimeStep(double remaining) const;
   double maxAcceleration() const;
@@ -148,5 +156,6 @@ private:
   double SpeedLimit = 0.0; // [m/s], see speedLimit()
   StepStatistics Last;
   std::unique_ptr<PressureSolver> Pressure; // WCSPH or DFSPH (SPHParameters::pressureSolver)
+  std::unique_ptr<detail::MeshWall> Wall;   // the mesh's wall sums (DFSPH, δ-SPH), else null
 };
 } // namespace parafluid::sph
