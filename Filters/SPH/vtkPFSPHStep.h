@@ -101,6 +101,10 @@ public:
   /// Fraction of the normal velocity lost when a particle hits the Boundary mesh (0..1).
   void SetBoundaryDamping(double value) { this->SetParameter(this->Parameters.boundaryDamping, value); }
   double GetBoundaryDamping() const { return this->Parameters.boundaryDamping; }
+  /// δ-SPH and DFSPH: the Boundary mesh is also a wall in the density and pressure sums (on by
+  /// default); off, it only stops particles.
+  void SetBoundaryWall(bool value) { this->SetParameter(this->Parameters.meshWallDensity, value); }
+  bool GetBoundaryWall() const { return this->Parameters.meshWallDensity; }
   /// [m/s^2]
   void SetGravity(double x, double y, double z);
   /// The box the fluid stays in [m]; all zero = the input's domain_bounds field data.

@@ -1,5 +1,6 @@
 """SPH Step with a Boundary surface and the DFSPH solver, through real ParaView pipelines: water
-poured on a sphere never gets inside it; optional arrays appear only when asked; a Boundary without
+poured on a sphere never gets inside it; water resting on a mesh floor is at rest density with
+BoundaryWall and below it without; optional arrays appear only when asked; a Boundary without
 polygons is refused with a clear message; the WallFriction choices slow a collapsing column on the
 walls they are set for."""
 import numpy as np
@@ -34,6 +35,21 @@ pftest.check(10 <= np.median(counts) <= 40, "median neighbour count %g is implau
 sph.UpdatePropertyInformation()
 error = sph.GetPropertyValue("MeanDensityError")
 pftest.check(0.0 <= error < 0.005, "DFSPH mean density error %g" % error)
+
+# BoundaryWall (on by default): water resting on a mesh floor sits at rest density in its bottom
+# layer; with the mesh only stopping particles, that layer's cut neighbourhood sums to less.
+floor = Plane(Origin=[-0.1, -0.1, 0.1], Point1=[0.5, -0.1, 0.1], Point2=[-0.1, 0.2, 0.1])
+resting = ParticleBlock(Spacing=0.02, BlockBounds=[0, 0.4, 0, 0.1, 0.1, 0.22], DomainBounds=[0, 0.4, 0, 0.1, 0, 0.5])
+def bottom_density(wall):
+    step = SPHStep(Input=resting, Boundary=floor, PressureSolver="DFSPH", BoundaryWall=wall, OutputInterval=0.001,
+                   NumberOfOutputs=1)
+    data = pftest.fetch(step, step.TimestepValues[-1])
+    z = pftest.points(data)[:, 2]
+    return pftest.point_array(data, "density")[z < 0.12].mean()
+with_wall, without = bottom_density(1), bottom_density(0)
+print("bottom layer density on a mesh floor: %.1f with BoundaryWall, %.1f without" % (with_wall, without))
+pftest.check(abs(with_wall - 1000.0) < 10.0, "BoundaryWall on: bottom layer at %.1f kg/m^3" % with_wall)
+pftest.check(without < 950.0, "BoundaryWall off: bottom layer at %.1f kg/m^3" % without)
 
 # A surface without polygons cannot be a boundary.
 line = SPHStep(Input=block, Boundary=Line(), NumberOfOutputs=1)
