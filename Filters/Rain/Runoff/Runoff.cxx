@@ -60,7 +60,8 @@ Runoff::Runoff(const RainParameters& rain, const RunoffParameters& runoff, std::
   s.smoothingLength = static_cast<float>((delta ? 3.0 : 2.0) * d);
   // δ-SPH's terrain is not a wall in its sums here (SPH Step's δ-SPH over a mesh has it): under
   // the cloudburst of Runoff.BasinKeepsTheRainVolume δ-SPH with the wall blew up after 11 s at the
-  // default CFL number (without it, it ran the 30 s); DFSPH keeps it.
+  // default CFL number on one machine and ran the 30 s on another (rounding decides: marginal);
+  // without it, it ran the 30 s on both. DFSPH keeps it.
   if (delta)
   {
     s.meshWallDensity = false;

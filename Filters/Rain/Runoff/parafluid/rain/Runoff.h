@@ -37,9 +37,10 @@ struct RunoffParameters
 {
   /// The solver's settings; smoothingLength, particleMass, domainBounds, gravity and (when 0) the
   /// sound speed are derived from the spacing, the ground and the precipitation area. SPH Step's
-  /// default solver (δ-SPH: DFSPH, which slides thin films down slopes more freely, blows up
-  /// within seconds under a cloudburst on a terrain), and water that keeps none of its normal
-  /// velocity when it meets the ground (a drop's water spreads; it does not bounce as a ball).
+  /// default solver (δ-SPH; DFSPH, which slides thin films down slopes more freely and has the
+  /// terrain as a wall in its sums, took twice as long over the demo's cloudburst), and water that
+  /// keeps none of its normal velocity when it meets the ground (a drop's water spreads; it does
+  /// not bounce as a ball).
   sph::SPHParameters sph = runoffDefaults();
   static sph::SPHParameters runoffDefaults()
   {
