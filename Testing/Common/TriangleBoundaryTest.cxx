@@ -99,7 +99,7 @@ TEST(TriangleBoundary, GridIndexAgreesWithTestingEveryTriangle)
   EXPECT_GT(crossings, 200);
 }
 
-TEST(TriangleBoundary, NearestPointAgreesWithDenseSamplingOfEveryTriangle)
+TEST(TriangleBoundary, NearestPointAgreesWithDenseSamplingOfEveryTriangleWithAnyHint)
 {
   // A coarse wavy sheet with its edges and corners in reach: points near faces, edges, vertices and
   // beyond the border. The reference samples every triangle on a 200 x 200 barycentric lattice, so
@@ -146,6 +146,17 @@ TEST(TriangleBoundary, NearestPointAgreesWithDenseSamplingOfEveryTriangle)
       }
     }
     const double reference = std::sqrt(best);
+    // Any hint (a near triangle, a far one, none) gives the same answer: it only narrows the search.
+    for (std::uint32_t hint : { 0u, 13u, 31u, 1000u })
+    {
+      float hinted = -1.0f, hintedDirection[3];
+      std::uint32_t triangle = 0;
+      EXPECT_EQ(mesh.nearest(p, radius, hinted, hintedDirection, &triangle, hint), near) << "point " << k;
+      if (near)
+      {
+        EXPECT_NEAR(hinted, distance, 1e-6f) << "point " << k << " hint " << hint;
+      }
+    }
     if (reference < radius - 0.01)
     {
       ASSERT_TRUE(near) << "point " << k;

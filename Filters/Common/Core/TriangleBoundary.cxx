@@ -319,6 +319,43 @@ void nearestOnTriangle(const double p[3], const double a[3], const double b[3], 
 bool TriangleBoundary::nearest(const float p[3], float radius, float& distance, float direction[3],
                                std::uint32_t* triangle) const
 {
+  // A first look within one cell's size: a point nearer than that (a particle resting on the mesh)
+  // is the nearest of all, since any nearer point lies in the cells that look covered.
+  if (radius > this->CellSize && this->nearestWithin(p, this->CellSize, distance, direction, triangle))
+  {
+    return true;
+  }
+  return this->nearestWithin(p, radius, distance, direction, triangle);
+}
+
+bool TriangleBoundary::nearest(const float p[3], float radius, float& distance, float direction[3],
+                               std::uint32_t* triangle, std::uint32_t hint) const
+{
+  if (hint < this->triangleCount())
+  {
+    // The hint's distance bounds the nearest one's: only the cells that near need a look.
+    const float* v0 = &this->Points[3 * this->Triangles[3 * hint]];
+    const float* v1 = &this->Points[3 * this->Triangles[3 * hint + 1]];
+    const float* v2 = &this->Points[3 * this->Triangles[3 * hint + 2]];
+    const double q[3] = { p[0], p[1], p[2] }, a[3] = { v0[0], v0[1], v0[2] }, b[3] = { v1[0], v1[1], v1[2] },
+                 c[3] = { v2[0], v2[1], v2[2] };
+    double point[3];
+    nearestOnTriangle(q, a, b, c, point);
+    const double d = std::sqrt((q[0] - point[0]) * (q[0] - point[0]) + (q[1] - point[1]) * (q[1] - point[1]) +
+                               (q[2] - point[2]) * (q[2] - point[2]));
+    // A little wider than that distance, so rounding cannot drop the hint itself.
+    const auto bound = static_cast<float>(d * (1.0 + 1e-5) + 1e-6 * this->CellSize);
+    if (bound < radius && this->nearestWithin(p, bound, distance, direction, triangle))
+    {
+      return true;
+    }
+  }
+  return this->nearest(p, radius, distance, direction, triangle);
+}
+
+bool TriangleBoundary::nearestWithin(const float p[3], float radius, float& distance, float direction[3],
+                                     std::uint32_t* triangle) const
+{
   if (this->Triangles.empty() || !(radius > 0.0f))
   {
     return false;

@@ -518,6 +518,11 @@ void SPHSolver::sortByCell()
   }
   permute(s.id, this->ScratchId, order, threads);
   permute(s.originalIndex, this->ScratchIndex, order, threads);
+  if (this->Wall && this->Wall->contacts.triangle.size() == s.size())
+  {
+    // Each particle's last mesh triangle goes with it: the next search starts from it.
+    permute(this->Wall->contacts.triangle, this->ScratchIndex, order, threads);
+  }
   this->findMeshWalls();
   // Densities and pressures are recomputed from the sorted positions next.
 }
@@ -533,6 +538,8 @@ void SPHSolver::findMeshWalls()
   const auto n = static_cast<std::int64_t>(s.size());
   c.distance.resize(s.size());
   c.normal.resize(3 * s.size());
+  // No hint for particles new since the last search (added ones, or the first search).
+  c.triangle.resize(s.size(), std::numeric_limits<std::uint32_t>::max());
   const float reach = this->Wall->table.reach();
   const TriangleBoundary& mesh = *this->Boundary;
 #pragma omp parallel for schedule(dynamic, 512) num_threads(threadCount(this->Parameters))
@@ -541,11 +548,11 @@ void SPHSolver::findMeshWalls()
     const float p[3] = { s.x[i], s.y[i], s.z[i] };
     float distance = reach;
     float* normal = &c.normal[3 * i];
-    std::uint32_t triangle = 0;
+    std::uint32_t triangle = c.triangle[i];
     // The fluid's side of a mesh is the one its faces' normals point to (a terrain's top, an
     // obstacle's outside). A particle behind it (on a container's mesh that faces out, or pushed
     // through) gets no wall: the wall would push it further in.
-    bool near = mesh.nearest(p, reach, distance, normal, &triangle);
+    bool near = mesh.nearest(p, reach, distance, normal, &triangle, triangle);
     if (near)
     {
       const float* face = mesh.faceNormal(triangle);
@@ -557,6 +564,7 @@ void SPHSolver::findMeshWalls()
       normal[0] = normal[1] = normal[2] = 0.0f;
     }
     c.distance[i] = distance;
+    c.triangle[i] = triangle;
   }
 }
 

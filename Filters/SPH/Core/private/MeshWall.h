@@ -16,6 +16,7 @@
 // mesh would leave unbalanced.
 #include "parafluid/sph/SPHParameters.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace parafluid::sph::detail
@@ -49,7 +50,8 @@ private:
 struct MeshWallContacts
 {
   std::vector<float> distance;
-  std::vector<float> normal; // x, y, z per particle
+  std::vector<float> normal;           // x, y, z per particle
+  std::vector<std::uint32_t> triangle; // the mesh triangle it was found on (a hint for the next search)
 };
 
 /// The table of a run and the contacts of the current positions (SPHSolver::findMeshWalls).

@@ -44,6 +44,10 @@ public:
   /// asked, the triangle it lies on. A particle's wall in the SPH's sums.
   bool nearest(const float p[3], float radius, float& distance, float direction[3],
                std::uint32_t* triangle = nullptr) const;
+  /// The same, told a triangle that is probably near (the last one found for a particle that has
+  /// moved a little): the search then covers only what lies as near as that triangle does.
+  bool nearest(const float p[3], float radius, float& distance, float direction[3], std::uint32_t* triangle,
+               std::uint32_t hint) const;
 
   std::size_t triangleCount() const { return this->Triangles.size() / 3; }
   const float* bounds() const { return this->Bounds; }
@@ -56,6 +60,9 @@ private:
   void buildGrid();
   void triangleBox(std::size_t t, float lo[3], float hi[3]) const;
   bool cellRange(const float lo[3], const float hi[3], int first[3], int last[3]) const;
+  /// nearest() among the triangles of the cells within `radius` of p.
+  bool nearestWithin(const float p[3], float radius, float& distance, float direction[3],
+                     std::uint32_t* triangle) const;
   /// Calls f(triangle) for each triangle listed in the cells first..last (once per cell it is in).
   template<class F>
   void forEachTriangleIn(const int first[3], const int last[3], F&& f) const;
