@@ -7,5 +7,8 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${PARAFLUID_BUILD_DIR:-$root/build}"
 bash "$root/scripts/build.sh"
 cd "$build"
+# Tests run side by side, each with its OpenMP threads: waiting threads sleep instead of spinning
+# on cores the other tests need.
+export OMP_WAIT_POLICY="${OMP_WAIT_POLICY:-PASSIVE}"
 ctest --output-on-failure --parallel "$(nproc)" "$@"
 bash "$root/scripts/sanitize.sh"
