@@ -316,6 +316,17 @@ void nearestOnTriangle(const double p[3], const double a[3], const double b[3], 
 }
 } // namespace
 
+double TriangleBoundary::squaredDistanceTo(std::uint32_t t, const double q[3], double point[3]) const
+{
+  const float* v0 = &this->Points[3 * this->Triangles[3 * t]];
+  const float* v1 = &this->Points[3 * this->Triangles[3 * t + 1]];
+  const float* v2 = &this->Points[3 * this->Triangles[3 * t + 2]];
+  const double a[3] = { v0[0], v0[1], v0[2] }, b[3] = { v1[0], v1[1], v1[2] }, c[3] = { v2[0], v2[1], v2[2] };
+  nearestOnTriangle(q, a, b, c, point);
+  return (q[0] - point[0]) * (q[0] - point[0]) + (q[1] - point[1]) * (q[1] - point[1]) +
+         (q[2] - point[2]) * (q[2] - point[2]);
+}
+
 bool TriangleBoundary::nearest(const float p[3], float radius, float& distance, float direction[3],
                                std::uint32_t* triangle) const
 {
@@ -334,15 +345,9 @@ bool TriangleBoundary::nearest(const float p[3], float radius, float& distance, 
   if (hint < this->triangleCount())
   {
     // The hint's distance bounds the nearest one's: only the cells that near need a look.
-    const float* v0 = &this->Points[3 * this->Triangles[3 * hint]];
-    const float* v1 = &this->Points[3 * this->Triangles[3 * hint + 1]];
-    const float* v2 = &this->Points[3 * this->Triangles[3 * hint + 2]];
-    const double q[3] = { p[0], p[1], p[2] }, a[3] = { v0[0], v0[1], v0[2] }, b[3] = { v1[0], v1[1], v1[2] },
-                 c[3] = { v2[0], v2[1], v2[2] };
+    const double q[3] = { p[0], p[1], p[2] };
     double point[3];
-    nearestOnTriangle(q, a, b, c, point);
-    const double d = std::sqrt((q[0] - point[0]) * (q[0] - point[0]) + (q[1] - point[1]) * (q[1] - point[1]) +
-                               (q[2] - point[2]) * (q[2] - point[2]));
+    const double d = std::sqrt(this->squaredDistanceTo(hint, q, point));
     // A little wider than that distance, so rounding cannot drop the hint itself.
     const auto bound = static_cast<float>(d * (1.0 + 1e-5) + 1e-6 * this->CellSize);
     if (bound < radius && this->nearestWithin(p, bound, distance, direction, triangle))
@@ -372,33 +377,27 @@ bool TriangleBoundary::nearestWithin(const float p[3], float radius, float& dist
   bool found = false;
   double closest[3] = { 0.0, 0.0, 0.0 };
   std::uint32_t bestTriangle = 0;
-  this->forEachTriangleIn(
-    first, last,
-    [&](std::uint32_t t)
-    {
-      const float* v0 = &this->Points[3 * this->Triangles[3 * t]];
-      const float* n = this->faceNormal(t);
-      // The plane's distance bounds the triangle's from below: most triangles end here.
-      const double plane = n[0] * (q[0] - v0[0]) + n[1] * (q[1] - v0[1]) + n[2] * (q[2] - v0[2]);
-      if (plane * plane >= best)
-      {
-        return;
-      }
-      const float* v1 = &this->Points[3 * this->Triangles[3 * t + 1]];
-      const float* v2 = &this->Points[3 * this->Triangles[3 * t + 2]];
-      const double a[3] = { v0[0], v0[1], v0[2] }, b[3] = { v1[0], v1[1], v1[2] }, cc[3] = { v2[0], v2[1], v2[2] };
-      double point[3];
-      nearestOnTriangle(q, a, b, cc, point);
-      const double d2 = (q[0] - point[0]) * (q[0] - point[0]) + (q[1] - point[1]) * (q[1] - point[1]) +
-                        (q[2] - point[2]) * (q[2] - point[2]);
-      if (d2 < best)
-      {
-        best = d2;
-        found = true;
-        bestTriangle = t;
-        std::copy(point, point + 3, closest);
-      }
-    });
+  this->forEachTriangleIn(first, last,
+                          [&](std::uint32_t t)
+                          {
+                            const float* v0 = &this->Points[3 * this->Triangles[3 * t]];
+                            const float* n = this->faceNormal(t);
+                            // The plane's distance bounds the triangle's from below: most triangles end here.
+                            const double plane = n[0] * (q[0] - v0[0]) + n[1] * (q[1] - v0[1]) + n[2] * (q[2] - v0[2]);
+                            if (plane * plane >= best)
+                            {
+                              return;
+                            }
+                            double point[3];
+                            const double d2 = this->squaredDistanceTo(t, q, point);
+                            if (d2 < best)
+                            {
+                              best = d2;
+                              found = true;
+                              bestTriangle = t;
+                              std::copy(point, point + 3, closest);
+                            }
+                          });
   if (!found)
   {
     return false;

@@ -514,17 +514,12 @@ void DeltaSPHSolver::shiftParticles(SPHSolver& sim, float dt)
   const float inverseWSpacing = 1.0f / w.value(std::min(sim.ParticleSpacing, 0.99f * p.smoothingLength));
   const float limit = 0.2f * sim.ParticleSpacing;
   const auto count = static_cast<std::int64_t>(n);
-  float fastest2 = 0.0f;
-#pragma omp parallel for schedule(static) reduction(max : fastest2) num_threads(threadCount(p))
-  for (std::int64_t i = 0; i < count; ++i)
-  {
-    fastest2 = std::max(fastest2, s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
-  }
-  if (fastest2 == 0.0f)
+  const auto fastest = static_cast<float>(sim.largestLength(s.vx, s.vy, s.vz));
+  if (fastest == 0.0f)
   {
     return;
   }
-  const float diffusion = 2.0f * p.smoothingLength * std::sqrt(fastest2) * dt * volume;
+  const float diffusion = 2.0f * p.smoothingLength * fastest * dt * volume;
   forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p), {},
                         [&](CandidateBuffer& c, std::uint32_t i)
                         {

@@ -60,6 +60,8 @@ private:
   void buildGrid();
   void triangleBox(std::size_t t, float lo[3], float hi[3]) const;
   bool cellRange(const float lo[3], const float hi[3], int first[3], int last[3]) const;
+  /// |q - point|^2, point the nearest point of triangle t to q.
+  double squaredDistanceTo(std::uint32_t t, const double q[3], double point[3]) const;
   /// nearest() among the triangles of the cells within `radius` of p.
   bool nearestWithin(const float p[3], float radius, float& distance, float direction[3],
                      std::uint32_t* triangle) const;
