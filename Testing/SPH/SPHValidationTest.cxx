@@ -39,10 +39,13 @@ TEST(SPHValidation, DeltaSPHStillWaterStaysStillAndHydrostatic)
   const StillWater r = stillWater(PressureSolverType::DeltaSPH, 10, 10.0);
   std::printf("still water: largest speed %.2e sqrt(gH), pressure error %.4f, drift %.3f spacings\n", r.largestSpeed,
               r.pressureError, r.highestDrift);
-  EXPECT_LT(r.largestSpeed, 0.01);
+  // Before a wall's push on a particle by its own image grew all the way to the wall, a floor
+  // particle sank onto the floor after about a second (closest 0.00 spacings) and set the tank
+  // moving at 2.6-3.9e-3 sqrt(gH); since, 1.2-1.9e-3 (the target of issue 21, 1e-3, is not met).
+  EXPECT_LT(r.largestSpeed, 0.003);
   EXPECT_LT(r.pressureError, 0.05);
   EXPECT_LT(r.highestDrift, 1.0);
-  EXPECT_GT(r.closestToWall, 0.0);
+  EXPECT_GT(r.closestToWall, 0.3);
 }
 
 TEST(SPHValidation, DeltaSPHDamBreakAgainstMartinAndMoyce)
@@ -61,6 +64,10 @@ TEST(SPHValidation, DeltaSPHImpactOnTheWallArrivesWhenLobovskysDid)
               r.peakPressure, r.peakTime, 2.843);
   EXPECT_LT(r.frontError, 0.02);
   EXPECT_LT(r.peakTimeError, 0.05);
+  // The first peak is the artificial sound speed's water hammer, several times the experiment's
+  // 2.84 (issue 21's 20 % is not met); with the front's particles running into their own soft
+  // wall images it was 49, with the own image's push growing towards the wall it is about 26.
+  EXPECT_LT(r.peakPressure, 30.0);
 }
 
 TEST(SPHValidation, StandingWaveFrequency)

@@ -50,6 +50,13 @@ struct Constants
   // for Wendland C2 at h = 2 spacings); pressure forces are divided by C so that a resting column
   // carries exactly its weight (see latticeGradientCorrection).
   float pressureCorrection;
+  // The pair of a particle and its own wall image (see ownImageGradient): dW/dr at the rest
+  // distance of a first layer from its image, one spacing, and that distance.
+  float ownImageSlope, ownImageRest;
+  // Whether the spiky profile is the stiffer at the rest distance: (H - r)^2 falls off faster than
+  // Wendland's q (1 - q)^3 exactly where q = rest / H < 1/2, that is for supports over 2 spacings
+  // (at 2 both stiffen alike there, and the plain kernel is kept).
+  bool ownImageStiffened;
 };
 
 struct Sums
@@ -72,6 +79,64 @@ struct WendlandPair
     value = w.coefficient * d3 * d * (1.0f + 4.0f * q);
   }
 };
+
+/// A wall holds a particle off by the pair of the particle and its own image, 2 z apart at distance z
+/// from the wall. Wendland C2's |dW/dr| peaks at a quarter of the support H, so at H = 3 spacings a
+/// first layer (image one spacing away) sits just outside the peak: the push stiffens little as
+/// the particle nears the wall, and goes soft inside 0.375 spacings. Under a resting column a floor
+/// particle then sank at constant density, its neighbours rising, and fell onto the floor after
+/// about a second, setting still water moving (Testing/Benchmarks/README.md, "Still water: the
+/// floor layer"). For that pair alone (in continuity and momentum alike, so the pressure's work
+/// still matches the density's change) |dW/dr| takes the spiky kernel's profile (H − r)² down to
+/// Wendland's peak (Desbrun & Gascuel 1996: a push that grows as particles close in), scaled to
+/// equal Wendland's at one spacing, so a lattice at rest feels no difference; below the peak it
+/// stays at its value there (Thomas & Couchman 1992), because a push growing to zero distance
+/// blew up rain drops arriving at several m/s onto the floor. Only for supports over 2 spacings
+/// (see ownImageStiffened). Returns (dW/dr) / r.
+float ownImageGradient(const Constants& k, float r)
+{
+  if (!(r > 0.0f) || r >= k.w.h)
+  {
+    return 0.0f;
+  }
+  // Flat from the peak in, or from the rest distance where a wide kernel puts that inside the peak.
+  const float flat = std::min(0.25f * k.w.h, k.ownImageRest);
+  const float shape = (k.w.h - std::max(r, flat)) / (k.w.h - k.ownImageRest);
+  return k.ownImageSlope * shape * shape / r;
+}
+
+/// The momentum factor F of a pair (a_i += m F grad W_ij): pressure, tensile correction, artificial
+/// and laminar viscosity. x_ij = (dx, dy, dz), |x_ij|^2 = rr, value = W_ij; particle i's query
+/// position and velocity q, vq, its density, 1 / density and p_i / rho_i^2 with its tensile part;
+/// j's velocity, density and pressure. `t` turns the laminar term's relative velocity into that of
+/// a no-slip wall image.
+template<bool Laminar>
+__attribute__((always_inline)) inline float momentumFactor(float dx, float dy, float dz, float rr, float value,
+                                                           const float* vq, float vxj, float vyj, float vzj, float rhoI,
+                                                           float termI, float tensileI, float rhoJ, float pJ,
+                                                           const float* t, const Constants& k)
+{
+  const float approach = (vq[0] - vxj) * dx + (vq[1] - vyj) * dy + (vq[2] - vzj) * dz; // v_ij . x_ij
+  const float inverseRhoJ = 1.0f / rhoJ;
+  const float termJ = pJ * inverseRhoJ * inverseRhoJ;
+  const float tensileJ = pJ < 0.0f ? -kTensileCoefficient * termJ : 0.0f;
+  // Capped at 1: Wendland C2 at h = 2 spacings is so peaked that W(0) / W(spacing) = 5.3, and
+  // the uncapped f^4 (800) blows a stretched pair apart instead of holding it at a spacing.
+  const float ratio = value * k.inverseWSpacing;
+  const float f = ratio < 1.0f ? ratio : 1.0f;
+  const float f2 = f * f;
+  const float inverseR2 = 1.0f / (rr + k.eta2);
+  // Monaghan's viscosity acts on approaching pairs only.
+  const float mu = (approach < 0.0f ? approach : 0.0f) * k.hSmooth * inverseR2;
+  const float artificial = -k.alpha * k.c0 * mu * 2.0f / (rhoI + rhoJ);
+  float scalar = -(k.pressureCorrection * (termI + termJ) + (tensileI + tensileJ) * f2 * f2 + artificial);
+  if constexpr (Laminar)
+  {
+    const float laminarApproach = (vq[0] - t[0] * vxj) * dx + (vq[1] - t[1] * vyj) * dy + (vq[2] - t[2] * vzj) * dz;
+    scalar += k.nu10 * inverseRhoJ * laminarApproach * inverseR2;
+  }
+  return scalar;
+}
 
 /// The candidates within the kernel's support (their buffer positions `hits`) and the buffer's
 /// arrays, as raw pointers: the pair loops below are compiled as AVX-512, AVX2 and baseline copies
@@ -122,27 +187,9 @@ __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, c
     const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
     const float rr = r2[j];
     const WendlandPair w(k.w, __builtin_sqrtf(rr));
-    const float approach = (vq[0] - vx[j]) * dx + (vq[1] - vy[j]) * dy + (vq[2] - vz[j]) * dz; // v_ij . x_ij
-    const float inverseRhoJ = 1.0f / rho[j];
-    const float termJ = pressure[j] * inverseRhoJ * inverseRhoJ;
-    const float tensileJ = pressure[j] < 0.0f ? -kTensileCoefficient * termJ : 0.0f;
-    // Capped at 1: Wendland C2 at h = 2 spacings is so peaked that W(0) / W(spacing) = 5.3, and
-    // the uncapped f^4 (800) blows a stretched pair apart instead of holding it at a spacing.
-    const float ratio = w.value * k.inverseWSpacing;
-    const float f = ratio < 1.0f ? ratio : 1.0f;
-    const float f2 = f * f;
-    const float inverseR2 = 1.0f / (rr + k.eta2);
-    // Monaghan's viscosity acts on approaching pairs only.
-    const float mu = (approach < 0.0f ? approach : 0.0f) * k.hSmooth * inverseR2;
-    const float artificial = -k.alpha * k.c0 * mu * 2.0f / (rhoI + rho[j]);
-    float scalar = -(k.pressureCorrection * (termI + termJ) + (tensileI + tensileJ) * f2 * f2 + artificial);
-    if constexpr (Laminar)
-    {
-      const float laminarApproach =
-        (vq[0] - t[0] * vx[j]) * dx + (vq[1] - t[1] * vy[j]) * dy + (vq[2] - t[2] * vz[j]) * dz;
-      scalar += k.nu10 * inverseRhoJ * laminarApproach * inverseR2;
-    }
-    scalar *= k.mass * w.gradient;
+    const float scalar = momentumFactor<Laminar>(dx, dy, dz, rr, w.value, vq, vx[j], vy[j], vz[j], rhoI, termI,
+                                                 tensileI, rho[j], pressure[j], t, k) *
+                         k.mass * w.gradient;
     ax += scalar * dx;
     ay += scalar * dy;
     az += scalar * dz;
@@ -219,6 +266,35 @@ float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float
   return rate;
 }
 
+/// Particle i (at x with velocity v, density rho, pressure p) against its own image (at q with
+/// velocity vq): the pair's gradient changed from the kernel's to ownImageGradient. Adds the
+/// change of the image's momentum sum to `a` (before the image's mapping back) and returns the
+/// change of its continuity sum.
+template<bool Laminar>
+float ownImageCorrection(const float* q, const float* vq, const float* t, const float* x, const float* v, float rho,
+                         float p, const Constants& k, float* a)
+{
+  const float dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
+  const float rr = dx * dx + dy * dy + dz * dz;
+  const float r = std::sqrt(rr);
+  if (!k.ownImageStiffened || !(r > 0.0f) || r >= k.w.h)
+  {
+    return 0.0f;
+  }
+  const WendlandPair w(k.w, r);
+  const float change = ownImageGradient(k, r) - w.gradient;
+  const float term = p / (rho * rho);
+  const float tensile = p < 0.0f ? -kTensileCoefficient * term : 0.0f;
+  const float scalar =
+    momentumFactor<Laminar>(dx, dy, dz, rr, w.value, vq, v[0], v[1], v[2], rho, term, tensile, rho, p, t, k) * k.mass *
+    change;
+  a[0] += scalar * dx;
+  a[1] += scalar * dy;
+  a[2] += scalar * dz;
+  const float approach = (vq[0] - v[0]) * dx + (vq[1] - v[1]) * dy + (vq[2] - v[2]) * dz;
+  return k.mass * approach * change;
+}
+
 template<bool Laminar>
 void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const Constants& k,
                const detail::MeshWall* wall)
@@ -230,16 +306,21 @@ void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters&
                           const float position[3] = { s.x[i], s.y[i], s.z[i] };
                           const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
                           float a[3] = { p.gravity[0], p.gravity[1], p.gravity[2] };
-                          forEachWallImage(position, velocity, p,
-                                           [&](const float* q, const float* v, const float* t, const float* scale, bool)
-                                           {
-                                             const Sums g =
-                                               forceTerms<Laminar>(c, q, v, s.density[i], s.pressure[i], t, k);
-                                             for (int d = 0; d < 3; ++d)
-                                             {
-                                               a[d] += scale[d] * g.a[d];
-                                             }
-                                           });
+                          forEachWallImage(
+                            position, velocity, p,
+                            [&](const float* q, const float* v, const float* t, const float* scale, bool image)
+                            {
+                              Sums g = forceTerms<Laminar>(c, q, v, s.density[i], s.pressure[i], t, k);
+                              if (image)
+                              {
+                                ownImageCorrection<Laminar>(q, v, t, position, velocity, s.density[i], s.pressure[i], k,
+                                                            g.a);
+                              }
+                              for (int d = 0; d < 3; ++d)
+                              {
+                                a[d] += scale[d] * g.a[d];
+                              }
+                            });
                           detail::MeshWallTable::Weight weight;
                           const float* normal = nullptr;
                           if (wall && wall->of(i, weight, normal))
@@ -426,7 +507,10 @@ Constants constants(const SPHParameters& p, double soundSpeed, float spacing, fl
                       p.periodic[2] ? 0.0f : p.gravity[2] },
                     1.0f / w.value(std::min(spacing, 0.99f * p.smoothingLength)),
                     w,
-                    pressureCorrection };
+                    pressureCorrection,
+                    w.radialDerivative(std::min(spacing, 0.99f * p.smoothingLength)),
+                    std::min(spacing, 0.99f * p.smoothingLength),
+                    spacing < 0.5f * p.smoothingLength };
 }
 } // namespace
 
@@ -460,8 +544,16 @@ void DeltaSPHSolver::advanceDensity(SPHSolver& sim, float dt)
                           const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
                           float rate = 0.0f;
                           forEachWallImage(position, velocity, p,
-                                           [&](const float* q, const float* v, const float*, const float*, bool image)
-                                           { rate += densityRate(c, q, v, s.density[i], !image, k); });
+                                           [&](const float* q, const float* v, const float* t, const float*, bool image)
+                                           {
+                                             rate += densityRate(c, q, v, s.density[i], !image, k);
+                                             if (image)
+                                             {
+                                               float unused[3] = { 0.0f, 0.0f, 0.0f };
+                                               rate += ownImageCorrection<false>(
+                                                 q, v, t, position, velocity, s.density[i], s.pressure[i], k, unused);
+                                             }
+                                           });
                           this->DensityRate[i] = rate;
                         });
   // Written after the pass: the pass reads every neighbour's density of this step.
