@@ -191,7 +191,7 @@ __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, c
     const WendlandPair w(k.w, __builtin_sqrtf(rr));
     const float scalar = momentumFactor<Laminar>(dx, dy, dz, rr, w.value, vq, vx[j], vy[j], vz[j], rhoI, termI,
                                                  tensileI, rho[j], pressure[j], t, k) *
-                         k.mass * w.gradient;
+                         (k.mass * w.gradient); // the product first, as before the factor was shared
     ax += scalar * dx;
     ay += scalar * dy;
     az += scalar * dz;
