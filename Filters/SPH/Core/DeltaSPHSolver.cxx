@@ -268,32 +268,57 @@ float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float
   return rate;
 }
 
-/// Particle i (at x with velocity v, density rho, pressure p) against its own image (at q with
-/// velocity vq): the pair's gradient changed from the kernel's to ownImageGradient. Adds the
-/// change of the image's momentum sum to `a` (before the image's mapping back) and returns the
-/// change of its continuity sum.
-template<bool Laminar>
-float ownImageCorrection(const float* q, const float* vq, const float* t, const float* x, const float* v, float rho,
-                         float p, const Constants& k, float* a)
+/// How much the pair of particle i (at x) and its own image (at q) changes its gradient, from the
+/// kernel's to ownImageGradient; 0 where it does not. r is |q - x|.
+float ownImageChange(const float* q, const float* x, const Constants& k, float& r)
 {
-  const float dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
-  const float rr = dx * dx + dy * dy + dz * dz;
-  const float r = std::sqrt(rr);
-  if (!k.ownImageStiffened || !(r > 0.0f) || r >= k.w.h)
+  if (!k.ownImageStiffened)
   {
     return 0.0f;
   }
-  const WendlandPair w(k.w, r);
-  const float change = ownImageGradient(k, r) - w.gradient;
+  r = std::sqrt((q[0] - x[0]) * (q[0] - x[0]) + (q[1] - x[1]) * (q[1] - x[1]) + (q[2] - x[2]) * (q[2] - x[2]));
+  if (!(r > 0.0f) || r >= k.w.h)
+  {
+    return 0.0f;
+  }
+  return ownImageGradient(k, r) - WendlandPair(k.w, r).gradient;
+}
+
+/// Adds to `a` (before the image's mapping back) the change of the momentum sum of particle i (at x
+/// with velocity v, density rho, pressure p) against its own image (at q with velocity vq) when
+/// that pair takes ownImageGradient.
+template<bool Laminar>
+void addOwnImageForce(const float* q, const float* vq, const float* t, const float* x, const float* v, float rho,
+                      float p, const Constants& k, float* a)
+{
+  float r = 0.0f;
+  const float change = ownImageChange(q, x, k, r);
+  if (change == 0.0f)
+  {
+    return;
+  }
+  const float dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
   const float term = p / (rho * rho);
   const float tensile = p < 0.0f ? -kTensileCoefficient * term : 0.0f;
-  const float scalar =
-    momentumFactor<Laminar>(dx, dy, dz, rr, w.value, vq, v[0], v[1], v[2], rho, term, tensile, rho, p, t, k) * k.mass *
-    change;
+  const float scalar = momentumFactor<Laminar>(dx, dy, dz, dx * dx + dy * dy + dz * dz, WendlandPair(k.w, r).value, vq,
+                                               v[0], v[1], v[2], rho, term, tensile, rho, p, t, k) *
+                       k.mass * change;
   a[0] += scalar * dx;
   a[1] += scalar * dy;
   a[2] += scalar * dz;
-  const float approach = (vq[0] - v[0]) * dx + (vq[1] - v[1]) * dy + (vq[2] - v[2]) * dz;
+}
+
+/// The same change of particle i's continuity sum.
+float ownImageDensityRate(const float* q, const float* vq, const float* x, const float* v, const Constants& k)
+{
+  float r = 0.0f;
+  const float change = ownImageChange(q, x, k, r);
+  if (change == 0.0f)
+  {
+    return 0.0f;
+  }
+  const float approach =
+    (vq[0] - v[0]) * (q[0] - x[0]) + (vq[1] - v[1]) * (q[1] - x[1]) + (vq[2] - v[2]) * (q[2] - x[2]);
   return k.mass * approach * change;
 }
 
@@ -301,47 +326,46 @@ template<bool Laminar>
 void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const Constants& k,
                const detail::MeshWall* wall)
 {
-  forEachParticleByCell(grid, s, p.smoothingLength, threadCount(p),
-                        { s.vx.data(), s.vy.data(), s.vz.data(), s.density.data(), s.pressure.data() },
-                        [&](CandidateBuffer& c, std::uint32_t i)
-                        {
-                          const float position[3] = { s.x[i], s.y[i], s.z[i] };
-                          const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
-                          float a[3] = { p.gravity[0], p.gravity[1], p.gravity[2] };
-                          forEachWallImage(
-                            position, velocity, p,
-                            [&](const float* q, const float* v, const float* t, const float* scale, bool image)
-                            {
-                              Sums g = forceTerms<Laminar>(c, q, v, s.density[i], s.pressure[i], t, k);
-                              if (image)
-                              {
-                                ownImageCorrection<Laminar>(q, v, t, position, velocity, s.density[i], s.pressure[i], k,
-                                                            g.a);
-                              }
-                              for (int d = 0; d < 3; ++d)
-                              {
-                                a[d] += scale[d] * g.a[d];
-                              }
-                            });
-                          detail::MeshWallTable::Weight weight;
-                          const float* normal = nullptr;
-                          if (wall && wall->of(i, weight, normal))
-                          {
-                            // The mesh's lattice is the particle's mirror image: p_b = p_i, negative
-                            // too (a wall that only pushed would take in energy wherever the water
-                            // is in tension, as a film spreading over a terrain is).
-                            const float rho = s.density[i];
-                            const float term = s.pressure[i] / (rho * rho);
-                            const float scalar = -2.0f * k.pressureCorrection * term * k.mass * weight.slope;
-                            for (int d = 0; d < 3; ++d)
-                            {
-                              a[d] += scalar * normal[d];
-                            }
-                          }
-                          s.ax[i] = a[0];
-                          s.ay[i] = a[1];
-                          s.az[i] = a[2];
-                        });
+  forEachParticleByCell(
+    grid, s, p.smoothingLength, threadCount(p),
+    { s.vx.data(), s.vy.data(), s.vz.data(), s.density.data(), s.pressure.data() },
+    [&](CandidateBuffer& c, std::uint32_t i)
+    {
+      const float position[3] = { s.x[i], s.y[i], s.z[i] };
+      const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
+      float a[3] = { p.gravity[0], p.gravity[1], p.gravity[2] };
+      forEachWallImage(position, velocity, p,
+                       [&](const float* q, const float* v, const float* t, const float* scale, bool image)
+                       {
+                         Sums g = forceTerms<Laminar>(c, q, v, s.density[i], s.pressure[i], t, k);
+                         if (image)
+                         {
+                           addOwnImageForce<Laminar>(q, v, t, position, velocity, s.density[i], s.pressure[i], k, g.a);
+                         }
+                         for (int d = 0; d < 3; ++d)
+                         {
+                           a[d] += scale[d] * g.a[d];
+                         }
+                       });
+      detail::MeshWallTable::Weight weight;
+      const float* normal = nullptr;
+      if (wall && wall->of(i, weight, normal))
+      {
+        // The mesh's lattice is the particle's mirror image: p_b = p_i, negative
+        // too (a wall that only pushed would take in energy wherever the water
+        // is in tension, as a film spreading over a terrain is).
+        const float rho = s.density[i];
+        const float term = s.pressure[i] / (rho * rho);
+        const float scalar = -2.0f * k.pressureCorrection * term * k.mass * weight.slope;
+        for (int d = 0; d < 3; ++d)
+        {
+          a[d] += scalar * normal[d];
+        }
+      }
+      s.ax[i] = a[0];
+      s.ay[i] = a[1];
+      s.az[i] = a[2];
+    });
 }
 } // namespace
 
@@ -493,6 +517,7 @@ Constants constants(const SPHParameters& p, double soundSpeed, float spacing, fl
                     float pressureCorrection)
 {
   const WendlandC2Kernel w(p.smoothingLength);
+  const float restSpacing = std::min(spacing, 0.99f * p.smoothingLength); // inside the support
   return Constants{ w.h2,
                     0.5f * p.smoothingLength,
                     0.01f * 0.25f * w.h2,
@@ -507,11 +532,11 @@ Constants constants(const SPHParameters& p, double soundSpeed, float spacing, fl
                     // Gravity along a periodic axis drives a flow and builds no hydrostatic pressure.
                     { p.periodic[0] ? 0.0f : p.gravity[0], p.periodic[1] ? 0.0f : p.gravity[1],
                       p.periodic[2] ? 0.0f : p.gravity[2] },
-                    1.0f / w.value(std::min(spacing, 0.99f * p.smoothingLength)),
+                    1.0f / w.value(restSpacing),
                     w,
                     pressureCorrection,
-                    w.radialDerivative(std::min(spacing, 0.99f * p.smoothingLength)),
-                    std::min(spacing, 0.99f * p.smoothingLength),
+                    w.radialDerivative(restSpacing),
+                    restSpacing,
                     spacing < 0.45f * p.smoothingLength };
 }
 } // namespace
@@ -546,14 +571,12 @@ void DeltaSPHSolver::advanceDensity(SPHSolver& sim, float dt)
                           const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
                           float rate = 0.0f;
                           forEachWallImage(position, velocity, p,
-                                           [&](const float* q, const float* v, const float* t, const float*, bool image)
+                                           [&](const float* q, const float* v, const float*, const float*, bool image)
                                            {
                                              rate += densityRate(c, q, v, s.density[i], !image, k);
                                              if (image)
                                              {
-                                               float unused[3] = { 0.0f, 0.0f, 0.0f };
-                                               rate += ownImageCorrection<false>(
-                                                 q, v, t, position, velocity, s.density[i], s.pressure[i], k, unused);
+                                               rate += ownImageDensityRate(q, v, position, velocity, k);
                                              }
                                            });
                           this->DensityRate[i] = rate;
