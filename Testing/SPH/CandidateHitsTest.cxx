@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -25,7 +26,7 @@ TEST(CandidateHits, SameDistancesAndHitsInOrderAsAPlainLoop)
       z[j] = coordinate(random);
     }
     std::vector<float> r2(size, -1.0f);
-    std::vector<std::uint32_t> hits(size + 1, 0xFFFFFFFFu);
+    std::vector<std::uint32_t> hits(size + 16, 0xFFFFFFFFu);
     const std::uint32_t count =
       parafluid::sph::detail::findHitsKernel(x.data(), y.data(), z.data(), size, q, h2, r2.data(), hits.data());
     std::vector<std::uint32_t> expected;
@@ -48,6 +49,66 @@ TEST(CandidateHits, SameDistancesAndHitsInOrderAsAPlainLoop)
     {
       EXPECT_GT(count, size / 20) << "the test should have hits";
       EXPECT_LT(count, size / 4) << "and misses";
+    }
+  }
+}
+
+// The copy of a cell's candidates against a plain loop, on every compiled copy: the same particles
+// (those closer to the cell's box than the reach), shifted, in the same order, with their channels.
+TEST(CandidateHits, CopyKeepsTheParticlesNearTheBoxInOrder)
+{
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> coordinate(-1.0f, 2.0f);
+  const float lo[3] = { 0.0f, 0.0f, 0.0f }, hi[3] = { 1.0f, 1.0f, 1.0f };
+  const float shift[3] = { 0.5f, 0.0f, -0.25f };
+  const float reach2 = 0.3f * 0.3f;
+  for (std::uint32_t count : { 0u, 1u, 15u, 16u, 17u, 40u, 1003u })
+  {
+    std::vector<float> px(count), py(count), pz(count), a(count), b(count);
+    for (std::uint32_t j = 0; j < count; ++j)
+    {
+      px[j] = coordinate(random);
+      py[j] = coordinate(random);
+      pz[j] = coordinate(random);
+      a[j] = static_cast<float>(j);
+      b[j] = -static_cast<float>(j);
+    }
+    // Appended after 3 values already there, from particle 2 on.
+    const std::uint32_t first = count > 2 ? 2 : 0, before = 3;
+    std::vector<float> x(before + count + 16, -7.0f), y = x, z = x, ca = x, cb = x;
+    const float* sources[2] = { a.data(), b.data() };
+    float* channels[2] = { ca.data(), cb.data() };
+    const std::uint32_t size =
+      parafluid::sph::detail::appendNearBoxKernel(px.data(), py.data(), pz.data(), first, count, shift, lo, hi, reach2,
+                                                  sources, 2, x.data(), y.data(), z.data(), channels, before);
+    std::uint32_t expected = before;
+    for (std::uint32_t j = first; j < count; ++j)
+    {
+      const float p[3] = { px[j] + shift[0], py[j] + shift[1], pz[j] + shift[2] };
+      float d2 = 0.0f;
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        const float d = std::max({ lo[axis] - p[axis], 0.0f, p[axis] - hi[axis] });
+        d2 += d * d;
+      }
+      if (d2 >= reach2)
+      {
+        continue;
+      }
+      ASSERT_LT(expected, size) << "count " << count;
+      EXPECT_EQ(x[expected], p[0]);
+      EXPECT_EQ(y[expected], p[1]);
+      EXPECT_EQ(z[expected], p[2]);
+      EXPECT_EQ(ca[expected], a[j]);
+      EXPECT_EQ(cb[expected], b[j]);
+      ++expected;
+    }
+    EXPECT_EQ(size, expected) << "count " << count;
+    EXPECT_EQ(x[0], -7.0f) << "what was there stays";
+    if (count > 100)
+    {
+      EXPECT_GT(size - before, count / 10) << "the test should keep some";
+      EXPECT_LT(size - before, count / 2) << "and drop some";
     }
   }
 }

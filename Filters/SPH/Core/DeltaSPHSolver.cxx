@@ -119,7 +119,13 @@ __attribute__((always_inline)) inline float momentumFactor(float dx, float dy, f
                                                            const float* t, const Constants& k)
 {
   const float approach = (vq[0] - vxj) * dx + (vq[1] - vyj) * dy + (vq[2] - vzj) * dz; // v_ij . x_ij
-  const float inverseRhoJ = 1.0f / rhoJ;
+  // One division for the three quotients 1 / rho_j, 1 / (r^2 + eta^2) and 2 / (rho_i + rho_j): a
+  // division costs several multiplications in the vector units, and three were the pair loop's
+  // bottleneck.
+  const float rrEta = rr + k.eta2, sumRho = rhoI + rhoJ;
+  const float inverse = 1.0f / (rrEta * sumRho * rhoJ);
+  const float inverseRhoJ = inverse * rrEta * sumRho;
+  const float inverseR2 = inverse * sumRho * rhoJ;
   const float termJ = pJ * inverseRhoJ * inverseRhoJ;
   const float tensileJ = pJ < 0.0f ? -kTensileCoefficient * termJ : 0.0f;
   // Capped at 1: Wendland C2 at h = 2 spacings is so peaked that W(0) / W(spacing) = 5.3, and
@@ -127,10 +133,10 @@ __attribute__((always_inline)) inline float momentumFactor(float dx, float dy, f
   const float ratio = value * k.inverseWSpacing;
   const float f = ratio < 1.0f ? ratio : 1.0f;
   const float f2 = f * f;
-  const float inverseR2 = 1.0f / (rr + k.eta2);
-  // Monaghan's viscosity acts on approaching pairs only.
-  const float mu = (approach < 0.0f ? approach : 0.0f) * k.hSmooth * inverseR2;
-  const float artificial = -k.alpha * k.c0 * mu * 2.0f / (rhoI + rhoJ);
+  // Monaghan's viscosity acts on approaching pairs only: -alpha c0 mu_ij / rho_ij with mu_ij =
+  // h v_ij.x_ij / (r^2 + eta^2) and rho_ij the pair's mean density.
+  const float approaching = approach < 0.0f ? approach : 0.0f;
+  const float artificial = -2.0f * k.alpha * k.c0 * k.hSmooth * approaching * inverse * rhoJ;
   float scalar = -(k.pressureCorrection * (termI + termJ) + (tensileI + tensileJ) * f2 * f2 + artificial);
   if constexpr (Laminar)
   {
@@ -146,21 +152,20 @@ __attribute__((always_inline)) inline float momentumFactor(float dx, float dy, f
 /// no ordinary function (GCC requires the same tuning), so they touch no std:: call.
 struct PairInput
 {
-  const float *px, *py, *pz, *r2, *vx, *vy, *vz, *rho, *pressure;
+  const float *px, *py, *pz, *vx, *vy, *vz, *rho, *pressure;
   const std::uint32_t* hits;
   std::uint32_t count;
   PairInput(CandidateBuffer& c, const float q[3], float h2)
     : px(c.x.data())
     , py(c.y.data())
     , pz(c.z.data())
-    , r2(c.distanceSquared.data())
     , vx(c.channel[VX].data())
     , vy(c.channel[VY].data())
     , vz(c.channel[VZ].data())
     , rho(c.channel[DENSITY].data())
     , pressure(c.channel[PRESSURE].data())
     , hits(c.hits.data())
-    , count(c.findHits(q, h2))
+    , count(c.padHits(c.findHits(q, h2)))
   {
   }
 };
@@ -174,7 +179,7 @@ __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, c
                                                           Sums* out)
 {
   const std::uint32_t count = in.count;
-  const float *px = in.px, *py = in.py, *pz = in.pz, *r2 = in.r2;
+  const float *px = in.px, *py = in.py, *pz = in.pz;
   const float *vx = in.vx, *vy = in.vy, *vz = in.vz;
   const float *rho = in.rho, *pressure = in.pressure;
   const std::uint32_t* hits = in.hits;
@@ -185,9 +190,9 @@ __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, c
 #pragma omp simd reduction(+ : ax, ay, az)
   for (std::uint32_t n = 0; n < count; ++n)
   {
-    const std::uint32_t j = hits[n];
+    const int j = static_cast<int>(hits[n]); // signed: a gather sign-extends its 32-bit indices
     const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
-    const float rr = r2[j];
+    const float rr = dx * dx + dy * dy + dz * dz; // computed: a gather of the search's r^2 costs more
     const WendlandPair w(k.w, __builtin_sqrtf(rr));
     const float scalar = momentumFactor<Laminar>(dx, dy, dz, rr, w.value, vq, vx[j], vy[j], vz[j], rhoI, termI,
                                                  tensileI, rho[j], pressure[j], t, k) *
@@ -233,7 +238,7 @@ __attribute__((always_inline)) inline void densityRateBody(const PairInput& in, 
                                                            float rhoI, bool diffuse, const Constants& k, float* out)
 {
   const std::uint32_t count = in.count;
-  const float *px = in.px, *py = in.py, *pz = in.pz, *r2 = in.r2;
+  const float *px = in.px, *py = in.py, *pz = in.pz;
   const float *vx = in.vx, *vy = in.vy, *vz = in.vz;
   const float* rho = in.rho;
   const std::uint32_t* hits = in.hits;
@@ -242,15 +247,16 @@ __attribute__((always_inline)) inline void densityRateBody(const PairInput& in, 
 #pragma omp simd reduction(+ : rate)
   for (std::uint32_t n = 0; n < count; ++n)
   {
-    const std::uint32_t j = hits[n];
+    const int j = static_cast<int>(hits[n]); // signed: a gather sign-extends its 32-bit indices
     const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
-    const float rr = r2[j];
+    const float rr = dx * dx + dy * dy + dz * dz;
     const WendlandPair w(k.w, __builtin_sqrtf(rr));
     const float approach = (vq[0] - vx[j]) * dx + (vq[1] - vy[j]) * dy + (vq[2] - vz[j]) * dz;
     const float hydrostatic =
       -k.rho0 * (k.gravity[0] * dx + k.gravity[1] * dy + k.gravity[2] * dz) * k.inverseC0Squared;
     const float psi = (rho[j] - rhoI) - hydrostatic;
-    rate += w.gradient * (k.mass * approach - diffusion * psi / rho[j] * rr / (rr + k.eta2));
+    // One division, and the quotient taken whole (finite for the padding's far sentinel).
+    rate += w.gradient * (k.mass * approach - diffusion * psi * (rr / (rho[j] * (rr + k.eta2))));
   }
   *out = rate;
 }

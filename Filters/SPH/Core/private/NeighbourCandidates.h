@@ -46,13 +46,23 @@ void permute(std::vector<T>& a, std::vector<T>& scratch, const std::vector<std::
 }
 
 /// distanceSquared[j] = |q - (x, y, z)[j]|^2 for j < size, and hits[0..count) the j (ascending)
-/// with distanceSquared[j] < h2; returns count. Compiled for AVX-512, AVX2 and the baseline
-/// (CandidateHits.cxx).
+/// with distanceSquared[j] < h2; returns count. hits needs room for size + 16 values (the AVX-512
+/// copy stores 16 at a time). Compiled for AVX-512, AVX2 and the baseline (CandidateHits.cxx).
 std::uint32_t findHitsKernel(const float* x, const float* y, const float* z, std::uint32_t size, const float q[3],
                              float h2, float* distanceSquared, std::uint32_t* hits);
 
 /// Up to this many per-particle values ride along with the positions of the candidates.
 constexpr int kMaxChannels = 5;
+
+/// The particles b..e (of positions px, py, pz, shifted by `shift`) whose distance² to the box
+/// lo..hi is not reach2 or more, appended in order at `size` to x, y, z and, for k < channels,
+/// sources[k][j] to channel[k]; returns the new size. Each output needs room for 16 values past
+/// the last one written (the AVX-512 copy stores 16 at a time). Compiled for AVX-512, AVX2 and the
+/// baseline (CandidateHits.cxx).
+std::uint32_t appendNearBoxKernel(const float* px, const float* py, const float* pz, std::uint32_t b, std::uint32_t e,
+                                  const float shift[3], const float lo[3], const float hi[3], float reach2,
+                                  const float* const* sources, int channels, float* x, float* y, float* z,
+                                  float* const* channel, std::uint32_t size);
 
 struct CandidateBuffer
 {
@@ -81,14 +91,18 @@ struct CandidateBuffer
     {
       grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) { capacity += e - b; });
     }
+    // Room past the candidates: the sentinel candidate that padHits points at, and the 16-value
+    // stores of the AVX-512 copies (appendNearBoxKernel, findHitsKernel).
     for (auto* a : { &x, &y, &z, &distanceSquared })
     {
-      a->resize(capacity);
+      a->resize(capacity + kHitPadding);
     }
-    hits.resize(capacity);
+    hits.resize(capacity + kHitPadding);
+    std::array<float*, kMaxChannels> targets{};
     for (int k = 0; k < channels; ++k)
     {
-      channel[k].resize(capacity);
+      channel[k].resize(capacity + kHitPadding);
+      targets[k] = channel[k].data();
     }
     float lo[3], hi[3];
     grid.cellBox(ix, iy, iz, lo, hi);
@@ -96,25 +110,8 @@ struct CandidateBuffer
     size = 0;
     auto append = [&](std::uint32_t b, std::uint32_t e, const float shift[3])
     {
-      for (std::uint32_t j = b; j < e; ++j)
-      {
-        const float px = s.x[j] + shift[0], py = s.y[j] + shift[1], pz = s.z[j] + shift[2];
-        const float dx = std::max({ lo[0] - px, 0.0f, px - hi[0] });
-        const float dy = std::max({ lo[1] - py, 0.0f, py - hi[1] });
-        const float dz = std::max({ lo[2] - pz, 0.0f, pz - hi[2] });
-        if (dx * dx + dy * dy + dz * dz >= reach2)
-        {
-          continue;
-        }
-        x[size] = px;
-        y[size] = py;
-        z[size] = pz;
-        for (int k = 0; k < channels; ++k)
-        {
-          channel[k][size] = sources[k][j];
-        }
-        ++size;
-      }
+      size = appendNearBoxKernel(s.x.data(), s.y.data(), s.z.data(), b, e, shift, lo, hi, reach2, sources.data(),
+                                 channels, x.data(), y.data(), z.data(), targets.data(), size);
     };
     if (periodic)
     {
@@ -125,6 +122,15 @@ struct CandidateBuffer
     {
       static const float none[3] = { 0.0f, 0.0f, 0.0f };
       grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) { append(b, e, none); });
+    }
+    // The sentinel: far outside any support (for a pair loop that computes the distance from the
+    // positions and for one that reads distanceSquared, which findHits writes for the first `size`
+    // only), with finite values, so that a pair term carrying the kernel as a factor is zero.
+    x[size] = y[size] = z[size] = kSentinelPosition;
+    distanceSquared[size] = kSentinelDistanceSquared;
+    for (int k = 0; k < channels; ++k)
+    {
+      channel[k][size] = 1.0f;
     }
   }
 
@@ -151,6 +157,25 @@ struct CandidateBuffer
   {
     return findHitsKernel(x.data(), y.data(), z.data(), size, q, h2, distanceSquared.data(), hits.data());
   }
+
+  /// Pads hits[count..) with the sentinel candidate up to a multiple of kHitPadding and returns
+  /// that length: a pair loop over it then runs in whole vectors, where the last few pairs would
+  /// otherwise go through the compiler's scalar remainder loop (with 90 neighbours and 16 lanes,
+  /// a third of δ-SPH's pair-loop time was there). A pair term that carries the kernel or its
+  /// gradient as a factor is exactly zero for the sentinel, 1e15 m from the origin, as long as
+  /// its other factors stay finite there (r² ~ 1e30: take quotients such as r² / (r² + η²) whole).
+  std::uint32_t padHits(std::uint32_t count)
+  {
+    const std::uint32_t padded = (count + kHitPadding - 1) / kHitPadding * kHitPadding;
+    for (std::uint32_t n = count; n < padded; ++n)
+    {
+      hits[n] = size;
+    }
+    return padded;
+  }
+  static constexpr std::uint32_t kHitPadding = 16;         // the AVX-512 copies' lanes of float
+  static constexpr float kSentinelPosition = 1e15f;        // [m]
+  static constexpr float kSentinelDistanceSquared = 1e30f; // [m²]
 };
 
 /// Runs body(candidates, i) for every particle i, cell by cell in parallel, after gathering into a
