@@ -112,3 +112,51 @@ TEST(CandidateHits, CopyKeepsTheParticlesNearTheBoxInOrder)
     }
   }
 }
+
+// The search among a list of candidates (a wall image's, among its particle's hits) against a plain
+// loop, on every compiled copy: the listed candidates inside the radius, in the list's order.
+TEST(CandidateHits, SearchAmongAListKeepsItsOrder)
+{
+  std::mt19937 random(17);
+  std::uniform_real_distribution<float> coordinate(-1.0f, 1.0f);
+  const std::uint32_t size = 500;
+  std::vector<float> x(size), y(size), z(size);
+  for (std::uint32_t j = 0; j < size; ++j)
+  {
+    x[j] = coordinate(random);
+    y[j] = coordinate(random);
+    z[j] = coordinate(random);
+  }
+  const float q[3] = { -0.3f, 0.2f, 0.1f };
+  const float h2 = 0.5f;
+  for (std::uint32_t listed : { 0u, 1u, 15u, 16u, 17u, 33u, 250u })
+  {
+    std::vector<std::uint32_t> among(listed);
+    for (std::uint32_t k = 0; k < listed; ++k)
+    {
+      among[k] = (k * 37u + 11u) % size; // not ascending, with gaps
+    }
+    std::vector<std::uint32_t> out(listed + 16, 0xFFFFFFFFu);
+    const std::uint32_t count = parafluid::sph::detail::findHitsAmongKernel(x.data(), y.data(), z.data(), among.data(),
+                                                                            listed, q, h2, out.data());
+    std::vector<std::uint32_t> expected;
+    for (std::uint32_t j : among)
+    {
+      const float dx = q[0] - x[j], dy = q[1] - y[j], dz = q[2] - z[j];
+      if (dx * dx + dy * dy + dz * dz < h2)
+      {
+        expected.push_back(j);
+      }
+    }
+    ASSERT_EQ(count, expected.size()) << "listed " << listed;
+    for (std::uint32_t n = 0; n < count; ++n)
+    {
+      EXPECT_EQ(out[n], expected[n]) << "listed " << listed << ", hit " << n;
+    }
+    if (listed > 100)
+    {
+      EXPECT_GT(count, listed / 10) << "the test should have hits";
+      EXPECT_LT(count, listed / 2) << "and misses";
+    }
+  }
+}

@@ -48,7 +48,7 @@ void findHitsBaseline(const float* px, const float* py, const float* pz, std::ui
 // baseline copy computes them.
 PARAFLUID_TARGET_AVX512 std::uint32_t findHitsAvx512(const float* px, const float* py, const float* pz,
                                                      std::uint32_t size, const float q[3], float h2, float* r2,
-                                                     std::uint32_t* hits)
+                                                     std::uint32_t* hits, bool keepDistances)
 {
   const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
   const __m512 limit = _mm512_set1_ps(h2);
@@ -63,7 +63,10 @@ PARAFLUID_TARGET_AVX512 std::uint32_t findHitsAvx512(const float* px, const floa
     const __m512 dy = _mm512_sub_ps(qy, _mm512_maskz_loadu_ps(valid, py + j));
     const __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(valid, pz + j));
     const __m512 d = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
-    _mm512_mask_storeu_ps(r2 + j, valid, d);
+    if (keepDistances)
+    {
+      _mm512_mask_storeu_ps(r2 + j, valid, d);
+    }
     const __mmask16 inside = _mm512_mask_cmp_ps_mask(valid, d, limit, _CMP_LT_OQ);
     // Compressed in a register and stored whole (hits has 16 slots of room past the candidates):
     // a compress straight to memory costs several times as much on Intel cores.
@@ -150,7 +153,55 @@ PARAFLUID_TARGET_AVX512 std::uint32_t appendNearBoxAvx512(const float* px, const
   }
   return size;
 }
+std::uint32_t findHitsAmongScalar(const float* x, const float* y, const float* z, const std::uint32_t* among,
+                                  std::uint32_t amongCount, const float q[3], float h2, std::uint32_t* out)
+{
+  std::uint32_t count = 0;
+  for (std::uint32_t k = 0; k < amongCount; ++k)
+  {
+    const std::uint32_t j = among[k];
+    const float dx = q[0] - x[j], dy = q[1] - y[j], dz = q[2] - z[j];
+    const float d = dx * dx + dy * dy + dz * dz;
+    out[count] = j;
+    count += d < h2 ? 1u : 0u;
+  }
+  return count;
+}
+
+PARAFLUID_TARGET_AVX512 std::uint32_t findHitsAmongAvx512(const float* x, const float* y, const float* z,
+                                                          const std::uint32_t* among, std::uint32_t amongCount,
+                                                          const float q[3], float h2, std::uint32_t* out)
+{
+  const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
+  const __m512 limit = _mm512_set1_ps(h2);
+  std::uint32_t count = 0;
+  for (std::uint32_t k = 0; k < amongCount; k += 16)
+  {
+    const std::uint32_t left = amongCount - k;
+    const __mmask16 valid = left >= 16 ? static_cast<__mmask16>(0xFFFF) : static_cast<__mmask16>((1u << left) - 1u);
+    const __m512i index = _mm512_maskz_loadu_epi32(valid, among + k);
+    const __m512 zero = _mm512_setzero_ps();
+    const __m512 dx = _mm512_sub_ps(qx, _mm512_mask_i32gather_ps(zero, valid, index, x, 4));
+    const __m512 dy = _mm512_sub_ps(qy, _mm512_mask_i32gather_ps(zero, valid, index, y, 4));
+    const __m512 dz = _mm512_sub_ps(qz, _mm512_mask_i32gather_ps(zero, valid, index, z, 4));
+    const __m512 d = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
+    const __mmask16 inside = _mm512_mask_cmp_ps_mask(valid, d, limit, _CMP_LT_OQ);
+    _mm512_storeu_si512(out + count, _mm512_maskz_compress_epi32(inside, index));
+    count += static_cast<std::uint32_t>(__builtin_popcount(inside));
+  }
+  return count;
+}
 } // namespace
+
+std::uint32_t findHitsAmongKernel(const float* x, const float* y, const float* z, const std::uint32_t* among,
+                                  std::uint32_t amongCount, const float q[3], float h2, std::uint32_t* out)
+{
+  if (common::simdLevel() == common::SimdLevel::Avx512)
+  {
+    return findHitsAmongAvx512(x, y, z, among, amongCount, q, h2, out);
+  }
+  return findHitsAmongScalar(x, y, z, among, amongCount, q, h2, out);
+}
 
 std::uint32_t appendNearBoxKernel(const float* px, const float* py, const float* pz, std::uint32_t b, std::uint32_t e,
                                   const float shift[3], const float lo[3], const float hi[3], float reach2,
@@ -165,13 +216,13 @@ std::uint32_t appendNearBoxKernel(const float* px, const float* py, const float*
 }
 
 std::uint32_t findHitsKernel(const float* x, const float* y, const float* z, std::uint32_t size, const float q[3],
-                             float h2, float* distanceSquared, std::uint32_t* hits)
+                             float h2, float* distanceSquared, std::uint32_t* hits, bool keepDistances)
 {
   std::uint32_t count = 0;
   switch (common::simdLevel())
   {
     case common::SimdLevel::Avx512:
-      return findHitsAvx512(x, y, z, size, q, h2, distanceSquared, hits);
+      return findHitsAvx512(x, y, z, size, q, h2, distanceSquared, hits, keepDistances);
     case common::SimdLevel::Avx2:
       findHitsAvx2(x, y, z, size, q, h2, distanceSquared, hits, &count);
       return count;

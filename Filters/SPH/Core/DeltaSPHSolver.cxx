@@ -111,8 +111,8 @@ float ownImageGradient(const Constants& k, float r)
 /// and laminar viscosity. x_ij = (dx, dy, dz), |x_ij|^2 = rr, value = W_ij; particle i's query
 /// position and velocity q, vq, its density, 1 / density and p_i / rho_i^2 with its tensile part;
 /// j's velocity, density and pressure. `t` turns the laminar term's relative velocity into that of
-/// a no-slip wall image.
-template<bool Laminar>
+/// a no-slip wall image; without NoSlipImage it is all ones and not read.
+template<bool Laminar, bool NoSlipImage = true>
 __attribute__((always_inline)) inline float momentumFactor(float dx, float dy, float dz, float rr, float value,
                                                            const float* vq, float vxj, float vyj, float vzj, float rhoI,
                                                            float termI, float tensileI, float rhoJ, float pJ,
@@ -140,7 +140,8 @@ __attribute__((always_inline)) inline float momentumFactor(float dx, float dy, f
   float scalar = -(k.pressureCorrection * (termI + termJ) + (tensileI + tensileJ) * f2 * f2 + artificial);
   if constexpr (Laminar)
   {
-    const float laminarApproach = (vq[0] - t[0] * vxj) * dx + (vq[1] - t[1] * vyj) * dy + (vq[2] - t[2] * vzj) * dz;
+    const float laminarApproach =
+      NoSlipImage ? (vq[0] - t[0] * vxj) * dx + (vq[1] - t[1] * vyj) * dy + (vq[2] - t[2] * vzj) * dz : approach;
     scalar += k.nu10 * inverseRhoJ * laminarApproach * inverseR2;
   }
   return scalar;
@@ -155,7 +156,8 @@ struct PairInput
   const float *px, *py, *pz, *vx, *vy, *vz, *rho, *pressure;
   const std::uint32_t* hits;
   std::uint32_t count;
-  PairInput(CandidateBuffer& c, const float q[3], float h2)
+  /// The hits of q, or (image) of a wall image of the particle whose own hits were found last.
+  PairInput(CandidateBuffer& c, const float q[3], float h2, bool image)
     : px(c.x.data())
     , py(c.y.data())
     , pz(c.z.data())
@@ -164,16 +166,17 @@ struct PairInput
     , vz(c.channel[VZ].data())
     , rho(c.channel[DENSITY].data())
     , pressure(c.channel[PRESSURE].data())
-    , hits(c.hits.data())
-    , count(c.padHits(c.findHits(q, h2)))
+    , hits(image ? c.imageHits.data() : c.hits.data())
+    , count(image ? c.findImageHits(q, h2) : c.padHits(c.findHits(q, h2, false)))
   {
   }
 };
 
 /// The momentum terms of particle i (position q, velocity vq, density and pressure) against the
 /// candidates: pressure, tensile correction, artificial and laminar viscosity. `t` turns the
-/// laminar term's relative velocity into that of a no-slip wall image (all ones otherwise).
-template<bool Laminar>
+/// laminar term's relative velocity into that of a no-slip wall image (all ones and not read
+/// without NoSlipImage).
+template<bool Laminar, bool NoSlipImage>
 __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, const float* q, const float* vq,
                                                           float rhoI, float pI, const float* t, const Constants& k,
                                                           Sums* out)
@@ -194,8 +197,8 @@ __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, c
     const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
     const float rr = dx * dx + dy * dy + dz * dz; // computed: a gather of the search's r^2 costs more
     const WendlandPair w(k.w, __builtin_sqrtf(rr));
-    const float scalar = momentumFactor<Laminar>(dx, dy, dz, rr, w.value, vq, vx[j], vy[j], vz[j], rhoI, termI,
-                                                 tensileI, rho[j], pressure[j], t, k) *
+    const float scalar = momentumFactor<Laminar, NoSlipImage>(dx, dy, dz, rr, w.value, vq, vx[j], vy[j], vz[j], rhoI,
+                                                              termI, tensileI, rho[j], pressure[j], t, k) *
                          (k.mass * w.gradient); // the product first, as before the factor was shared
     ax += scalar * dx;
     ay += scalar * dy;
@@ -211,20 +214,30 @@ __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, c
 PARAFLUID_SIMD_DISPATCH(laminarForceTerms,
                         (const PairInput& in, const float* q, const float* vq, float rhoI, float pI, const float* t,
                          const Constants& k, Sums* out),
-                        (in, q, vq, rhoI, pI, t, k, out), forceTermsBody<true>)
+                        (in, q, vq, rhoI, pI, t, k, out), (forceTermsBody<true, true>))
+PARAFLUID_SIMD_DISPATCH(laminarInteriorForceTerms,
+                        (const PairInput& in, const float* q, const float* vq, float rhoI, float pI, const float* t,
+                         const Constants& k, Sums* out),
+                        (in, q, vq, rhoI, pI, t, k, out), (forceTermsBody<true, false>))
 PARAFLUID_SIMD_DISPATCH(inviscidForceTerms,
                         (const PairInput& in, const float* q, const float* vq, float rhoI, float pI, const float* t,
                          const Constants& k, Sums* out),
-                        (in, q, vq, rhoI, pI, t, k, out), forceTermsBody<false>)
+                        (in, q, vq, rhoI, pI, t, k, out), (forceTermsBody<false, false>))
 
 template<bool Laminar>
 Sums forceTerms(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, float pI, const float t[3],
-                const Constants& k)
+                bool image, const Constants& k)
 {
-  const PairInput in(c, q, k.h2);
+  const PairInput in(c, q, k.h2, image);
   Sums sums;
   if constexpr (Laminar)
-    laminarForceTerms(in, q, vq, rhoI, pI, t, k, &sums);
+  {
+    // The particle itself (t all ones) skips the no-slip image's velocity product.
+    if (image)
+      laminarForceTerms(in, q, vq, rhoI, pI, t, k, &sums);
+    else
+      laminarInteriorForceTerms(in, q, vq, rhoI, pI, t, k, &sums);
+  }
   else
     inviscidForceTerms(in, q, vq, rhoI, pI, t, k, &sums);
   return sums;
@@ -266,9 +279,10 @@ PARAFLUID_SIMD_DISPATCH(densityRateInto,
                          const Constants& k, float* out),
                         (in, q, vq, rhoI, diffuse, k, out), densityRateBody)
 
-float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, bool diffuse, const Constants& k)
+float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, bool image, const Constants& k)
 {
-  const PairInput in(c, q, k.h2);
+  const PairInput in(c, q, k.h2, image);
+  const bool diffuse = !image;
   float rate = 0.0f;
   densityRateInto(in, q, vq, rhoI, diffuse, k, &rate);
   return rate;
@@ -343,7 +357,7 @@ void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters&
       forEachWallImage(position, velocity, p,
                        [&](const float* q, const float* v, const float* t, const float* scale, bool image)
                        {
-                         Sums g = forceTerms<Laminar>(c, q, v, s.density[i], s.pressure[i], t, k);
+                         Sums g = forceTerms<Laminar>(c, q, v, s.density[i], s.pressure[i], t, image, k);
                          if (image)
                          {
                            addOwnImageForce<Laminar>(q, v, t, position, velocity, s.density[i], s.pressure[i], k, g.a);
@@ -579,7 +593,7 @@ void DeltaSPHSolver::advanceDensity(SPHSolver& sim, float dt)
                           forEachWallImage(position, velocity, p,
                                            [&](const float* q, const float* v, const float*, const float*, bool image)
                                            {
-                                             rate += densityRate(c, q, v, s.density[i], !image, k);
+                                             rate += densityRate(c, q, v, s.density[i], image, k);
                                              if (image)
                                              {
                                                rate += ownImageDensityRate(q, v, position, velocity, k);

@@ -47,9 +47,15 @@ void permute(std::vector<T>& a, std::vector<T>& scratch, const std::vector<std::
 
 /// distanceSquared[j] = |q - (x, y, z)[j]|^2 for j < size, and hits[0..count) the j (ascending)
 /// with distanceSquared[j] < h2; returns count. hits needs room for size + 16 values (the AVX-512
-/// copy stores 16 at a time). Compiled for AVX-512, AVX2 and the baseline (CandidateHits.cxx).
+/// copy stores 16 at a time). Without keepDistances the AVX-512 copy does not store the
+/// distances (the others always do). Compiled for AVX-512, AVX2 and the baseline (CandidateHits.cxx).
 std::uint32_t findHitsKernel(const float* x, const float* y, const float* z, std::uint32_t size, const float q[3],
-                             float h2, float* distanceSquared, std::uint32_t* hits);
+                             float h2, float* distanceSquared, std::uint32_t* hits, bool keepDistances = true);
+/// out[0..count) the among[k] (k < amongCount, in order) with |q - (x, y, z)[among[k]]|^2 < h2,
+/// the squares summed as findHitsKernel sums them; returns count. out needs room for amongCount +
+/// 16 values. Compiled for AVX-512 and the baseline (CandidateHits.cxx).
+std::uint32_t findHitsAmongKernel(const float* x, const float* y, const float* z, const std::uint32_t* among,
+                                  std::uint32_t amongCount, const float q[3], float h2, std::uint32_t* out);
 
 /// Up to this many per-particle values ride along with the positions of the candidates.
 constexpr int kMaxChannels = 5;
@@ -68,7 +74,9 @@ struct CandidateBuffer
 {
   std::vector<float> x, y, z;
   std::array<std::vector<float>, kMaxChannels> channel;
-  std::vector<std::uint32_t> hits; // buffer positions of the candidates inside the kernel radius
+  std::vector<std::uint32_t> hits;      // buffer positions of the candidates inside the kernel radius
+  std::uint32_t hitCount = 0;           // of the last findHits, before any padding
+  std::vector<std::uint32_t> imageHits; // the same for a wall image of the last query (findImageHits)
   std::vector<float> distanceSquared;
   std::uint32_t size = 0;
 
@@ -98,6 +106,7 @@ struct CandidateBuffer
       a->resize(capacity + kHitPadding);
     }
     hits.resize(capacity + kHitPadding);
+    imageHits.resize(capacity + kHitPadding);
     std::array<float*, kMaxChannels> targets{};
     for (int k = 0; k < channels; ++k)
     {
@@ -153,9 +162,22 @@ struct CandidateBuffer
   /// Finds the candidates strictly inside radius² h2 of q (typically 15 % of them), so that square
   /// roots and divisions are spent on real neighbours only. Returns their number; hits[0..count)
   /// are their buffer positions and distanceSquared[j] holds |q − x_j|² for every candidate j.
-  std::uint32_t findHits(const float q[3], float h2)
+  std::uint32_t findHits(const float q[3], float h2, bool keepDistances = true)
   {
-    return findHitsKernel(x.data(), y.data(), z.data(), size, q, h2, distanceSquared.data(), hits.data());
+    hitCount =
+      findHitsKernel(x.data(), y.data(), z.data(), size, q, h2, distanceSquared.data(), hits.data(), keepDistances);
+    return hitCount;
+  }
+
+  /// The candidates inside radius² h2 of q, a wall image (a mirror image across box walls) of the
+  /// last findHits' query, into imageHits, padded as padHits pads: they are among that query's
+  /// hits, since a particle inside the box is nearer to a point inside than to its mirror image,
+  /// so only those are searched (90 instead of ~550 candidates at 3 spacings).
+  std::uint32_t findImageHits(const float q[3], float h2)
+  {
+    const std::uint32_t count =
+      findHitsAmongKernel(x.data(), y.data(), z.data(), hits.data(), hitCount, q, h2, imageHits.data());
+    return pad(imageHits.data(), count);
   }
 
   /// Pads hits[count..) with the sentinel candidate up to a multiple of kHitPadding and returns
@@ -166,10 +188,14 @@ struct CandidateBuffer
   /// its other factors stay finite there (r² ~ 1e30: take quotients such as r² / (r² + η²) whole).
   std::uint32_t padHits(std::uint32_t count)
   {
+    return pad(hits.data(), count);
+  }
+  std::uint32_t pad(std::uint32_t* list, std::uint32_t count) const
+  {
     const std::uint32_t padded = (count + kHitPadding - 1) / kHitPadding * kHitPadding;
     for (std::uint32_t n = count; n < padded; ++n)
     {
-      hits[n] = size;
+      list[n] = size;
     }
     return padded;
   }
