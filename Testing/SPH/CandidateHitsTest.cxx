@@ -10,6 +10,24 @@
 #include <random>
 #include <vector>
 
+namespace
+{
+/// `size` points with coordinates drawn from `coordinate`, x, y and z of each point in turn.
+void randomPoints(std::mt19937& random, std::uniform_real_distribution<float>& coordinate, std::uint32_t size,
+                  std::vector<float>& x, std::vector<float>& y, std::vector<float>& z)
+{
+  x.resize(size);
+  y.resize(size);
+  z.resize(size);
+  for (std::uint32_t j = 0; j < size; ++j)
+  {
+    x[j] = coordinate(random);
+    y[j] = coordinate(random);
+    z[j] = coordinate(random);
+  }
+}
+} // namespace
+
 TEST(CandidateHits, SameDistancesAndHitsInOrderAsAPlainLoop)
 {
   std::mt19937 random(5);
@@ -18,13 +36,8 @@ TEST(CandidateHits, SameDistancesAndHitsInOrderAsAPlainLoop)
   const float h2 = 0.36f; // about 11 % of the candidates inside
   for (std::uint32_t size : { 0u, 1u, 7u, 15u, 16u, 17u, 31u, 33u, 250u, 1003u })
   {
-    std::vector<float> x(size), y(size), z(size);
-    for (std::uint32_t j = 0; j < size; ++j)
-    {
-      x[j] = coordinate(random);
-      y[j] = coordinate(random);
-      z[j] = coordinate(random);
-    }
+    std::vector<float> x, y, z;
+    randomPoints(random, coordinate, size, x, y, z);
     std::vector<float> r2(size, -1.0f);
     std::vector<std::uint32_t> hits(size + 16, 0xFFFFFFFFu);
     const std::uint32_t count =
@@ -120,13 +133,8 @@ TEST(CandidateHits, SearchAmongAListKeepsItsOrder)
   std::mt19937 random(17);
   std::uniform_real_distribution<float> coordinate(-1.0f, 1.0f);
   const std::uint32_t size = 500;
-  std::vector<float> x(size), y(size), z(size);
-  for (std::uint32_t j = 0; j < size; ++j)
-  {
-    x[j] = coordinate(random);
-    y[j] = coordinate(random);
-    z[j] = coordinate(random);
-  }
+  std::vector<float> x, y, z;
+  randomPoints(random, coordinate, size, x, y, z);
   const float q[3] = { -0.3f, 0.2f, 0.1f };
   const float h2 = 0.5f;
   for (std::uint32_t listed : { 0u, 1u, 15u, 16u, 17u, 33u, 250u })

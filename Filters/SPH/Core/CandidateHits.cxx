@@ -1,8 +1,9 @@
-// The neighbour search's inner loops: the copy of a cell's candidates (CandidateBuffer::gather) and
-// (CandidateBuffer::findHits) the distances to every candidate and the positions of those inside
-// the support, in candidate order. The AVX-512 copy packs the hits
-// with a compress store, 16 candidates an instruction, where the scalar loop took one (the
-// packing was half of a δ-SPH step at 90 neighbours: about 15 % of the candidates are hits).
+// The neighbour search's inner loops: the copy of a cell's candidates (CandidateBuffer::gather),
+// the distances to every candidate and the positions of those inside the support, in candidate
+// order (CandidateBuffer::findHits), and the same among a list of them (findImageHits). The
+// AVX-512 copies pack what they keep with a compress, 16 candidates an instruction, where the
+// scalar loop took one (the packing was half of a δ-SPH step at 90 neighbours: about 15 % of the
+// candidates are hits).
 #include "private/NeighbourCandidates.h"
 
 #include "parafluid/common/SimdDispatch.h"
@@ -13,6 +14,12 @@ namespace parafluid::sph::detail
 {
 namespace
 {
+/// The lanes of a 16-wide chunk that hold one of the `left` values still to do.
+__attribute__((always_inline)) inline __mmask16 lanesLeft(std::uint32_t left)
+{
+  return left >= 16 ? static_cast<__mmask16>(0xFFFF) : static_cast<__mmask16>((1u << left) - 1u);
+}
+
 __attribute__((always_inline)) inline void findHitsBody(const float* px, const float* py, const float* pz,
                                                         std::uint32_t size, const float* q, float h2, float* r2,
                                                         std::uint32_t* hits, std::uint32_t* count)
@@ -57,8 +64,7 @@ PARAFLUID_TARGET_AVX512 std::uint32_t findHitsAvx512(const float* px, const floa
   std::uint32_t count = 0;
   for (std::uint32_t j = 0; j < size; j += 16)
   {
-    const std::uint32_t left = size - j;
-    const __mmask16 valid = left >= 16 ? static_cast<__mmask16>(0xFFFF) : static_cast<__mmask16>((1u << left) - 1u);
+    const __mmask16 valid = lanesLeft(size - j);
     const __m512 dx = _mm512_sub_ps(qx, _mm512_maskz_loadu_ps(valid, px + j));
     const __m512 dy = _mm512_sub_ps(qy, _mm512_maskz_loadu_ps(valid, py + j));
     const __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(valid, pz + j));
@@ -76,9 +82,11 @@ PARAFLUID_TARGET_AVX512 std::uint32_t findHitsAvx512(const float* px, const floa
   }
   return count;
 }
-/// The candidates' copy (CandidateBuffer::gather): a particle is dropped where its distance² to
-/// the cell's box is reach2 or more (kept where it is NaN, as the scalar test `>= reach2` did).
-__attribute__((always_inline)) inline float boxDistanceSquared(float p, float lo, float hi)
+
+/// The candidates' copy (CandidateBuffer::gather) drops a particle where its distance² to the
+/// cell's box is reach2 or more (and keeps it where that is NaN, as the scalar test `>= reach2`
+/// did). Its distance to the box along one axis:
+__attribute__((always_inline)) inline float boxDistance(float p, float lo, float hi)
 {
   const float below = lo - p, above = p - hi;
   const float d = below > 0.0f ? below : 0.0f;
@@ -93,9 +101,9 @@ std::uint32_t appendNearBoxScalar(const float* px, const float* py, const float*
   for (std::uint32_t j = b; j < e; ++j)
   {
     const float cx = px[j] + shift[0], cy = py[j] + shift[1], cz = pz[j] + shift[2];
-    const float dx = boxDistanceSquared(cx, lo[0], hi[0]);
-    const float dy = boxDistanceSquared(cy, lo[1], hi[1]);
-    const float dz = boxDistanceSquared(cz, lo[2], hi[2]);
+    const float dx = boxDistance(cx, lo[0], hi[0]);
+    const float dy = boxDistance(cy, lo[1], hi[1]);
+    const float dz = boxDistance(cz, lo[2], hi[2]);
     if (dx * dx + dy * dy + dz * dz >= reach2)
     {
       continue;
@@ -127,13 +135,12 @@ PARAFLUID_TARGET_AVX512 std::uint32_t appendNearBoxAvx512(const float* px, const
   float* target[3] = { x, y, z };
   for (std::uint32_t j = b; j < e; j += 16)
   {
-    const std::uint32_t left = e - j;
-    const __mmask16 valid = left >= 16 ? static_cast<__mmask16>(0xFFFF) : static_cast<__mmask16>((1u << left) - 1u);
+    const __mmask16 valid = lanesLeft(e - j);
     __m512 p[3], d2 = zero;
     for (int a = 0; a < 3; ++a)
     {
       p[a] = _mm512_add_ps(_mm512_maskz_loadu_ps(valid, source[a] + j), shifts[a]);
-      // max(a, b) is a > b ? a : b, as boxDistanceSquared (the masked form: GCC 12 warns that the
+      // max(a, b) is a > b ? a : b, as boxDistance (the masked form: GCC 12 warns that the
       // plain one's undefined pass-through may be used uninitialised).
       const __m512 below = _mm512_maskz_max_ps(all, _mm512_sub_ps(low[a], p[a]), zero);
       const __m512 d = _mm512_maskz_max_ps(all, _mm512_sub_ps(p[a], high[a]), below);
@@ -153,6 +160,7 @@ PARAFLUID_TARGET_AVX512 std::uint32_t appendNearBoxAvx512(const float* px, const
   }
   return size;
 }
+
 std::uint32_t findHitsAmongScalar(const float* x, const float* y, const float* z, const std::uint32_t* among,
                                   std::uint32_t amongCount, const float q[3], float h2, std::uint32_t* out)
 {
@@ -173,14 +181,12 @@ PARAFLUID_TARGET_AVX512 std::uint32_t findHitsAmongAvx512(const float* x, const 
                                                           const float q[3], float h2, std::uint32_t* out)
 {
   const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
-  const __m512 limit = _mm512_set1_ps(h2);
+  const __m512 limit = _mm512_set1_ps(h2), zero = _mm512_setzero_ps();
   std::uint32_t count = 0;
   for (std::uint32_t k = 0; k < amongCount; k += 16)
   {
-    const std::uint32_t left = amongCount - k;
-    const __mmask16 valid = left >= 16 ? static_cast<__mmask16>(0xFFFF) : static_cast<__mmask16>((1u << left) - 1u);
+    const __mmask16 valid = lanesLeft(amongCount - k);
     const __m512i index = _mm512_maskz_loadu_epi32(valid, among + k);
-    const __m512 zero = _mm512_setzero_ps();
     const __m512 dx = _mm512_sub_ps(qx, _mm512_mask_i32gather_ps(zero, valid, index, x, 4));
     const __m512 dy = _mm512_sub_ps(qy, _mm512_mask_i32gather_ps(zero, valid, index, y, 4));
     const __m512 dz = _mm512_sub_ps(qz, _mm512_mask_i32gather_ps(zero, valid, index, z, 4));

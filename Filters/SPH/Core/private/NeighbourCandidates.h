@@ -63,7 +63,7 @@ constexpr int kMaxChannels = 5;
 /// The particles b..e (of positions px, py, pz, shifted by `shift`) whose distance² to the box
 /// lo..hi is not reach2 or more, appended in order at `size` to x, y, z and, for k < channels,
 /// sources[k][j] to channel[k]; returns the new size. Each output needs room for 16 values past
-/// the last one written (the AVX-512 copy stores 16 at a time). Compiled for AVX-512, AVX2 and the
+/// the last one written (the AVX-512 copy stores 16 at a time). Compiled for AVX-512 and the
 /// baseline (CandidateHits.cxx).
 std::uint32_t appendNearBoxKernel(const float* px, const float* py, const float* pz, std::uint32_t b, std::uint32_t e,
                                   const float shift[3], const float lo[3], const float hi[3], float reach2,
@@ -132,11 +132,9 @@ struct CandidateBuffer
       static const float none[3] = { 0.0f, 0.0f, 0.0f };
       grid.forEachNeighbourRange(ix, iy, iz, [&](std::uint32_t b, std::uint32_t e) { append(b, e, none); });
     }
-    // The sentinel: far outside any support (for a pair loop that computes the distance from the
-    // positions and for one that reads distanceSquared, which findHits writes for the first `size`
-    // only), with finite values, so that a pair term carrying the kernel as a factor is zero.
+    // The sentinel: far outside any support, with finite values, so that a pair term carrying the
+    // kernel as a factor is zero (the padded loops compute distances from the positions).
     x[size] = y[size] = z[size] = kSentinelPosition;
-    distanceSquared[size] = kSentinelDistanceSquared;
     for (int k = 0; k < channels; ++k)
     {
       channel[k][size] = 1.0f;
@@ -199,9 +197,8 @@ struct CandidateBuffer
     }
     return padded;
   }
-  static constexpr std::uint32_t kHitPadding = 16;         // the AVX-512 copies' lanes of float
-  static constexpr float kSentinelPosition = 1e15f;        // [m]
-  static constexpr float kSentinelDistanceSquared = 1e30f; // [m²]
+  static constexpr std::uint32_t kHitPadding = 16;  // the AVX-512 copies' lanes of float
+  static constexpr float kSentinelPosition = 1e15f; // [m]
 };
 
 /// Runs body(candidates, i) for every particle i, cell by cell in parallel, after gathering into a
