@@ -81,10 +81,20 @@ TEST(SPHValidation, DeltaSPHTaylorGreenVortexDecaysAtItsViscousRate)
 {
   // Re = 100. With a shifting too weak to keep the particles apart at the stagnation points, the
   // vortex broke down into particle noise at t U / L = 0.15 and had lost 61 % more energy than the
-  // analytic decay by one decay time.
+  // analytic decay by one decay time; with Monaghan's viscous operator, corrected for shear along
+  // the lattice's axes, it decayed 6 % too fast all along (13.6 %). Morris's operator: 4.7 %.
   const TaylorGreen r = taylorGreen(PressureSolverType::DeltaSPH, 25);
   std::printf("Taylor-Green at 25 across: largest error of the energy decay %.4f\n", r.decayError);
-  EXPECT_LT(r.decayError, 0.2);
+  EXPECT_LT(r.decayError, 0.06);
+}
+
+TEST(SPHValidation, DeltaSPHPoiseuilleProfile)
+{
+  // The same viscous operator holds the layered shear between plates (1.7 % at 10 across): its
+  // lattice error is the same for every direction of shear, so one correction serves both flows.
+  const Poiseuille r = poiseuille(PressureSolverType::DeltaSPH, 10);
+  std::printf("Poiseuille (δ-SPH): largest error %.4f of the peak\n", r.profileError);
+  EXPECT_LT(r.profileError, 0.025);
 }
 
 TEST(SPHValidation, DFSPHPoiseuilleProfile)

@@ -41,7 +41,7 @@ struct Constants
   float hSmooth; // the smoothing length of the δ-SPH literature, half the support radius
   float eta2;    // 0.01 hSmooth^2: keeps 1 / r^2 finite
   float mass;
-  float c0, alpha, delta, nu10; // nu10 = 2 (d + 2) nu = 10 nu in 3-D
+  float c0, alpha, delta, nu2; // 2 nu, times the lattice's Laplacian correction
   float rho0, inverseC0Squared;
   float gravity[3];
   float inverseWSpacing; // 1 / W(particle spacing), for the tensile correction
@@ -107,16 +107,16 @@ float ownImageGradient(const Constants& k, float r)
   return k.ownImageSlope * shape * shape / r;
 }
 
-/// The momentum factor F of a pair (a_i += m F grad W_ij): pressure, tensile correction, artificial
-/// and laminar viscosity. x_ij = (dx, dy, dz), |x_ij|^2 = rr, value = W_ij; particle i's query
+/// The momentum factor F of a pair (a_i += m F grad W_ij): pressure, tensile correction and
+/// artificial viscosity. x_ij = (dx, dy, dz), |x_ij|^2 = rr, value = W_ij; particle i's query
 /// position and velocity q, vq, its density, 1 / density and p_i / rho_i^2 with its tensile part;
-/// j's velocity, density and pressure. `t` turns the laminar term's relative velocity into that of
-/// a no-slip wall image; without NoSlipImage it is all ones and not read.
-template<bool Laminar, bool NoSlipImage = true>
+/// j's velocity, density and pressure. With Laminar, `laminar` gets the laminar term's factor L
+/// (a_i += m L (dW/dr) / r w_ij, w_ij the pair's relative velocity: see laminarVelocity).
+template<bool Laminar>
 __attribute__((always_inline)) inline float momentumFactor(float dx, float dy, float dz, float rr, float value,
                                                            const float* vq, float vxj, float vyj, float vzj, float rhoI,
                                                            float termI, float tensileI, float rhoJ, float pJ,
-                                                           const float* t, const Constants& k)
+                                                           const Constants& k, float* laminar)
 {
   const float approach = (vq[0] - vxj) * dx + (vq[1] - vyj) * dy + (vq[2] - vzj) * dz; // v_ij . x_ij
   // One division for the three quotients 1 / rho_j, 1 / (r^2 + eta^2) and 2 / (rho_i + rho_j): a
@@ -125,7 +125,6 @@ __attribute__((always_inline)) inline float momentumFactor(float dx, float dy, f
   const float rrEta = rr + k.eta2, sumRho = rhoI + rhoJ;
   const float inverse = 1.0f / (rrEta * sumRho * rhoJ);
   const float inverseRhoJ = inverse * rrEta * sumRho;
-  const float inverseR2 = inverse * sumRho * rhoJ;
   const float termJ = pJ * inverseRhoJ * inverseRhoJ;
   const float tensileJ = pJ < 0.0f ? -kTensileCoefficient * termJ : 0.0f;
   // Capped at 1: Wendland C2 at h = 2 spacings is so peaked that W(0) / W(spacing) = 5.3, and
@@ -137,14 +136,24 @@ __attribute__((always_inline)) inline float momentumFactor(float dx, float dy, f
   // h v_ij.x_ij / (r^2 + eta^2) and rho_ij the pair's mean density.
   const float approaching = approach < 0.0f ? approach : 0.0f;
   const float artificial = -2.0f * k.alpha * k.c0 * k.hSmooth * approaching * inverse * rhoJ;
-  float scalar = -(k.pressureCorrection * (termI + termJ) + (tensileI + tensileJ) * f2 * f2 + artificial);
   if constexpr (Laminar)
   {
-    const float laminarApproach =
-      NoSlipImage ? (vq[0] - t[0] * vxj) * dx + (vq[1] - t[1] * vyj) * dy + (vq[2] - t[2] * vzj) * dz : approach;
-    scalar += k.nu10 * inverseRhoJ * laminarApproach * inverseR2;
+    // Morris et al. (1997): nu lap v_i = 2 nu sum_j (m / rho_j) x_ij . grad W_ij / (r^2 + eta^2) v_ij,
+    // with x_ij . grad W_ij = r^2 (dW/dr) / r.
+    *laminar = k.nu2 * rr * inverse * sumRho;
   }
-  return scalar;
+  return -(k.pressureCorrection * (termI + termJ) + (tensileI + tensileJ) * f2 * f2 + artificial);
+}
+
+/// The relative velocity of a pair for the laminar term: v_i - v_j, or with a no-slip wall image
+/// (`t`, read only with NoSlipImage) v_i - t v_j.
+template<bool NoSlipImage>
+__attribute__((always_inline)) inline void laminarVelocity(const float* vq, float vxj, float vyj, float vzj,
+                                                           const float* t, float& wx, float& wy, float& wz)
+{
+  wx = vq[0] - (NoSlipImage ? t[0] * vxj : vxj);
+  wy = vq[1] - (NoSlipImage ? t[1] * vyj : vyj);
+  wz = vq[2] - (NoSlipImage ? t[2] * vzj : vzj);
 }
 
 /// The candidates within the kernel's support (their buffer positions `hits`) and the buffer's
@@ -197,12 +206,22 @@ __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, c
     const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
     const float rr = dx * dx + dy * dy + dz * dz; // computed: a gather of the search's r^2 costs more
     const WendlandPair w(k.w, __builtin_sqrtf(rr));
-    const float scalar = momentumFactor<Laminar, NoSlipImage>(dx, dy, dz, rr, w.value, vq, vx[j], vy[j], vz[j], rhoI,
-                                                              termI, tensileI, rho[j], pressure[j], t, k) *
+    float laminar = 0.0f;
+    const float scalar = momentumFactor<Laminar>(dx, dy, dz, rr, w.value, vq, vx[j], vy[j], vz[j], rhoI, termI,
+                                                 tensileI, rho[j], pressure[j], k, &laminar) *
                          (k.mass * w.gradient); // the product first, as before the factor was shared
     ax += scalar * dx;
     ay += scalar * dy;
     az += scalar * dz;
+    if constexpr (Laminar)
+    {
+      float wx, wy, wz;
+      laminarVelocity<NoSlipImage>(vq, vx[j], vy[j], vz[j], t, wx, wy, wz);
+      const float viscous = laminar * (k.mass * w.gradient);
+      ax += viscous * wx;
+      ay += viscous * wy;
+      az += viscous * wz;
+    }
   }
   out->a[0] = ax;
   out->a[1] = ay;
@@ -320,12 +339,22 @@ void addOwnImageForce(const float* q, const float* vq, const float* t, const flo
   const float dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
   const float term = p / (rho * rho);
   const float tensile = p < 0.0f ? -kTensileCoefficient * term : 0.0f;
+  float laminar = 0.0f;
   const float scalar = momentumFactor<Laminar>(dx, dy, dz, dx * dx + dy * dy + dz * dz, WendlandPair(k.w, r).value, vq,
-                                               v[0], v[1], v[2], rho, term, tensile, rho, p, t, k) *
+                                               v[0], v[1], v[2], rho, term, tensile, rho, p, k, &laminar) *
                        k.mass * change;
   a[0] += scalar * dx;
   a[1] += scalar * dy;
   a[2] += scalar * dz;
+  if constexpr (Laminar)
+  {
+    float w[3];
+    laminarVelocity<true>(vq, v[0], v[1], v[2], t, w[0], w[1], w[2]);
+    for (int d = 0; d < 3; ++d)
+    {
+      a[d] += laminar * k.mass * change * w[d];
+    }
+  }
 }
 
 /// The same change of particle i's continuity sum.
@@ -546,7 +575,7 @@ Constants constants(const SPHParameters& p, double soundSpeed, float spacing, fl
                     p.artificialViscosity,
                     p.densityDiffusion,
                     // Müller's extra viscosity, when set, joins the physical one here.
-                    10.0f * (p.kinematicViscosity + p.viscosity / p.restDensity) * laplacianCorrection,
+                    2.0f * (p.kinematicViscosity + p.viscosity / p.restDensity) * laplacianCorrection,
                     p.restDensity,
                     static_cast<float>(1.0 / (soundSpeed * soundSpeed)),
                     // Gravity along a periodic axis drives a flow and builds no hydrostatic pressure.

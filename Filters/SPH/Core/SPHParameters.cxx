@@ -14,6 +14,29 @@ bool positiveFinite(float v)
 {
   return std::isfinite(v) && v > 0.0f;
 }
+
+/// Calls f(r, dx, dz) for every site of a cubic lattice of the given spacing other than the
+/// origin, out to the kernel's reach: r its distance, dx and dz its offsets along x and z [m]
+/// (x_j - x_i for a particle i at the origin).
+template<class F>
+void forEachLatticeNeighbour(float spacing, float smoothingLength, F&& f)
+{
+  const int reach = static_cast<int>(std::ceil(smoothingLength / spacing));
+  for (int k = -reach; k <= reach; ++k)
+  {
+    for (int j = -reach; j <= reach; ++j)
+    {
+      for (int i = -reach; i <= reach; ++i)
+      {
+        const double r = std::sqrt(double(i) * i + double(j) * j + double(k) * k) * spacing;
+        if (r > 0.0)
+        {
+          f(r, double(i) * spacing, double(k) * spacing);
+        }
+      }
+    }
+  }
+}
 } // namespace
 using detail::AnyKernel;
 
@@ -198,23 +221,10 @@ float latticeSpikyGradientCorrection(float spacing, float smoothingLength)
   // V from the poly6 density of the lattice (what Müller's WCSPH measures), the moment from spiky.
   const double volume = latticeParticleMass(spacing, smoothingLength, 1.0f, DensityKernel::Poly6);
   const SpikyKernel spiky(smoothingLength);
-  const int reach = static_cast<int>(std::ceil(smoothingLength / spacing));
   double moment = 0.0;
-  for (int k = -reach; k <= reach; ++k)
-  {
-    for (int j = -reach; j <= reach; ++j)
-    {
-      for (int i = -reach; i <= reach; ++i)
-      {
-        const double r = std::sqrt(double(i) * i + double(j) * j + double(k) * k) * spacing;
-        if (r > 0.0)
-        {
-          const double dz = double(k) * spacing;
-          moment -= spiky.radialDerivative(static_cast<float>(r)) / r * dz * dz;
-        }
-      }
-    }
-  }
+  forEachLatticeNeighbour(spacing, smoothingLength,
+                          [&](double r, double, double dz)
+                          { moment -= spiky.radialDerivative(static_cast<float>(r)) / r * dz * dz; });
   const double c = volume * moment;
   return c > 0.0 ? static_cast<float>(1.0 / c) : 1.0f;
 }
@@ -231,27 +241,35 @@ float latticeLaplacianCorrection(float spacing, float smoothingLength, DensityKe
   const AnyKernel w(kernel, smoothingLength);
   const SpikyKernel spiky(smoothingLength);
   const double eta2 = 0.01 * 0.25 * double(smoothingLength) * smoothingLength;
-  const int reach = static_cast<int>(std::ceil(smoothingLength / spacing));
   double laplacian = 0.0;
-  for (int k = -reach; k <= reach; ++k)
+  forEachLatticeNeighbour(spacing, smoothingLength,
+                          [&](double r, double offsetX, double offsetZ)
+                          {
+                            const auto rf = static_cast<float>(r);
+                            const double gradient = (spikyGradient ? spiky.radialDerivative(rf) : w.derivative(rf)) / r;
+                            const double dx = -offsetX, dz = -offsetZ; // x_i - x_j
+                            const double relative = -0.5 * dz * dz;    // v_i - v_j (x component)
+                            laplacian += 10.0 * volume * relative * dx / (r * r + eta2) * gradient * dx;
+                          });
+  return laplacian > 0.0 ? static_cast<float>(1.0 / laplacian) : 1.0f;
+}
+
+float latticeMorrisLaplacianCorrection(float spacing, float smoothingLength, DensityKernel kernel)
+{
+  if (!positiveFinite(spacing) || !positiveFinite(smoothingLength) || smoothingLength / spacing > 50.0f)
   {
-    for (int j = -reach; j <= reach; ++j)
-    {
-      for (int i = -reach; i <= reach; ++i)
-      {
-        const double r = std::sqrt(double(i) * i + double(j) * j + double(k) * k) * spacing;
-        if (r <= 0.0)
-        {
-          continue;
-        }
-        const auto rf = static_cast<float>(r);
-        const double gradient = (spikyGradient ? spiky.radialDerivative(rf) : w.derivative(rf)) / r;
-        const double dx = -double(i) * spacing, dz = -double(k) * spacing; // x_i - x_j
-        const double relative = -0.5 * dz * dz;                            // v_i - v_j (x component)
-        laplacian += 10.0 * volume * relative * dx / (r * r + eta2) * gradient * dx;
-      }
-    }
+    return 1.0f;
   }
+  // The operator applied to the shear flow v = (z^2 / 2, 0, 0) (Laplacian (1, 0, 0)) at a particle
+  // at the origin of the lattice: v_i - v_j = -dz^2 / 2 and x_ij . grad W = r dW/dr.
+  const double volume = latticeParticleMass(spacing, smoothingLength, 1.0f, kernel);
+  const AnyKernel w(kernel, smoothingLength);
+  const double eta2 = 0.01 * 0.25 * double(smoothingLength) * smoothingLength;
+  double laplacian = 0.0;
+  forEachLatticeNeighbour(
+    spacing, smoothingLength,
+    [&](double r, double, double dz)
+    { laplacian += 2.0 * volume * r * w.derivative(static_cast<float>(r)) / (r * r + eta2) * (-0.5 * dz * dz); });
   return laplacian > 0.0 ? static_cast<float>(1.0 / laplacian) : 1.0f;
 }
 

@@ -96,8 +96,12 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial,
   const SPHParameters& p = this->Parameters;
   this->ParticleSpacing = latticeSpacingForMass(p.particleMass, p.smoothingLength, p.restDensity, p.densityKernel());
   const bool spiky = p.pressureSolver == PressureSolverType::WCSPH; // Müller's viscous term uses spiky's gradient
-  this->LaplacianCorrection = latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength,
-                                                         spiky ? DensityKernel::Poly6 : p.densityKernel(), spiky);
+  // δ-SPH's laminar term is Morris's operator, the others' Monaghan's (see SPHParameters.h).
+  this->LaplacianCorrection =
+    p.pressureSolver == PressureSolverType::DeltaSPH
+      ? latticeMorrisLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, p.densityKernel())
+      : latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength,
+                                   spiky ? DensityKernel::Poly6 : p.densityKernel(), spiky);
   this->SpikyGradientCorrection = latticeSpikyGradientCorrection(this->ParticleSpacing, p.smoothingLength);
   if (this->Boundary && this->Boundary->triangleCount() > 0 && p.meshWallDensity &&
       p.pressureSolver != PressureSolverType::WCSPH)

@@ -9,7 +9,8 @@
 //  - Tait's equation of state p = B ((rho / rho0)^7 - 1), B = c0^2 rho0 / 7;
 //  - the momentum-conserving pressure gradient -sum_j m (p_i / rho_i^2 + p_j / rho_j^2) grad W_ij;
 //  - Monaghan's (1992) artificial viscosity with a small alpha as the only numerical viscosity, and
-//    the fluid's physical viscosity (the laminar term of SPHParameters::kinematicViscosity);
+//    the fluid's physical viscosity (the laminar term of SPHParameters::kinematicViscosity, by
+//    Morris et al.'s 1997 operator, whose lattice error does not depend on the shear's direction);
 //  - negative pressure kept, with Monaghan's (2000) tensile correction against particle pairing
 //    and particle shifting (Lind et al. 2012) against the voids of stretched flow;
 //  - the Wendland C2 kernel, and a kick-drift-kick leapfrog in which density moves with position;

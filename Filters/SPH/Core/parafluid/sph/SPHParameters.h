@@ -44,7 +44,8 @@ struct SPHParameters
   float restDensity = 1000.0f;   // rho0 [kg/m^3]
   float gasStiffness = 1000.0f;  // k [m^2/s^2] in p = k (rho - rho0); sqrt(k) is the sound speed (WCSPH)
   // nu [m^2/s]: the fluid's kinematic viscosity, the physical (laminar) viscous stress of every
-  // solver (the operator of Monaghan 2005 / Weiler et al. 2018); water at 20 °C: 1.0e-6, honey
+  // solver (δ-SPH: the operator of Morris et al. 1997; DFSPH and Müller's: Monaghan 2005 / Weiler et
+  // al. 2018); water at 20 °C: 1.0e-6, honey
   // about 1e-2. DFSPH solves it implicitly, so a high value does not shorten the step.
   float kinematicViscosity = 1.0e-6f;
   // mu [Pa s]: the extra viscosity of Müller's seed method (its paper uses 3.5 for water, 3500
@@ -173,6 +174,13 @@ float latticeGradientCorrection(float spacing, float smoothingLength, DensityKer
 /// fluid's viscosity. spikyGradient: the gradient of Müller's spiky kernel (with poly6 volumes).
 float latticeLaplacianCorrection(float spacing, float smoothingLength, DensityKernel kernel,
                                  bool spikyGradient = false);
+
+/// The same for Morris et al.'s (1997) operator 2 sum_j V x_ij . grad W_ij / (r^2 + eta^2) v_ij (δ-SPH's
+/// laminar term). Its error on a lattice is the same for every direction of shear (its second
+/// moment is isotropic on a cubic lattice), so this correction, unlike the one above, suits
+/// a disordered flow as well as a layered one: about 1.01 for Wendland C2 at 3 spacings (the
+/// eta^2 of the pair closest in).
+float latticeMorrisLaplacianCorrection(float spacing, float smoothingLength, DensityKernel kernel);
 
 /// The same for Müller's pressure force: the spiky gradient with volumes from the poly6 density.
 float latticeSpikyGradientCorrection(float spacing, float smoothingLength);
