@@ -2,9 +2,10 @@
 // SCA 2015): each step predicts velocities from the non-pressure forces, corrects them so that the
 // density predicted at the end of the step is rest density (density solve), moves the particles,
 // then corrects the velocities again so that the density does not change (divergence solve).
-// Both solves are Jacobi iterations on per-particle stiffnesses k_i (= p_i / rho_i^2), warm-started
-// with the previous step's sums. Density and its gradient use the cubic spline, so what the solver
-// predicts is what the next density pass measures.
+// Both solves work on per-particle stiffnesses k_i (= p_i / rho_i^2), warm-started with the previous
+// step's sums; the divergence solve by Jacobi iterations, the density solve by a conjugate gradient
+// (DFSPHConjugateGradient.cxx) or, as Bender & Koschier's implementation, Jacobi iterations. Density and its gradient
+// use the cubic spline, so what the solver predicts is what the next density pass measures.
 #include "parafluid/sph/DFSPHSolver.h"
 
 #include "parafluid/sph/SPHSolver.h"
@@ -25,11 +26,6 @@ using detail::threadCount;
 
 namespace
 {
-/// A particle with fewer neighbours than this (itself and wall images included) is at the free
-/// surface: a full neighbourhood at h = 2 spacings holds 27, a surface layer 18. The divergence
-/// solve leaves surface particles free to separate, as Bender & Koschier's implementation does.
-constexpr std::uint16_t kSurfaceNeighbours = 20;
-
 /// Cubic-spline W(r) and (dW/dr)/r without branches, for the vectorised pair loops.
 struct CubicPair
 {
@@ -116,8 +112,11 @@ void DFSPHSolver::restart(SPHSolver& sim)
 std::size_t DFSPHSolver::bytes() const
 {
   std::size_t total = this->NeighbourCount.capacity() * sizeof(std::uint16_t);
+  total += this->Active.capacity();
   for (const auto* a :
-       { &this->Factor, &this->DensityRate, &this->Stiffness, &this->DensityStiffness, &this->DivergenceStiffness })
+       { &this->Factor, &this->DensityRate, &this->Stiffness, &this->DensityStiffness, &this->DivergenceStiffness,
+         &this->Residual, &this->Direction, &this->Product, &this->Preconditioned, &this->Increment,
+         &this->SavedVelocity[0], &this->SavedVelocity[1], &this->SavedVelocity[2] })
   {
     total += a->capacity() * sizeof(float);
   }
@@ -237,7 +236,7 @@ void DFSPHSolver::computeDensityRate(SPHSolver& sim)
     });
 }
 
-void DFSPHSolver::applyPressureImpulse(SPHSolver& sim, float dt)
+void DFSPHSolver::applyPressureImpulse(SPHSolver& sim, float dt, bool record)
 {
   ParticleState& s = sim.State;
   const SPHParameters& p = sim.Parameters;
@@ -290,21 +289,22 @@ void DFSPHSolver::applyPressureImpulse(SPHSolver& sim, float dt)
                           s.vx[i] += dt * a[0];
                           s.vy[i] += dt * a[1];
                           s.vz[i] += dt * a[2];
-                          s.ax[i] += a[0];
-                          s.ay[i] += a[1];
-                          s.az[i] += a[2];
+                          if (record)
+                          {
+                            s.ax[i] += a[0];
+                            s.ay[i] += a[1];
+                            s.az[i] += a[2];
+                          }
                         });
 }
 
-void DFSPHSolver::warmStart(SPHSolver& sim, std::vector<float>& accumulated, float dt)
+void DFSPHSolver::warmStart(SPHSolver& sim, std::vector<float>& accumulated, float dt, float keep)
 {
-  // Half the previous step's pressure starts this one: a good guess that still decays when it was
-  // too high (the iterations only ever add pressure, never take it away).
   const auto n = static_cast<std::int64_t>(accumulated.size());
 #pragma omp parallel for schedule(static) num_threads(threadCount(sim.Parameters))
   for (std::int64_t i = 0; i < n; ++i)
   {
-    accumulated[i] *= 0.5f;
+    accumulated[i] *= keep;
   }
   this->Stiffness = accumulated;
   this->applyPressureImpulse(sim, dt);
@@ -317,7 +317,16 @@ int DFSPHSolver::solveDensity(SPHSolver& sim, float dt)
   const auto n = static_cast<std::int64_t>(s.size());
   const int threads = threadCount(p);
   const float rho0 = p.restDensity;
-  this->warmStart(sim, this->DensityStiffness, dt);
+  // Jacobi's iterations only ever add pressure, so they start from half the last step's, a good
+  // guess that still decays where it was too high; the conjugate gradient lowers pressure as well
+  // as it raises it, and starts from all of it (from half, the dam break 80 particles across took 126 s
+  // instead of 104 s of wall time, the same machine; Testing/Benchmarks/README.md).
+  if (p.pressureConjugateGradient)
+  {
+    this->warmStart(sim, this->DensityStiffness, dt, 1.0f);
+    return this->solveDensityByConjugateGradient(sim, dt);
+  }
+  this->warmStart(sim, this->DensityStiffness, dt, 0.5f);
   int iterations = 0;
   while (iterations < p.maxPressureIterations)
   {
@@ -355,7 +364,7 @@ int DFSPHSolver::solveDivergence(SPHSolver& sim, float dt)
   const auto n = static_cast<std::int64_t>(s.size());
   const int threads = threadCount(p);
   const float rho0 = p.restDensity;
-  this->warmStart(sim, this->DivergenceStiffness, dt);
+  this->warmStart(sim, this->DivergenceStiffness, dt, 0.5f);
   int iterations = 0;
   while (iterations < p.maxPressureIterations)
   {

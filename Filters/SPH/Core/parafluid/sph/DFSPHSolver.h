@@ -1,7 +1,8 @@
 #pragma once
 // Divergence-free SPH (Bender & Koschier, "Divergence-Free Smoothed Particle Hydrodynamics",
-// SCA 2015 / TVCG 2017): cubic-spline kernel, a density solve before the position update and a
-// divergence solve after it, both Jacobi iterations on per-particle stiffnesses warm-started from
+// SCA 2015 / TVCG 2017): cubic-spline kernel, a density solve before the position update (a
+// conjugate gradient, or Jacobi iterations: SPHParameters::pressureConjugateGradient) and a
+// divergence solve after it (Jacobi iterations), on per-particle stiffnesses warm-started from
 // the last step. The fluid's viscosity is solved implicitly before the density solve (Weiler et
 // al. 2018), so it does not limit the step.
 #include "parafluid/sph/PressureSolver.h"
@@ -21,8 +22,14 @@ public:
   void restart(SPHSolver& sim) override;
 
 private:
+  /// A particle with fewer neighbours than this (itself and wall images included) is at the free
+  /// surface: a full neighbourhood at h = 2 spacings holds 27, a surface layer 18. The divergence
+  /// solve leaves surface particles free to separate, as Bender & Koschier's implementation does.
+  static constexpr std::uint16_t kSurfaceNeighbours = 20;
+
   void computeDensityAndFactor(SPHSolver& sim);
-  void warmStart(SPHSolver& sim, std::vector<float>& accumulated, float dt);
+  /// Scales the last step's stiffnesses by `keep` and applies their impulse.
+  void warmStart(SPHSolver& sim, std::vector<float>& accumulated, float dt, float keep);
   int solveDensity(SPHSolver& sim, float dt);
   int solveDivergence(SPHSolver& sim, float dt);
   /// Sum over neighbours j of m (v_i - v_j) . grad W_ij into DensityRate (D rho / D t).
@@ -30,13 +37,32 @@ private:
   /// Replaces the predicted velocities by the implicit viscous solve (ImplicitViscosity.cxx);
   /// returns the conjugate-gradient iterations.
   int solveViscosity(SPHSolver& sim, float dt);
-  /// v_i -= dt sum_j m (k_i + k_j) grad W_ij with k = Stiffness.
-  void applyPressureImpulse(SPHSolver& sim, float dt);
+  /// v_i -= dt sum_j m (k_i + k_j) grad W_ij with k = Stiffness; `record` adds it to the
+  /// accelerations output too.
+  void applyPressureImpulse(SPHSolver& sim, float dt, bool record = true);
+  /// The density solve as a conjugate gradient (DFSPHConjugateGradient.cxx); returns iterations.
+  int solveDensityByConjugateGradient(SPHSolver& sim, float dt);
+  /// From the warm start `accumulated` (already applied), finds the stiffness increments on the
+  /// particles in `active` that make the predicted density error `error` (kg/m^3, one per particle)
+  /// vanish within at most `budget` iterations, adds them to `accumulated` (clamped to no tension)
+  /// and applies their impulse. Returns iterations.
+  int solveConjugateGradient(SPHSolver& sim, float dt, std::vector<float>& accumulated, std::vector<float>& error,
+                             const std::vector<char>& active, int budget);
+  /// Where no particle is at a free surface, takes the mean over the particles in Active out of
+  /// `error` (no pressure can change an enclosed fluid's volume).
+  void removeEnclosedMean(SPHSolver& sim, std::vector<float>& error) const;
+  /// B x = -dt D(dv(x)): the density change the impulse of stiffnesses x takes away, rows outside
+  /// `active` zero (velocities and accelerations left as they were).
+  void densityChangeOperator(SPHSolver& sim, float dt, const std::vector<float>& x, const std::vector<char>& active,
+                             std::vector<float>& out);
 
   // alpha factor, D rho / D t, the stiffness of the current iteration, and the accumulated
   // stiffness of both solves (the warm start of the next step; p = rho^2 k).
   std::vector<float> Factor, DensityRate, Stiffness, DensityStiffness, DivergenceStiffness;
   std::vector<std::uint16_t> NeighbourCount; // neighbours incl. images, for the surface test
-  float GradientCorrection = 1.0f;           // pressure forces, see latticeGradientCorrection
+  // The conjugate gradient's vectors, and the velocities kept aside while its operator runs.
+  std::vector<float> Residual, Direction, Product, Preconditioned, Increment, SavedVelocity[3];
+  std::vector<char> Active;
+  float GradientCorrection = 1.0f; // pressure forces, see latticeGradientCorrection
 };
 } // namespace parafluid::sph

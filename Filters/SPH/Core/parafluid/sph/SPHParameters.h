@@ -111,6 +111,12 @@ struct SPHParameters
   float densityTolerance = 0.001f;
   float divergenceTolerance = 0.001f;
   int maxPressureIterations = 100;
+  // DFSPH: the density solve by a conjugate gradient on the particles under pressure (a
+  // symmetric system: the divergence is the transpose of the symmetric pressure gradient), which
+  // carries pressure through a column N particles deep in O(N) iterations where Jacobi's take
+  // O(N^2); false: Jacobi, as Bender & Koschier's implementation. The divergence solve, which
+  // corrects what is left within a step, stays Jacobi.
+  bool pressureConjugateGradient = true;
   // DFSPH's implicit viscosity: CG until the residual is below viscosityTolerance of the right-hand
   // side, at most maxPressureIterations iterations.
   float viscosityTolerance = 0.01f;
