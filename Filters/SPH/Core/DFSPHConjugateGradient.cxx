@@ -77,8 +77,7 @@ int DFSPHSolver::solveDensityByConjugateGradient(SPHSolver& sim, float dt)
       break;
     }
     this->removeEnclosedMean(sim, error);
-    iterations += this->solveConjugateGradient(sim, dt, this->DensityStiffness, error, this->Active,
-                                               p.maxPressureIterations - iterations);
+    iterations += this->solveConjugateGradient(sim, dt, p.maxPressureIterations - iterations);
   }
   return iterations;
 }
@@ -144,8 +143,7 @@ void DFSPHSolver::densityChangeOperator(SPHSolver& sim, float dt, const std::vec
   }
 }
 
-int DFSPHSolver::solveConjugateGradient(SPHSolver& sim, float dt, std::vector<float>& accumulated,
-                                        std::vector<float>& error, const std::vector<char>& active, int budget)
+int DFSPHSolver::solveConjugateGradient(SPHSolver& sim, float dt, int budget)
 {
   ParticleState& s = sim.State;
   const SPHParameters& p = sim.Parameters;
@@ -153,7 +151,9 @@ int DFSPHSolver::solveConjugateGradient(SPHSolver& sim, float dt, std::vector<fl
   const auto count = static_cast<std::int64_t>(n);
   const int threads = detail::threadCount(p);
   const double limit = static_cast<double>(p.densityTolerance) * p.restDensity * static_cast<double>(n);
-  std::vector<float>& r = error; // the residual: what is left of the predicted density error
+  std::vector<float>& r = this->Residual; // what is left of the predicted density error
+  std::vector<float>& accumulated = this->DensityStiffness;
+  const std::vector<char>& active = this->Active;
   std::vector<float>&z = this->Preconditioned, &d = this->Direction, &q = this->Product, &x = this->Increment;
   z.resize(n);
   x.assign(n, 0.0f);

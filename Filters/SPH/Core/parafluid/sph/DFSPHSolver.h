@@ -42,12 +42,11 @@ private:
   void applyPressureImpulse(SPHSolver& sim, float dt, bool record = true);
   /// The density solve as a conjugate gradient (DFSPHConjugateGradient.cxx); returns iterations.
   int solveDensityByConjugateGradient(SPHSolver& sim, float dt);
-  /// From the warm start `accumulated` (already applied), finds the stiffness increments on the
-  /// particles in `active` that make the predicted density error `error` (kg/m^3, one per particle)
-  /// vanish within at most `budget` iterations, adds them to `accumulated` (clamped to no tension)
-  /// and applies their impulse. Returns iterations.
-  int solveConjugateGradient(SPHSolver& sim, float dt, std::vector<float>& accumulated, std::vector<float>& error,
-                             const std::vector<char>& active, int budget);
+  /// From the warm start DensityStiffness (already applied), finds the stiffness increments on the
+  /// particles in Active that make the predicted density error in Residual (kg/m^3, one per
+  /// particle) vanish within at most `budget` iterations, adds them to DensityStiffness (clamped to
+  /// no tension) and applies their impulse. Returns iterations.
+  int solveConjugateGradient(SPHSolver& sim, float dt, int budget);
   /// Where no particle is at a free surface, takes the mean over the particles in Active out of
   /// `error` (no pressure can change an enclosed fluid's volume).
   void removeEnclosedMean(SPHSolver& sim, std::vector<float>& error) const;
