@@ -77,6 +77,11 @@ public:
   double GetDensityDiffusion() const { return this->Parameters.densityDiffusion; }
   void SetSoundSpeed(double value) { this->SetParameter(this->Parameters.soundSpeed, value); }
   double GetSoundSpeed() const { return this->Parameters.soundSpeed; }
+  /// δ-SPH: shift interior particles towards uniform spacing after each move (Lind et al. 2012,
+  /// with the δ+-SPH coefficient of Sun et al. 2017), for flows that stretch the particle
+  /// distribution (vortices).
+  void SetParticleShifting(bool value) { this->SetParameter(this->Parameters.particleShifting, value); }
+  bool GetParticleShifting() const { return this->Parameters.particleShifting; }
 
   /// Periodic axes x, y, z (0 or 1): the pair of box faces of that axis wrap around.
   void SetPeriodicAxes(int x, int y, int z);

@@ -18,7 +18,8 @@ using namespace parafluid::sph;
 
 SPHSolver damBreak(std::size_t particles, int threads, PressureSolverType solverKind = PressureSolverType::WCSPH,
                    float surfaceTension = 0.0f, bool adaptive = false, double kernelRatio = 2.0,
-                   float kinematicViscosity = 1e-6f, ViscositySolver cg = ViscositySolver::HandWrittenCG)
+                   float kinematicViscosity = 1e-6f, ViscositySolver cg = ViscositySolver::HandWrittenCG,
+                   bool particleShifting = false)
 {
   // Block of a x 2a x a (x, z, y) layers of spacing d: particles = 2 a^3 / d^3.
   const double a = 0.5;
@@ -32,6 +33,7 @@ SPHSolver damBreak(std::size_t particles, int threads, PressureSolverType solver
   p.viscosity = solverKind == PressureSolverType::WCSPH ? 3.5f : 0.0f;
   p.kinematicViscosity = kinematicViscosity;
   p.viscositySolver = cg;
+  p.particleShifting = particleShifting;
   // Fixed steps at CFL 0.2 of each scheme's sound speed (sqrt(k) = 31.6 m/s for Müller's, c0 =
   // 10 sqrt(2 g 1 m) = 44 m/s for δ-SPH).
   p.timeStep = static_cast<float>(0.2 * p.smoothingLength / (solverKind == PressureSolverType::DeltaSPH ? 44.3 : 31.6));
@@ -68,11 +70,13 @@ double meanNeighbours(const SPHSolver& solver)
 
 void BM_SPHStep(benchmark::State& state)
 {
-  // solver 0: Müller's WCSPH; 2: δ-SPH at h = 2 spacings; 3: δ-SPH at h = 3 spacings.
+  // solver 0: Müller's WCSPH; 2: δ-SPH at h = 2 spacings; 3: δ-SPH at h = 3 spacings; 4: the same with
+  // particle shifting (SPH Step's ParticleShifting).
   const bool delta = state.range(2) >= 2;
-  SPHSolver solver = damBreak(static_cast<std::size_t>(state.range(0)), static_cast<int>(state.range(1)),
-                              delta ? PressureSolverType::DeltaSPH : PressureSolverType::WCSPH, 0.0f, false,
-                              state.range(2) == 3 ? 3.0 : 2.0);
+  SPHSolver solver =
+    damBreak(static_cast<std::size_t>(state.range(0)), static_cast<int>(state.range(1)),
+             delta ? PressureSolverType::DeltaSPH : PressureSolverType::WCSPH, 0.0f, false,
+             state.range(2) >= 3 ? 3.0 : 2.0, 1e-6f, ViscositySolver::HandWrittenCG, state.range(2) == 4);
   for (auto _ : state)
   {
     solver.step();
@@ -92,6 +96,7 @@ BENCHMARK(BM_SPHStep)
   ->Args({ 100'000, 2, 0 })
   ->Args({ 100'000, 2, 2 })
   ->Args({ 100'000, 2, 3 })
+  ->Args({ 100'000, 2, 4 })
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime()
   ->MinTime(2.0);

@@ -32,6 +32,21 @@ sph.Viscosity = 1.0
 pftest.fetch(sph, times[5])
 pftest.check(steps_taken(sph) == 50, "a new Viscosity must restart the run")
 
+# Particle shifting (δ-SPH, off by default) is a property like the others: switching it on
+# restarts the run, moves the particles differently and keeps them finite and inside the box.
+pftest.check(sph.ParticleShifting == 0, "ParticleShifting must be off by default")
+unshifted = pftest.points(pftest.fetch(sph, times[5]))
+sph.ParticleShifting = 1
+shifted = pftest.points(pftest.fetch(sph, times[5]))
+pftest.check(steps_taken(sph) == 50, "a new ParticleShifting must restart the run (took %d steps)" % steps_taken(sph))
+moved = np.abs(shifted - unshifted).max()
+print("largest move by shifting: %g m" % moved)
+pftest.check(moved > 1e-7, "ParticleShifting changed no particle (largest difference %g m)" % moved)
+pftest.check(np.all(np.isfinite(shifted)), "non-finite positions with ParticleShifting")
+pftest.check(shifted[:, 0].min() >= 0 and shifted[:, 0].max() <= 0.6 and shifted[:, 2].min() >= 0,
+             "a shifted particle left the box")
+sph.ParticleShifting = 0
+
 # Output keeps the input's order: the particle with id k is point k.
 data = pftest.fetch(sph, times[5])
 pftest.check(np.array_equal(pftest.point_array(data, "id"), np.arange(data.GetNumberOfPoints())), "order not kept")

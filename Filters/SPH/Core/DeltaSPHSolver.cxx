@@ -307,6 +307,41 @@ float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float
   return rate;
 }
 
+/// The sums of particle shifting at q over the padded hits: sum_j W_ij into out[0] and the
+/// concentration gradient sum_j (dW/dr)/r (1 + 0.2 (W_ij / W(dp))^4) (q - x_j) into out[1..3].
+/// (The padding's far sentinel adds exactly zero: its kernel value and gradient vanish.)
+__attribute__((always_inline)) inline void shiftingSumsBody(const float* px, const float* py, const float* pz,
+                                                            const std::uint32_t* hits, std::uint32_t count,
+                                                            const float* q, const WendlandC2Kernel& w,
+                                                            float inverseWSpacing, float* out)
+{
+  float ws = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f;
+#pragma omp simd reduction(+ : ws, gx, gy, gz)
+  for (std::uint32_t n = 0; n < count; ++n)
+  {
+    const int j = static_cast<int>(hits[n]); // signed: a gather sign-extends its 32-bit indices
+    const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
+    const WendlandPair pair(w, __builtin_sqrtf(dx * dx + dy * dy + dz * dz));
+    const float f = pair.value * inverseWSpacing;
+    const float f2 = f * f;
+    const float weight = pair.gradient * (1.0f + 0.2f * f2 * f2);
+    ws += pair.value;
+    gx += weight * dx;
+    gy += weight * dy;
+    gz += weight * dz;
+  }
+  out[0] = ws;
+  out[1] = gx;
+  out[2] = gy;
+  out[3] = gz;
+}
+
+PARAFLUID_SIMD_DISPATCH(shiftingSums,
+                        (const float* px, const float* py, const float* pz, const std::uint32_t* hits,
+                         std::uint32_t count, const float* q, const WendlandC2Kernel& w, float inverseWSpacing,
+                         float* out),
+                        (px, py, pz, hits, count, q, w, inverseWSpacing, out), shiftingSumsBody)
+
 /// How much the pair of particle i (at x) and its own image (at q) changes its gradient, from the
 /// kernel's to ownImageGradient; 0 where it does not. r is |q - x|.
 float ownImageChange(const float* q, const float* x, const Constants& k, float& r)
@@ -686,45 +721,38 @@ void DeltaSPHSolver::shiftParticles(SPHSolver& sim, float dt)
     return;
   }
   const float diffusion = 2.0f * p.smoothingLength * fastest * dt * volume;
-  forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p), {},
-                        [&](CandidateBuffer& c, std::uint32_t i)
-                        {
-                          const float position[3] = { s.x[i], s.y[i], s.z[i] };
-                          float sum = 0.0f, g[3] = { 0.0f, 0.0f, 0.0f };
-                          forEachWallImage(position, position, p,
-                                           [&](const float* q, const float*, const float*, const float* scale, bool)
-                                           {
-                                             const std::uint32_t count = c.findHits(q, w.h2);
-                                             float ws = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f;
-                                             for (std::uint32_t k = 0; k < count; ++k)
-                                             {
-                                               const std::uint32_t j = c.hits[k];
-                                               const WendlandPair pair(w, std::sqrt(c.distanceSquared[j]));
-                                               const float f = pair.value * inverseWSpacing;
-                                               const float weight = pair.gradient * (1.0f + 0.2f * f * f * f * f);
-                                               ws += pair.value;
-                                               gx += weight * (q[0] - c.x[j]);
-                                               gy += weight * (q[1] - c.y[j]);
-                                               gz += weight * (q[2] - c.z[j]);
-                                             }
-                                             sum += ws;
-                                             g[0] += scale[0] * gx;
-                                             g[1] += scale[1] * gy;
-                                             g[2] += scale[2] * gz;
-                                           });
-                          if (volume * sum < 0.9f)
-                          {
-                            return;
-                          }
-                          float shift[3] = { -diffusion * g[0], -diffusion * g[1], -diffusion * g[2] };
-                          const float length =
-                            std::sqrt(shift[0] * shift[0] + shift[1] * shift[1] + shift[2] * shift[2]);
-                          const float scale = length > limit ? limit / length : 1.0f;
-                          for (int a = 0; a < 3; ++a)
-                          {
-                            this->Shift[3 * i + a] = scale * shift[a];
-                          }
-                        });
+  forEachParticleByCell(
+    sim.Grid, s, p.smoothingLength, threadCount(p), {},
+    [&](CandidateBuffer& c, std::uint32_t i)
+    {
+      const float position[3] = { s.x[i], s.y[i], s.z[i] };
+      float sum = 0.0f, g[3] = { 0.0f, 0.0f, 0.0f };
+      forEachWallImage(position, position, p,
+                       [&](const float* q, const float*, const float*, const float* scale, bool image)
+                       {
+                         // An image's neighbours are among the particle's own hits (found first).
+                         const std::uint32_t count =
+                           image ? c.findImageHits(q, w.h2) : c.padHits(c.findHits(q, w.h2, false));
+                         float sums[4];
+                         shiftingSums(c.x.data(), c.y.data(), c.z.data(), image ? c.imageHits.data() : c.hits.data(),
+                                      count, q, w, inverseWSpacing, sums);
+                         sum += sums[0];
+                         g[0] += scale[0] * sums[1];
+                         g[1] += scale[1] * sums[2];
+                         g[2] += scale[2] * sums[3];
+                       });
+      if (volume * sum < 0.9f)
+      {
+        return;
+      }
+      float shift[3] = { -diffusion * g[0], -diffusion * g[1], -diffusion * g[2] };
+      const float length = std::sqrt(shift[0] * shift[0] + shift[1] * shift[1] + shift[2] * shift[2]);
+      const float scale = length > limit ? limit / length : 1.0f;
+      for (int a = 0; a < 3; ++a)
+      {
+        this->Shift[3 * i + a] = scale * shift[a];
+      }
+    });
   // Applied after the pass (it reads every neighbour's position), through the walls' rules.
   const auto& b = p.domainBounds;
 #pragma omp parallel for schedule(static) num_threads(threadCount(p))
