@@ -790,6 +790,9 @@ double DeltaSPHSolver::step(SPHSolver& sim, double remaining)
   if (sim.Parameters.particleShifting)
   {
     this->shiftParticles(sim, h);
+    // The shift moved particles by up to 0.2 spacings, some out of their grid cells: sorted again,
+    // the passes after it find every pair within the support (about 2 % of a step).
+    sim.sortByCell();
     sim.findMeshWalls();
   }
   this->advanceDensity(sim, h);
