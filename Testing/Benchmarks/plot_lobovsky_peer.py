@@ -40,22 +40,22 @@ with open(os.path.join(args.validation, "lobovsky_curves.csv")) as f:
     rows = [r for r in csv.reader(f) if r and r[0] != "solver"]
 runs = sorted({(r[0], int(r[1])) for r in rows})
 for k, (solver, across) in enumerate(runs):
-    pts = [r for r in rows if (r[0], int(r[1])) == (solver, across)]
+    t = [float(r[2]) for r in rows if (r[0], int(r[1])) == (solver, across)]
+    p = [float(r[3]) for r in rows if (r[0], int(r[1])) == (solver, across)]
     print("ParaFluid %s, %d across: mean |p* - experiment| over t* %.1f-%.1f = %.2f" % (
-        solver, across, WINDOW[0], WINDOW[1], mean_departure([float(r[2]) for r in pts], [float(r[3]) for r in pts])))
+        solver, across, WINDOW[0], WINDOW[1], mean_departure(t, p)))
     for ax in (whole, impact):
-        ax.plot([float(r[2]) for r in pts], [float(r[3]) for r in pts], "-", color=shades[k % len(shades)], lw=1,
-                label="ParaFluid %s, %d across" % (solver, across))
+        ax.plot(t, p, "-", color=shades[k % len(shades)], lw=1, label="ParaFluid %s, %d across" % (solver, across))
 blues = ["tab:blue", "navy", "lightblue"]
 for k, path in enumerate(args.pysph):
     with open(path) as f:
-        pts = [r for r in csv.reader(f) if r and r[0] != "t_star"]
+        pts = [(float(r[0]), float(r[1])) for r in csv.reader(f) if r and r[0] != "t_star"]
+    t, p = [q[0] for q in pts], [q[1] for q in pts]
     across = re.search(r"(\d+)", os.path.basename(path)).group(1)
     print("pysph WCSPH, %s across: mean |p* - experiment| over t* %.1f-%.1f = %.2f" % (
-        across, WINDOW[0], WINDOW[1], mean_departure([float(r[0]) for r in pts], [float(r[1]) for r in pts])))
+        across, WINDOW[0], WINDOW[1], mean_departure(t, p)))
     for ax in (whole, impact):
-        ax.plot([float(r[0]) for r in pts], [float(r[1]) for r in pts], "-", color=blues[k % len(blues)], lw=1,
-                label="pysph WCSPH, %s across" % across)
+        ax.plot(t, p, "-", color=blues[k % len(blues)], lw=1, label="pysph WCSPH, %s across" % across)
 for ax in (whole, impact):
     ax.plot(LOBOVSKY_T, LOBOVSKY_P, "k^-", label="Lobovsky et al. (2014), sensor 1")
     ax.set_xlabel("t sqrt(g / H)")

@@ -16,6 +16,7 @@ Prints one summary line and writes pysph_lobovsky_<across>.csv (t*, p / (rho g H
 """
 import importlib.util
 import os
+import shutil
 import sys
 import tempfile
 import time
@@ -49,12 +50,13 @@ class Peer(example.DamBreak3D):
     def post_step(self, solver):
         if self.first_step_clock is None:
             self.first_step_clock = time.perf_counter()
+            self.fluid = [pa for pa in solver.particles if pa.name == "fluid"][0]
         self.steps = solver.count
         self.last_step_clock = time.perf_counter()
         if solver.t + 1e-12 < self.next_sample:
             return
         self.next_sample += SAMPLE
-        fluid = [pa for pa in solver.particles if pa.name == "fluid"][0]
+        fluid = self.fluid
         # ParaFluid's read-out: the kernel-weighted (poly6, radius 2 dx) mean of the fluid particles'
         # pressures around the sensor, by distance in x and z (the flow is uniform across the tank).
         wall = self.geom.container_length
@@ -89,8 +91,9 @@ app.curve = []
 dx = H / across
 app.run(["--openmp", "--dx", repr(dx), "--tf", repr(end_star / np.sqrt(G / H)), "-d", out, "--pfreq", "100000000",
          "--disable-output", "-q"])
+shutil.rmtree(out, ignore_errors=True)  # the run's log and info files: nothing read from them
 
-fluid = [pa for pa in app.particles if pa.name == "fluid"][0].get_number_of_particles()
+fluid = app.fluid.get_number_of_particles()
 boundary = sum(pa.get_number_of_particles() for pa in app.particles if pa.name != "fluid")
 wall_seconds = app.last_step_clock - app.first_step_clock
 simulated = app.solver.t

@@ -730,12 +730,10 @@ void DeltaSPHSolver::shiftParticles(SPHSolver& sim, float dt)
       forEachWallImage(position, position, p,
                        [&](const float* q, const float*, const float*, const float* scale, bool image)
                        {
-                         // An image's neighbours are among the particle's own hits (found first).
-                         const std::uint32_t count =
-                           image ? c.findImageHits(q, w.h2) : c.padHits(c.findHits(q, w.h2, false));
+                         // The pair loops' hits (an image's among its particle's own); no channel is read.
+                         const PairInput in(c, q, w.h2, image);
                          float sums[4];
-                         shiftingSums(c.x.data(), c.y.data(), c.z.data(), image ? c.imageHits.data() : c.hits.data(),
-                                      count, q, w, inverseWSpacing, sums);
+                         shiftingSums(in.px, in.py, in.pz, in.hits, in.count, q, w, inverseWSpacing, sums);
                          sum += sums[0];
                          g[0] += scale[0] * sums[1];
                          g[1] += scale[1] * sums[2];
