@@ -21,7 +21,7 @@ namespace parafluid
 {
 void RainStreakPass::EnsureRadiance(const RainFrame& frame, double refractiveIndex)
 {
-  const int rows = kTransferRows, width = 2 * kTransferRows;
+  const int rows = kTransferRows, width = kRadianceColumns;
   const bool newIndex = this->TransferTable.empty() || refractiveIndex != this->TransferIndex;
   if (newIndex)
   {
@@ -32,14 +32,15 @@ void RainStreakPass::EnsureRadiance(const RainFrame& frame, double refractiveInd
     this->TransferTable = drop.transferTable(width, rows);
     this->TransferIndex = refractiveIndex;
   }
-  if (!newIndex && this->Radiance && frame.Environment == this->RadianceEnvironment)
+  if (!newIndex && this->RadianceTexture && frame.Environment == this->RadianceEnvironment)
   {
     return;
   }
   // The drop's radiance toward each view direction: its transfer vector dotted with the
   // environment's coefficients, once per environment (8192 directions x 16 coefficients), so
   // that a drop's colour is one texture read instead of four reads and 48 products per vertex.
-  std::vector<float> texels(static_cast<std::size_t>(width) * rows * 4);
+  std::vector<float>& texels = this->RadianceTexels;
+  texels.assign(static_cast<std::size_t>(width) * rows * 4, 0.0f);
   for (std::size_t direction = 0; direction < static_cast<std::size_t>(width) * rows; ++direction)
   {
     const float* t = &this->TransferTable[direction * rain::kSHCount];
@@ -54,19 +55,25 @@ void RainStreakPass::EnsureRadiance(const RainFrame& frame, double refractiveInd
     }
     texels[4 * direction + 3] = 1.0f;
   }
-  if (!this->Radiance)
+  if (!this->RadianceTexture)
   {
-    this->Radiance = vtkSmartPointer<vtkTextureObject>::New();
-    this->Radiance->SetContext(frame.Window);
-    this->Radiance->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->Radiance->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->RadianceTexture = vtkSmartPointer<vtkTextureObject>::New();
+    this->RadianceTexture->SetContext(frame.Window);
+    this->RadianceTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->RadianceTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
   }
-  this->Radiance->ReleaseGraphicsResources(frame.Window);
-  this->Radiance->SetInternalFormat(GL_RGBA32F);
-  this->Radiance->SetFormat(GL_RGBA);
-  this->Radiance->SetDataType(GL_FLOAT);
-  this->Radiance->Create2DFromRaw(width, rows, 4, VTK_FLOAT, texels.data());
+  this->RadianceTexture->ReleaseGraphicsResources(frame.Window);
+  this->RadianceTexture->SetInternalFormat(GL_RGBA32F);
+  this->RadianceTexture->SetFormat(GL_RGBA);
+  this->RadianceTexture->SetDataType(GL_FLOAT);
+  this->RadianceTexture->Create2DFromRaw(width, rows, 4, VTK_FLOAT, texels.data());
   this->RadianceEnvironment = frame.Environment;
+}
+
+const std::vector<float>& RainStreakPass::Radiance(const RainFrame& frame, double refractiveIndex)
+{
+  this->EnsureRadiance(frame, refractiveIndex);
+  return this->RadianceTexels;
 }
 
 bool RainStreakPass::Run(const RainFrame& frame, const RainPointBuffer& drops, const Settings& settings)
@@ -91,10 +98,10 @@ bool RainStreakPass::Run(const RainFrame& frame, const RainPointBuffer& drops, c
     return false;
   }
   drops.Texture()->Activate();
-  this->Radiance->Activate();
+  this->RadianceTexture->Activate();
   vtkShaderProgram* program = this->Program;
   program->SetUniformi("drops", drops.Texture()->GetTextureUnit());
-  program->SetUniformi("radiance", this->Radiance->GetTextureUnit());
+  program->SetUniformi("radiance", this->RadianceTexture->GetTextureUnit());
   program->SetUniformMatrix("WCVCMatrix", frame.WorldToView);
   program->SetUniformMatrix("VCDCMatrix", frame.ViewToClip);
   program->SetUniform2f("viewport", frame.Viewport);
@@ -130,17 +137,17 @@ bool RainStreakPass::Run(const RainFrame& frame, const RainPointBuffer& drops, c
   glBindVertexArray(this->EmptyVAO);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * drops.Count()));
   glBindVertexArray(0);
-  this->Radiance->Deactivate();
+  this->RadianceTexture->Deactivate();
   drops.Texture()->Deactivate();
   return true;
 }
 
 void RainStreakPass::Release(vtkWindow* window)
 {
-  if (this->Radiance)
+  if (this->RadianceTexture)
   {
-    this->Radiance->ReleaseGraphicsResources(window);
-    this->Radiance = nullptr;
+    this->RadianceTexture->ReleaseGraphicsResources(window);
+    this->RadianceTexture = nullptr;
   }
   if (this->EmptyVAO)
   {

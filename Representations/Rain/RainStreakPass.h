@@ -33,9 +33,14 @@ public:
   /// Draws the drops; false when the shader did not compile.
   bool Run(const RainFrame& frame, const RainPointBuffer& drops, const Settings& settings);
   void Release(vtkWindow* window);
+  /// The drop's radiance toward each view direction for this frame's environment, RGBA floats,
+  /// kRadianceColumns azimuths by kTransferRows heights (what the GPU pass reads as a texture;
+  /// the CPU pass, RainStreakCpuPass, reads it here).
+  const std::vector<float>& Radiance(const RainFrame& frame, double refractiveIndex);
 
   /// Rows of the transfer table (view directions: 2 x rows azimuths by rows heights).
   static constexpr int kTransferRows = 64;
+  static constexpr int kRadianceColumns = 2 * kTransferRows;
 
 private:
   /// The drop's radiance toward each view direction for this frame's environment (a texture,
@@ -45,7 +50,8 @@ private:
   vtkShaderProgram* Program = nullptr; // owned by the window's shader cache
   std::vector<float> TransferTable;    // per view direction, the drop's 16 transfer coefficients
   double TransferIndex = 0.0;          // the refractive index it is for
-  vtkSmartPointer<vtkTextureObject> Radiance;
+  std::vector<float> RadianceTexels;   // the drop's radiance toward each view direction, RGBA
+  vtkSmartPointer<vtkTextureObject> RadianceTexture;
   std::array<float, 48> RadianceEnvironment{}; // the environment it is for
   unsigned int EmptyVAO = 0;
 };

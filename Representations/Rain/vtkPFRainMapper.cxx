@@ -4,6 +4,7 @@
 #include "RainFrame.h"
 #include "RainPointBuffer.h"
 #include "RainSplashPass.h"
+#include "RainStreakCpuPass.h"
 #include "RainStreakPass.h"
 
 #include "parafluid/rain/SplashSprites.h"
@@ -26,6 +27,9 @@ struct vtkPFRainMapper::Internals
 {
   parafluid::RainPointBuffer Points;
   parafluid::RainStreakPass Streak;
+  parafluid::RainStreakCpuPass CpuStreak;
+  int SoftwareRenderer = -1; // of the context, found at the first frame (-1: not yet)
+  bool LastOnCpu = false;
   parafluid::RainSplashPass Splash;
   parafluid::RainEnvironment Environment;
   std::vector<float> Packed;
@@ -42,6 +46,11 @@ vtkPFRainMapper::vtkPFRainMapper()
 }
 
 vtkPFRainMapper::~vtkPFRainMapper() = default;
+
+bool vtkPFRainMapper::GetLastDrawnOnCpu() const
+{
+  return this->Internal->LastOnCpu;
+}
 
 int vtkPFRainMapper::FillInputPortInformation(int, vtkInformation* info)
 {
@@ -175,6 +184,8 @@ void vtkPFRainMapper::Render(vtkRenderer* renderer, vtkActor*)
   renderer->GetTiledSizeAndOrigin(&size[0], &size[1], &origin[0], &origin[1]);
   frame.Viewport[0] = static_cast<float>(size[0]);
   frame.Viewport[1] = static_cast<float>(size[1]);
+  frame.Origin[0] = origin[0];
+  frame.Origin[1] = origin[1];
   auto* camera = static_cast<vtkOpenGLCamera*>(renderer->GetActiveCamera());
   vtkMatrix4x4 *wcvc = nullptr, *vcdc = nullptr, *wcdc = nullptr;
   vtkMatrix3x3* normals = nullptr;
@@ -198,7 +209,28 @@ void vtkPFRainMapper::Render(vtkRenderer* renderer, vtkActor*)
     settings.FogDistance = this->FogDistance;
     settings.WidthScale = this->WidthScale;
     settings.RadianceOnly = this->DisplayMode == 1;
-    ok = in.Streak.Run(frame, in.Points, settings);
+    if (in.SoftwareRenderer < 0)
+    {
+      in.SoftwareRenderer = parafluid::RainStreakCpuPass::SoftwareRenderer() ? 1 : 0;
+    }
+    // The CPU draws blended streaks only (the opaque Radiance display writes depth: the GPU's).
+    const bool cpu = !settings.RadianceOnly && (this->Rasteriser == CpuRasteriser ||
+                                                (this->Rasteriser == AutomaticRasteriser && in.SoftwareRenderer == 1));
+    in.LastOnCpu = false;
+    if (cpu)
+    {
+      const std::vector<float>& radiance = in.Streak.Radiance(frame, settings.RefractiveIndex);
+      const parafluid::rain::RadianceTable table{ radiance.data(), parafluid::RainStreakPass::kRadianceColumns,
+                                                  parafluid::RainStreakPass::kTransferRows };
+      parafluid::rain::StreakLook look;
+      look.widthScale = static_cast<float>(settings.WidthScale);
+      look.brightness = static_cast<float>(settings.Brightness);
+      look.opacity = static_cast<float>(settings.Opacity);
+      look.fogDistance = static_cast<float>(settings.FogDistance);
+      in.LastOnCpu = in.CpuStreak.Run(frame, in.Packed, table, look);
+    }
+    // On the GPU, or when the CPU could not (a multisampled framebuffer's depth cannot be read).
+    ok = in.LastOnCpu || in.Streak.Run(frame, in.Points, settings);
   }
   else
   {
@@ -220,6 +252,8 @@ void vtkPFRainMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Internal->Points.Release(window);
   this->Internal->Streak.Release(window);
+  this->Internal->CpuStreak.Release(window);
+  this->Internal->SoftwareRenderer = -1;
   this->Internal->Splash.Release(window);
   this->Internal->PackedKind = -1;
 }

@@ -40,6 +40,19 @@ public:
   vtkPFSetClampMacro(WidthScale, double, 0.0, 1e6);
   vtkPFSetClampMacro(SplashSize, double, 0.0, 1e6);
   vtkPFSetClampMacro(SplashLifetime, double, 1e-6, 1e6);
+  /// Who draws the streaks: the GPU (a triangle per drop) or the CPU (StreakRaster, one textured
+  /// quad over the scene). Automatic: the CPU under a software OpenGL (llvmpipe), where it is
+  /// several times faster, else the GPU.
+  enum Rasterisers
+  {
+    AutomaticRasteriser = 0,
+    GpuRasteriser = 1,
+    CpuRasteriser = 2
+  };
+  vtkPFSetClampMacro(Rasteriser, int, 0, 2);
+  vtkGetMacro(Rasteriser, int);
+  /// Whether the last frame's streaks were drawn on the CPU.
+  bool GetLastDrawnOnCpu() const;
   void SetEnvironmentImage(int face, const char* file);
 
   void Render(vtkRenderer* renderer, vtkActor* actor) override;
@@ -65,6 +78,7 @@ private:
   double WidthScale = 1.0;
   double SplashSize = 0.05;
   double SplashLifetime = 0.1;
+  int Rasteriser = AutomaticRasteriser;
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

@@ -60,6 +60,14 @@ void vtkPFRainRepresentation::SetWidthScale(double scale)
 {
   this->Mapper->SetWidthScale(scale);
 }
+void vtkPFRainRepresentation::SetRasteriser(int rasteriser)
+{
+  this->Mapper->SetRasteriser(rasteriser);
+}
+int vtkPFRainRepresentation::GetLastDrawnOnCpu()
+{
+  return this->Mapper->GetLastDrawnOnCpu() ? 1 : 0;
+}
 void vtkPFRainRepresentation::SetSplashSize(double size)
 {
   this->Mapper->SetSplashSize(size);

@@ -35,6 +35,9 @@ public:
   void SetOpacity(double opacity);
   void SetFogDistance(double distance);
   void SetWidthScale(double scale);
+  void SetRasteriser(int rasteriser);
+  /// Whether the last frame's streaks were drawn on the CPU (the mapper's).
+  int GetLastDrawnOnCpu();
   void SetSplashSize(double size);
   void SetSplashLifetime(double lifetime);
   void SetEnvironmentImage(int face, const char* file);

@@ -6,7 +6,10 @@ thresholded error <= 10), and what the pictures must show:
  - under a constant environment (six mid-grey cube-map faces) every pixel of every drop has the
    same colour (Radiance display: no alpha);
  - rain_splashes.png: splashes on a 35-degree slope (the sloped sequence, leaning downhill);
- - rain_demo.png: the demo's frame (scripts/rain_scene.py): terrain, rain, splashes, runoff.
+ - rain_demo.png: the demo's frame (scripts/rain_scene.py): terrain, rain, splashes, runoff;
+ - the streaks drawn on the CPU (RainRasteriser 'CPU', what 'Automatic' picks under llvmpipe, so
+   the baselines are its images) and on the GPU (a triangle per drop) are the same picture, a wall
+   in front hiding the same drops in both.
 To refresh: PARAFLUID_UPDATE_BASELINE=1 ctest -R rain_images"""
 import os
 import sys
@@ -105,6 +108,33 @@ for name, rgb in (("dark", [15, 15, 25]), ("bright", [235, 240, 250])):
     means[name] = image[streak].mean()
     print("%s environment: %d streak pixels, mean level %.1f" % (name, streak.sum(), means[name]))
 pftest.check(means["dark"] < 127.5 < means["bright"], "drops take the environment's light: %r" % means)
+
+# The CPU and the GPU paths draw the same streaks; a wall in front of the left of the rain hides
+# them in both (the CPU path reads the scene's depth back).
+view = rain_view(GREY)
+display = show_rain(view, RainEnvironmentImages=cube_faces("bright", [235, 240, 250]))
+wall = Box(Center=[0.6, -0.2, 0.8], XLength=0.6, YLength=0.05, ZLength=2.0)
+Show(wall, view).DiffuseColor = [0.2, 0.5, 0.2]
+images = {}
+for rasteriser in ("GPU", "CPU"):
+    display.RainRasteriser = rasteriser
+    images[rasteriser] = snapshot(view, "rain_%s.png" % rasteriser.lower(), baseline=False)
+    display.UpdatePropertyInformation()
+    on_cpu = display.GetPropertyValue("RainDrawnOnCpu") == 1
+    pftest.check(on_cpu == (rasteriser == "CPU"), "%s rasteriser: drawn on the CPU = %s" % (rasteriser, on_cpu))
+gpu, cpu = images["GPU"], images["CPU"]
+drawn = np.abs(gpu - 127.5).sum(axis=2) > 6.0
+difference = np.abs(gpu - cpu)
+print("CPU against GPU streaks: %d streak pixels, mean difference %.3f levels, 99.9th percentile %.1f, largest %.0f"
+      % (drawn.sum(), difference.mean(), np.percentile(difference, 99.9), difference.max()))
+pftest.check(drawn.sum() > 500, "GPU path: %d streak pixels" % drawn.sum())
+pftest.check(difference.mean() < 0.25 and np.percentile(difference, 99.9) <= 4.0,
+             "the CPU streaks differ from the GPU's: mean %.3f, 99.9th percentile %.1f levels"
+             % (difference.mean(), np.percentile(difference, 99.9)))
+wall_pixels = np.all(np.abs(gpu - np.array([0.2, 0.5, 0.2]) * 255.0) < 60.0, axis=2)
+pftest.check(wall_pixels.sum() > 1000, "the wall covers %d pixels" % wall_pixels.sum())
+pftest.check(difference[wall_pixels].max() <= 1.0, "behind the wall the CPU path differs by %.0f levels"
+             % difference[wall_pixels].max())
 
 # A constant environment (mid grey, so no colour is clipped): every pixel of every drop the same.
 view = rain_view([0.0, 0.0, 0.0])
