@@ -9,7 +9,8 @@ thresholded error <= 10), and what the pictures must show:
  - rain_demo.png: the demo's frame (scripts/rain_scene.py): terrain, rain, splashes, runoff;
  - the streaks drawn on the CPU (RainRasteriser 'CPU', what 'Automatic' picks under llvmpipe, so
    the baselines are its images) and on the GPU (a triangle per drop) are the same picture, a wall
-   in front hiding the same drops in both.
+   in front hiding the same drops in both; in a multisampled framebuffer, whose depth cannot be
+   read back, the CPU path hands the streaks to the GPU path.
 To refresh: PARAFLUID_UPDATE_BASELINE=1 ctest -R rain_images"""
 import os
 import sys
@@ -135,6 +136,21 @@ wall_pixels = np.all(np.abs(gpu - np.array([0.2, 0.5, 0.2]) * 255.0) < 60.0, axi
 pftest.check(wall_pixels.sum() > 1000, "the wall covers %d pixels" % wall_pixels.sum())
 pftest.check(difference[wall_pixels].max() <= 1.0, "behind the wall the CPU path differs by %.0f levels"
              % difference[wall_pixels].max())
+
+# Multisampled: the depth of the scene cannot be read back, so the streaks go to the GPU path.
+view = rain_view(GREY)
+view.GetRenderWindow().SetMultiSamples(4)
+display = show_rain(view, RainEnvironmentImages=cube_faces("bright", [235, 240, 250]))
+images = {}
+for rasteriser in ("GPU", "CPU"):
+    display.RainRasteriser = rasteriser
+    images[rasteriser] = snapshot(view, "rain_multisampled_%s.png" % rasteriser.lower(), baseline=False)
+    display.UpdatePropertyInformation()
+    pftest.check(display.GetPropertyValue("RainDrawnOnCpu") == 0,
+                 "multisampled, %s rasteriser: drawn on the CPU" % rasteriser)
+drawn = np.abs(images["GPU"] - 127.5).sum(axis=2) > 6.0
+pftest.check(drawn.sum() > 500 and np.array_equal(images["GPU"], images["CPU"]),
+             "multisampled: %d streak pixels; the CPU request drew another picture than the GPU path" % drawn.sum())
 
 # A constant environment (mid grey, so no colour is clipped): every pixel of every drop the same.
 view = rain_view([0.0, 0.0, 0.0])
