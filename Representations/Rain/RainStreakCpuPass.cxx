@@ -84,13 +84,27 @@ bool RainStreakCpuPass::Run(const RainFrame& frame, const std::vector<float>& dr
   {
     return true;
   }
+  // The compositing program first: without it the streaks go to the GPU path, undrawn here.
+  if (!this->Quad)
+  {
+    this->Quad.reset(new vtkOpenGLQuadHelper(frame.Window, nullptr, kCompositeFS, ""));
+  }
+  else
+  {
+    frame.Window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+  }
+  if (!this->Quad->Program || !this->Quad->Program->GetCompiled())
+  {
+    return false;
+  }
   vtkOpenGLState* state = frame.State;
   // The scene's depth, from the framebuffer being drawn into.
   this->Depth.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
   unsigned int drawBinding = 0, drawBuffer = 0;
   state->GetCurrentDrawFramebufferState(drawBinding, drawBuffer);
-  while (glGetError() != GL_NO_ERROR)
+  for (int stale = 0; stale < 16 && glGetError() != GL_NO_ERROR; ++stale)
   {
+    // errors left by others: the one read below must be the read's own
   }
   state->PushReadFramebufferBinding();
   state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawBinding);
@@ -109,21 +123,9 @@ bool RainStreakCpuPass::Run(const RainFrame& frame, const std::vector<float>& dr
   camera.width = width;
   camera.height = height;
   camera.eye = { frame.Eye[0], frame.Eye[1], frame.Eye[2] };
-  this->LastDrawn = this->Raster.draw(drops.data(), drops.size() / 8, camera, look, radiance, this->Depth.data(),
-                                      this->Image, threadCount());
+  this->Raster.draw(drops.data(), drops.size() / 8, camera, look, radiance, this->Depth.data(), this->Image,
+                    threadCount());
 
-  if (!this->Quad)
-  {
-    this->Quad.reset(new vtkOpenGLQuadHelper(frame.Window, nullptr, kCompositeFS, ""));
-  }
-  else
-  {
-    frame.Window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  }
-  if (!this->Quad->Program || !this->Quad->Program->GetCompiled())
-  {
-    return false;
-  }
   if (!this->Texture)
   {
     this->Texture = vtkSmartPointer<vtkTextureObject>::New();

@@ -31,8 +31,6 @@ public:
   bool Run(const RainFrame& frame, const std::vector<float>& drops, const rain::RadianceTable& radiance,
            const rain::StreakLook& look);
   void Release(vtkWindow* window);
-  /// Streaks the last Run drew.
-  std::size_t Drawn() const { return this->LastDrawn; }
 
   /// Whether the current context's OpenGL rasterises on the CPU (llvmpipe, softpipe, SWR).
   static bool SoftwareRenderer();
@@ -43,6 +41,5 @@ private:
   std::vector<float> Image; // what the streaks add: premultiplied colour and coverage
   vtkSmartPointer<vtkTextureObject> Texture;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
-  std::size_t LastDrawn = 0;
 };
 } // namespace parafluid
