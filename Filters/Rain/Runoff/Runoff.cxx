@@ -179,6 +179,14 @@ void Runoff::insert(const std::vector<Impact>& impacts)
 {
   const RunoffParameters& p = this->Parameters;
   const double volume = this->particleVolume(), d = p.particleSpacing;
+  // New particles stay half a spacing inside the SPH's box across the ground: one beyond a side
+  // is put back onto it by the solver, where two of them could land millimetres apart (under a
+  // cloudburst at a terrain's edge such a pair, pulled together by the film's tension, ran away
+  // and blew the run up).
+  const auto& box = this->Resolved.domainBounds;
+  const double lo[2] = { box[0] + 0.5 * d, box[2] + 0.5 * d };
+  const double hi[2] = { box[1] - 0.5 * d, box[3] - 0.5 * d };
+  auto inside = [&](double px, double py) { return px >= lo[0] && px <= hi[0] && py >= lo[1] && py <= hi[1]; };
   std::vector<float> x, y, z, vx, vy, vz;
   for (const Impact& impact : impacts)
   {
@@ -202,14 +210,29 @@ void Runoff::insert(const std::vector<Impact>& impacts)
       this->Tally[impact.cell] = 0;
       emit = 1;
     }
+    // The impact itself, kept inside; more than one particle: on a spiral of spacing d around it
+    // (the golden angle), so none coincide, skipping the spiral's points outside the box.
+    const double centre[2] = { std::clamp(static_cast<double>(impact.position[0]), lo[0], hi[0]),
+                               std::clamp(static_cast<double>(impact.position[1]), lo[1], hi[1]) };
+    int turn = 0;
     for (int k = 0; k < emit; ++k)
     {
       // Half a spacing above the surface it hit: above the triangulated ground (which the SPH's
-      // boundary is) as well as the bilinear one, or on top of the water's highest particle. More
-      // than one particle: on a spiral of spacing d around the impact, so none coincide.
-      const double angle = 2.399963 * k, radius = d * std::sqrt(static_cast<double>(k));
-      const double px = impact.position[0] + radius * std::cos(angle);
-      const double py = impact.position[1] + radius * std::sin(angle);
+      // boundary is) as well as the bilinear one, or on top of the water's highest particle.
+      double px = centre[0], py = centre[1];
+      for (int tries = 0; tries < 64; ++tries, ++turn)
+      {
+        const double angle = 2.399963 * turn, radius = d * std::sqrt(static_cast<double>(turn));
+        px = centre[0] + radius * std::cos(angle);
+        py = centre[1] + radius * std::sin(angle);
+        if (inside(px, py))
+        {
+          break;
+        }
+      }
+      ++turn;
+      px = std::clamp(px, lo[0], hi[0]); // a spiral grown past the whole box: on its edge
+      py = std::clamp(py, lo[1], hi[1]);
       double pz = impact.onWater
                     ? impact.position[2] + 0.5 * d
                     : std::max(this->Ground->heightAt(px, py), triangulatedHeight(*this->Ground, px, py)) + 0.5 * d;
