@@ -67,6 +67,7 @@ public:
   void SetPressureSolver(int solver);
   void SetKinematicViscosity(double value) { this->Set(this->Water.sph.kinematicViscosity, static_cast<float>(value)); }
   void SetSurfaceTension(double value) { this->Set(this->Water.sph.surfaceTension, static_cast<float>(value)); }
+  void SetCFLNumber(double value) { this->Set(this->Water.sph.cflNumber, static_cast<float>(value)); }
   void SetBoundaryDamping(double value) { this->Set(this->Water.sph.boundaryDamping, static_cast<float>(value)); }
   void SetSoundSpeed(double value) { this->Set(this->Water.sph.soundSpeed, static_cast<float>(value)); }
   void SetWallFriction(int friction);

@@ -233,9 +233,12 @@ void Runoff::insert(const std::vector<Impact>& impacts)
       ++turn;
       px = std::clamp(px, lo[0], hi[0]); // a spiral grown past the whole box: on its edge
       py = std::clamp(py, lo[1], hi[1]);
-      double pz = impact.onWater
-                    ? impact.position[2] + 0.5 * d
-                    : std::max(this->Ground->heightAt(px, py), triangulatedHeight(*this->Ground, px, py)) + 0.5 * d;
+      // Never under the ground where the particle goes, which on a slope may be above the water
+      // level the drop met (the spiral, or the impact moved inside the box, shifts it sideways): a
+      // particle started under the terrain stays there (under a cloudburst into a bowl, 3 runs of
+      // 13 with different seeds left one there).
+      const double ground = std::max(this->Ground->heightAt(px, py), triangulatedHeight(*this->Ground, px, py));
+      const double pz = std::max(impact.onWater ? impact.position[2] : ground, ground) + 0.5 * d;
       float v[3] = { impact.velocity[0], impact.velocity[1], impact.velocity[2] };
       if (pz - triangulatedHeight(*this->Ground, px, py) < p.sph.smoothingLength)
       {
