@@ -217,8 +217,6 @@ void Runoff::insert(const std::vector<Impact>& impacts)
     int turn = 0;
     for (int k = 0; k < emit; ++k)
     {
-      // Half a spacing above the surface it hit: above the triangulated ground (which the SPH's
-      // boundary is) as well as the bilinear one, or on top of the water's highest particle.
       double px = centre[0], py = centre[1];
       for (int tries = 0; tries < 64; ++tries, ++turn)
       {
@@ -233,14 +231,18 @@ void Runoff::insert(const std::vector<Impact>& impacts)
       ++turn;
       px = std::clamp(px, lo[0], hi[0]); // a spiral grown past the whole box: on its edge
       py = std::clamp(py, lo[1], hi[1]);
-      // Never under the ground where the particle goes, which on a slope may be above the water
-      // level the drop met (the spiral, or the impact moved inside the box, shifts it sideways): a
+      // Half a spacing above the surface it hit: above the triangulated ground (which the SPH's
+      // boundary is) as well as the bilinear one, or on top of the water's highest particle. Never
+      // under the ground where the particle goes, which on a slope may be above the water level
+      // the drop met (the spiral, or the impact moved inside the box, shifts it sideways): a
       // particle started under the terrain stays there (under a cloudburst into a bowl, 3 runs of
       // 13 with different seeds left one there).
-      const double ground = std::max(this->Ground->heightAt(px, py), triangulatedHeight(*this->Ground, px, py));
-      const double pz = std::max(impact.onWater ? impact.position[2] : ground, ground) + 0.5 * d;
+      const double triangulated = triangulatedHeight(*this->Ground, px, py);
+      const double ground = std::max(this->Ground->heightAt(px, py), triangulated);
+      const double surface = impact.onWater ? std::max(static_cast<double>(impact.position[2]), ground) : ground;
+      const double pz = surface + 0.5 * d;
       float v[3] = { impact.velocity[0], impact.velocity[1], impact.velocity[2] };
-      if (pz - triangulatedHeight(*this->Ground, px, py) < p.sph.smoothingLength)
+      if (pz - triangulated < p.sph.smoothingLength)
       {
         // On the ground, or on water too thin to take the drop's momentum (a cell's water level is
         // its highest particle's: a film, or one particle somewhere in the cell), the drop's water
