@@ -180,9 +180,17 @@ int main(int argc, char** argv)
                 static_cast<double>(impactCount) / frames, 1e3 * median(frame));
   }
 
-  // 1M drops and ~14k SPH particles: a cloudburst on a 4 m terrain until 14k particles exist.
-  if (run("runoff"))
+  // 1M drops and ~14k SPH particles: a cloudburst on a 4 m terrain until 14k particles exist, with
+  // the Rain filter's δ-SPH (its default) and with DFSPH (what it advises for basins).
+  for (const auto type : { sph::PressureSolverType::DeltaSPH, sph::PressureSolverType::DFSPH })
   {
+    // "runoff" runs both; "runoff-delta" or "runoff-dfsph" one.
+    const bool both = run("runoff") && parts.find("runoff-") == std::string::npos;
+    if (!both && !run(type == sph::PressureSolverType::DFSPH ? "runoff-dfsph" : "runoff-delta"))
+    {
+      continue;
+    }
+    const char* const solverName = type == sph::PressureSolverType::DFSPH ? "DFSPH" : "delta-SPH";
     auto ground = hills(4.0, 129, 0.6);
     rain::RainParameters p;
     p.bounds = { 0.0, 4.0, 0.0, 4.0 };
@@ -194,14 +202,15 @@ int main(int argc, char** argv)
     rain::RunoffParameters r;
     r.particleSpacing = 0.02;
     r.rainStep = 1.0 / 60.0;
-    rain::Runoff runoff(p, r, ground); // the Rain filter's defaults: δ-SPH
+    r.sph.pressureSolver = type;
+    rain::Runoff runoff(p, r, ground);
     const auto fill = Clock::now();
     while (runoff.particleCount() < 14000)
     {
       runoff.advance(r.rainStep);
     }
-    std::printf("runoff: %zu drops, %zu particles after %.2f s of rain (filled in %.1f s)\n", runoff.rain().dropCount(),
-                runoff.particleCount(), runoff.time(), seconds(fill, Clock::now()));
+    std::printf("runoff (%s): %zu drops, %zu particles after %.2f s of rain (filled in %.1f s)\n", solverName,
+                runoff.rain().dropCount(), runoff.particleCount(), runoff.time(), seconds(fill, Clock::now()));
     const int frames = 30;
     const std::int64_t steps0 = runoff.sphSteps();
     const auto a = Clock::now();
@@ -230,10 +239,10 @@ int main(int argc, char** argv)
       solver.step();
     }
     const double oneStep = seconds(c, Clock::now()) / frames;
-    std::printf("runoff frame, SPH over the whole 1/60 s (%.1f steps): %.1f ms = %.2f frames/s\n", sphSteps, 1e3 * full,
-                1.0 / full);
-    std::printf("runoff frame, one SPH step (drops %.1f ms + SPH step %.1f ms): %.2f frames/s [target >= 10]\n",
-                1e3 * drops, 1e3 * oneStep, 1.0 / (drops + oneStep));
+    std::printf("runoff frame (%s), SPH over the whole 1/60 s (%.1f steps): %.1f ms = %.2f frames/s\n", solverName,
+                sphSteps, 1e3 * full, 1.0 / full);
+    std::printf("runoff frame (%s), one SPH step (drops %.1f ms + SPH step %.1f ms): %.2f frames/s [target >= 10]\n",
+                solverName, 1e3 * drops, 1e3 * oneStep, 1.0 / (drops + oneStep));
   }
 
   // 100k particles resting in a layer over the terrain: δ-SPH (the Rain filter's default) and DFSPH,

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <string>
 
 using parafluid::HeightField;
 using parafluid::rain::RainParameters;
@@ -48,9 +49,9 @@ RainParameters cloudburst(double size, double rate)
   return r;
 }
 
-/// DFSPH: its long steps fit 30 s of flow in the test's time (δ-SPH, the default, takes 5x longer),
-/// at SPH Step's CFL number 0.2, twice the Rain filter's (DFSPH ran every seed of the basin's
-/// cloudburst at 0.2: Testing/Benchmarks/README.md, Rain).
+/// The Rain filter's solver, DFSPH, at SPH Step's CFL number 0.2, twice the Rain filter's (DFSPH
+/// ran every seed of the basin's cloudburst at 0.2: Testing/Benchmarks/README.md, Rain), so that
+/// the tests' runs take half the steps.
 RunoffParameters water(double spacing)
 {
   RunoffParameters p;
@@ -96,16 +97,19 @@ RainParameters bowlCloudburst()
 
 TEST(Runoff, BasinKeepsTheRainVolume)
 {
-  // It rains 25 s into the bowl, then the water settles for 5 s. The water inserted equals the
-  // rain that fell within one particle per cell. The pond's surface should be where a bowl
-  // holding that volume is full: V = pi L^2 / (2 a).
+  // It rains 25 s into the bowl, then the water settles for 5 s, with the Rain filter's defaults
+  // (DFSPH, BoundaryDamping 1, CFL number 0.1). The water inserted equals the rain that fell within
+  // one particle per cell. The pond's surface should be where a bowl holding that volume is full:
+  // V = pi L^2 / (2 a).
   const double a = kBowlCurvature;
   auto ground = bowl();
   RainParameters rain = bowlCloudburst();
   rain.duration = 25.0;
   const double d = 0.02;
-  RunoffParameters p = water(d);
-  p.sph.boundaryDamping = 0.5f; // SPH Step's default; with the Rain filter's 1 the pond stands 2.3 d low
+  RunoffParameters p;
+  p.particleSpacing = d;
+  p.rainStep = 0.02;
+  ASSERT_EQ(p.sph.pressureSolver, parafluid::sph::PressureSolverType::DFSPH);
   Runoff runoff(rain, p, ground);
   runoff.advance(30.0);
   const double particles = static_cast<double>(runoff.particleCount()) * runoff.particleVolume();
@@ -144,8 +148,8 @@ TEST(Runoff, BasinKeepsTheRainVolume)
 
 TEST(Runoff, DeltaSPHCloudburstAtTheTerrainsEdgeKeepsRunning)
 {
-  // The basin's cloudburst with the Rain filter's defaults (δ-SPH, BoundaryDamping 1) at SPH Step's
-  // CFL number, 0.2, which the Rain filter then took too (it now takes 0.1). Each of the
+  // The basin's cloudburst with the Rain filter's defaults of the time (δ-SPH, BoundaryDamping 1) at
+  // SPH Step's CFL number, 0.2, which the Rain filter then took too (it now takes DFSPH and 0.1). Each of the
   // 3 x 3 cells gathers several particles' water between impacts and emits them on a spiral around
   // the impact; at the terrain's edge the spiral's points used to lie beyond the SPH's box, and
   // the solver put them back onto its side, millimetres apart: a pair held together there by its
@@ -157,7 +161,7 @@ TEST(Runoff, DeltaSPHCloudburstAtTheTerrainsEdgeKeepsRunning)
   p.particleSpacing = d;
   p.rainStep = 0.02;
   p.sph.cflNumber = 0.2f;
-  ASSERT_EQ(p.sph.pressureSolver, parafluid::sph::PressureSolverType::DeltaSPH);
+  p.sph.pressureSolver = parafluid::sph::PressureSolverType::DeltaSPH;
   Runoff runoff(rain, p, ground);
   EXPECT_NO_THROW(runoff.advance(8.0));
   ASSERT_GT(runoff.particleCount(), 250u);
@@ -176,45 +180,53 @@ TEST(Runoff, DeltaSPHCloudburstAtTheTerrainsEdgeKeepsRunning)
 TEST(Runoff, WaterRunsDownATiltedPlaneAndNeverUnderIt)
 {
   // A plane falling 0.3 m over 1.2 m in x. Rain on its upper third only, for 1.5 s; the water's
-  // centre of mass moves downhill, and no particle is ever under the ground, over 10,000 SPH steps
-  // of δ-SPH (SPH Step's default solver).
+  // centre of mass moves downhill, and no particle is ever under the ground, over 10,000 SPH steps,
+  // with the Rain filter's defaults (DFSPH) and with δ-SPH.
   const double size = 1.2;
   auto ground = groundOf(size, 25, [&](double x, double) { return 0.3 * (1.0 - x / size); });
   RainParameters rain = cloudburst(size, 3000.0);
   rain.bounds = { 0.0, 0.4, 0.0, size };
   rain.height = 0.7;
   rain.duration = 1.5;
-  RunoffParameters p = water(0.02);
-  p.sph.pressureSolver = parafluid::sph::PressureSolverType::DeltaSPH;
-  Runoff runoff(rain, p, ground);
-  double firstX = -1.0, lastX = 0.0;
-  double lowest = 1e30;
-  while (runoff.sphSteps() < 10000)
+  for (const auto solver : { parafluid::sph::PressureSolverType::DFSPH, parafluid::sph::PressureSolverType::DeltaSPH })
   {
-    runoff.advance(0.02);
-    lowest = std::min(lowest, lowestClearance(runoff, *ground));
-    if (runoff.particleCount() > 0)
+    const bool dfsph = solver == parafluid::sph::PressureSolverType::DFSPH;
+    SCOPED_TRACE(dfsph ? "DFSPH" : "delta-SPH");
+    RunoffParameters p;
+    p.particleSpacing = 0.02;
+    p.rainStep = 0.02;
+    p.sph.pressureSolver = solver;
+    Runoff runoff(rain, p, ground);
+    double firstX = -1.0, lastX = 0.0;
+    double lowest = 1e30;
+    while (runoff.sphSteps() < 10000)
     {
-      const auto& s = runoff.water()->state();
-      double mean = 0.0;
-      for (float x : s.x)
+      runoff.advance(0.02);
+      lowest = std::min(lowest, lowestClearance(runoff, *ground));
+      if (runoff.particleCount() > 0)
       {
-        mean += x;
+        const auto& s = runoff.water()->state();
+        double mean = 0.0;
+        for (float x : s.x)
+        {
+          mean += x;
+        }
+        mean /= static_cast<double>(s.size());
+        if (firstX < 0.0 && runoff.time() > 0.5)
+        {
+          firstX = mean;
+        }
+        lastX = mean;
       }
-      mean /= static_cast<double>(s.size());
-      if (firstX < 0.0 && runoff.time() > 0.5)
-      {
-        firstX = mean;
-      }
-      lastX = mean;
     }
+    const std::string solverName = dfsph ? "dfsph_" : "delta_sph_";
+    RecordProperty(solverName + "time_s", std::to_string(runoff.time()));
+    RecordProperty(solverName + "first_x", std::to_string(firstX));
+    RecordProperty(solverName + "last_x", std::to_string(lastX));
+    EXPECT_GT(runoff.particleCount(), 60u);
+    EXPECT_GT(lowest, -1e-6) << "a particle got under the terrain";
+    EXPECT_GT(lastX, firstX + 0.2) << "the water should run down the slope (towards +x)";
   }
-  RecordProperty("time_s", std::to_string(runoff.time()));
-  RecordProperty("first_x", std::to_string(firstX));
-  RecordProperty("last_x", std::to_string(lastX));
-  EXPECT_GT(runoff.particleCount(), 60u);
-  EXPECT_GT(lowest, -1e-6) << "a particle got under the terrain";
-  EXPECT_GT(lastX, firstX + 0.2) << "the water should run down the slope (towards +x)";
 }
 
 TEST(Runoff, InfiltrationTakesTheRainUntilTheRainOutpacesIt)
