@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
 
 namespace contract = parafluid::contract;
 using parafluid::HeightField;
@@ -228,7 +229,9 @@ bool vtkPFRain::Resolve(const HeightField& ground, parafluid::rain::RainParamete
     .inRange("KinematicViscosity", this->Water.sph.kinematicViscosity, 0.0, 1e3, "m^2/s")
     .inRange("SurfaceTension", this->Water.sph.surfaceTension, 0.0, 1e3, "N/m")
     .inRange("BoundaryDamping", this->Water.sph.boundaryDamping, 0.0, 1.0)
-    .inRange("CFLNumber", this->Water.sph.cflNumber, 0.001, 2.0)
+    .require(this->Water.sph.cflNumber == 0.0f ||
+               (this->Water.sph.cflNumber >= 0.001f && this->Water.sph.cflNumber <= 2.0f),
+             "CFLNumber must be 0 (automatic) or from 0.001 to 2, got " + std::to_string(this->Water.sph.cflNumber))
     .inRange("SoundSpeed", this->Water.sph.soundSpeed, 0.0, 1e5, "m/s")
     .inRange("DensityTolerance", this->Water.sph.densityTolerance, 1e-6, 0.5);
   if (!check.ok())

@@ -184,9 +184,9 @@ int main(int argc, char** argv)
   // the Rain filter's δ-SPH (its default) and with DFSPH (what it advises for basins).
   for (const auto type : { sph::PressureSolverType::DeltaSPH, sph::PressureSolverType::DFSPH })
   {
-    // "runoff" runs both; "runoff-delta" or "runoff-dfsph" one.
+    // "runoff" runs both; "runoff-delta" or "runoff-df" (DFSPH) one.
     const bool both = run("runoff") && parts.find("runoff-") == std::string::npos;
-    if (!both && !run(type == sph::PressureSolverType::DFSPH ? "runoff-dfsph" : "runoff-delta"))
+    if (!both && !run(type == sph::PressureSolverType::DFSPH ? "runoff-df" : "runoff-delta"))
     {
       continue;
     }

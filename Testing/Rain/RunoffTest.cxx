@@ -49,16 +49,13 @@ RainParameters cloudburst(double size, double rate)
   return r;
 }
 
-/// The Rain filter's solver, DFSPH, at SPH Step's CFL number 0.2, twice the Rain filter's (DFSPH
-/// ran every seed of the basin's cloudburst at 0.2: Testing/Benchmarks/README.md, Rain), so that
-/// the tests' runs take half the steps.
+/// The Rain filter's defaults (DFSPH at the automatic CFL number, 0.2) at `spacing`, with drop
+/// steps of 0.02 s.
 RunoffParameters water(double spacing)
 {
   RunoffParameters p;
   p.particleSpacing = spacing;
   p.rainStep = 0.02;
-  p.sph.pressureSolver = parafluid::sph::PressureSolverType::DFSPH;
-  p.sph.cflNumber = 0.2f;
   return p;
 }
 
@@ -98,17 +95,15 @@ RainParameters bowlCloudburst()
 TEST(Runoff, BasinKeepsTheRainVolume)
 {
   // It rains 25 s into the bowl, then the water settles for 5 s, with the Rain filter's defaults
-  // (DFSPH, BoundaryDamping 1, CFL number 0.1). The water inserted equals the rain that fell within
-  // one particle per cell. The pond's surface should be where a bowl holding that volume is full:
-  // V = pi L^2 / (2 a).
+  // (DFSPH, BoundaryDamping 1, the automatic CFL number). The water inserted equals the rain that
+  // fell within one particle per cell. The pond's surface should be where a bowl holding that
+  // volume is full: V = pi L^2 / (2 a).
   const double a = kBowlCurvature;
   auto ground = bowl();
   RainParameters rain = bowlCloudburst();
   rain.duration = 25.0;
   const double d = 0.02;
-  RunoffParameters p;
-  p.particleSpacing = d;
-  p.rainStep = 0.02;
+  const RunoffParameters p = water(d);
   ASSERT_EQ(p.sph.pressureSolver, parafluid::sph::PressureSolverType::DFSPH);
   Runoff runoff(rain, p, ground);
   runoff.advance(30.0);
@@ -252,6 +247,24 @@ TEST(Runoff, InfiltrationTakesTheRainUntilTheRainOutpacesIt)
   EXPECT_NEAR(inWater + runoff.infiltratedVolume() + runoff.waitingVolume(), runoff.fallenVolume(),
               1e-9 * runoff.fallenVolume());
   EXPECT_NEAR(runoff.infiltratedVolume() / runoff.fallenVolume(), 0.5, 0.1);
+}
+
+TEST(Runoff, AutomaticCFLNumberFollowsTheSolver)
+{
+  // CFLNumber 0 (the default) is SPH Step's 0.2 for DFSPH and half that for the weakly compressible
+  // solvers; a number given is kept.
+  auto ground = groundOf(1.0, 5, [](double, double) { return 0.0; });
+  const RainParameters rain = cloudburst(1.0, 10.0);
+  RunoffParameters p = water(0.05);
+  EXPECT_EQ(p.sph.cflNumber, 0.0f);
+  EXPECT_FLOAT_EQ(Runoff(rain, p, ground).sphParameters().cflNumber, 0.2f);
+  for (const auto solver : { parafluid::sph::PressureSolverType::DeltaSPH, parafluid::sph::PressureSolverType::WCSPH })
+  {
+    p.sph.pressureSolver = solver;
+    EXPECT_FLOAT_EQ(Runoff(rain, p, ground).sphParameters().cflNumber, 0.1f);
+  }
+  p.sph.cflNumber = 0.35f;
+  EXPECT_FLOAT_EQ(Runoff(rain, p, ground).sphParameters().cflNumber, 0.35f);
 }
 
 TEST(Runoff, BadParametersAreRefusedByName)

@@ -66,6 +66,10 @@ Runoff::Runoff(const RainParameters& rain, const RunoffParameters& runoff, std::
   {
     s.meshWallDensity = false;
   }
+  if (s.cflNumber == 0.0f)
+  {
+    s.cflNumber = RunoffParameters::automaticCFLNumber(s.pressureSolver);
+  }
   // The box's floor a kernel radius and a spacing below the lowest ground: the terrain is the
   // floor, and the box floor's mirror images (inside the ground) never reach water above it.
   s.domainBounds = { static_cast<float>(b[0]),

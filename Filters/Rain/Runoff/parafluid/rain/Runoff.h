@@ -36,25 +36,30 @@ namespace parafluid::rain
 struct RunoffParameters
 {
   /// The solver's settings; smoothingLength, particleMass, domainBounds, gravity and (when 0) the
-  /// sound speed are derived from the spacing, the ground and the precipitation area. DFSPH, water
-  /// that keeps none of its normal velocity when it meets the ground (a drop's water spreads; it
-  /// does not bounce as a ball), and half SPH Step's CFL number.
+  /// sound speed and the CFL number are derived from the spacing, the ground, the precipitation
+  /// area and the solver. DFSPH, and water that keeps none of its normal velocity when it meets the
+  /// ground (a drop's water spreads; it does not bounce as a ball).
   sph::SPHParameters sph = runoffDefaults();
   static sph::SPHParameters runoffDefaults()
   {
     sph::SPHParameters p;
     // DFSPH, not SPH Step's δ-SPH: with the terrain a wall in its sums its water pools at the level
-    // its volume gives (a bowl's pond within 0.25 spacings for 10 s after the rain, every seed
+    // its volume gives (a bowl's pond 0.21-0.26 spacings below it for 10 s after the rain, every seed
     // tried), where δ-SPH's integrated density let the pond drain into a film over the bowl. Its
     // step costs about six of δ-SPH's (14k runoff particles: 30 against 5 ms on 2 cores), within
     // the frame rate asked of rain with runoff (Testing/Benchmarks/README.md, Rain).
     p.pressureSolver = sph::PressureSolverType::DFSPH;
     p.boundaryDamping = 1.0f;
-    // Half SPH Step's: under a cloudburst into a basin δ-SPH's density drifted up at 0.2 and the
-    // run blew up in six seeds of seven; at 0.1 all ran. DFSPH runs at either; 0.1 keeps a switch
-    // to δ-SPH safe.
-    p.cflNumber = 0.1f;
+    p.cflNumber = 0.0f; // automaticCFLNumber(pressureSolver)
     return p;
+  }
+  /// The CFL number a cflNumber of 0 stands for: SPH Step's 0.2 for DFSPH (every seed of the
+  /// basin's cloudburst held its pond at it), half that for the weakly compressible solvers (under
+  /// the same cloudburst δ-SPH's integrated density drifted up at 0.2 and six runs of seven blew up;
+  /// at 0.1 all ran: Testing/Benchmarks/README.md, Rain).
+  static float automaticCFLNumber(sph::PressureSolverType solver)
+  {
+    return solver == sph::PressureSolverType::DFSPH ? 0.2f : 0.1f;
   }
   double particleSpacing = 0.05; // d [m]
   bool conserveVolume = true;
@@ -84,6 +89,8 @@ public:
   const RunoffParameters& parameters() const { return this->Parameters; }
   /// The SPH water, or null before the first particle.
   const sph::SPHSolver* water() const;
+  /// The solver's settings as resolved from the parameters (what the water is stepped with).
+  const sph::SPHParameters& sphParameters() const { return this->Resolved; }
   /// Per precipitation cell: the water surface [m] (lowest float when dry), and its impacts so far.
   const std::vector<float>& waterLevels() const { return this->WaterLevels; }
   const std::vector<std::uint32_t>& impactCounts() const { return this->ImpactCount; }
