@@ -181,7 +181,7 @@ int main(int argc, char** argv)
   }
 
   // 1M drops and ~14k SPH particles: a cloudburst on a 4 m terrain until 14k particles exist, with
-  // the Rain filter's δ-SPH (its default) and with DFSPH (what it advises for basins).
+  // each solver at the Rain filter's settings for it: δ-SPH, and DFSPH (its default).
   for (const auto type : { sph::PressureSolverType::DeltaSPH, sph::PressureSolverType::DFSPH })
   {
     // "runoff" runs both; "runoff-delta" or "runoff-df" (DFSPH) one.
@@ -245,9 +245,9 @@ int main(int argc, char** argv)
                 solverName, 1e3 * drops, 1e3 * oneStep, 1.0 / (drops + oneStep));
   }
 
-  // 100k particles resting in a layer over the terrain: δ-SPH (the Rain filter's default) and DFSPH,
-  // each with the terrain a wall in its sums (SPH Step's default) and with it only stopping particles
-  // (the Rain filter's δ-SPH).
+  // 100k particles resting in a layer over the terrain: δ-SPH and DFSPH (the Rain filter's default),
+  // each with the terrain a wall in its sums (SPH Step's default, and the Rain filter's DFSPH) and
+  // with it only stopping particles (the Rain filter's δ-SPH).
   if (run("sph"))
   {
     auto ground = hills(4.0, 129, 0.6);

@@ -144,17 +144,14 @@ TEST(Runoff, BasinKeepsTheRainVolume)
 TEST(Runoff, DeltaSPHCloudburstAtTheTerrainsEdgeKeepsRunning)
 {
   // The basin's cloudburst with the Rain filter's defaults of the time (δ-SPH, BoundaryDamping 1) at
-  // SPH Step's CFL number, 0.2, which the Rain filter then took too (it now takes DFSPH and 0.1). Each of the
-  // 3 x 3 cells gathers several particles' water between impacts and emits them on a spiral around
-  // the impact; at the terrain's edge the spiral's points used to lie beyond the SPH's box, and
+  // SPH Step's CFL number, 0.2, which the Rain filter then took too (it now takes DFSPH, and 0.1 for
+  // δ-SPH). Each of the 3 x 3 cells gathers several particles' water between impacts and emits
+  // them on a spiral around the impact; at the terrain's edge the spiral's points used to lie beyond the SPH's box, and
   // the solver put them back onto its side, millimetres apart: a pair held together there by its
   // tension ran away and the run blew up at 4.0 s. New particles now stay half a spacing inside.
   auto ground = bowl();
   const RainParameters rain = bowlCloudburst();
-  const double d = 0.02;
-  RunoffParameters p;
-  p.particleSpacing = d;
-  p.rainStep = 0.02;
+  RunoffParameters p = water(0.02);
   p.sph.cflNumber = 0.2f;
   p.sph.pressureSolver = parafluid::sph::PressureSolverType::DeltaSPH;
   Runoff runoff(rain, p, ground);
@@ -187,9 +184,7 @@ TEST(Runoff, WaterRunsDownATiltedPlaneAndNeverUnderIt)
   {
     const bool dfsph = solver == parafluid::sph::PressureSolverType::DFSPH;
     SCOPED_TRACE(dfsph ? "DFSPH" : "delta-SPH");
-    RunoffParameters p;
-    p.particleSpacing = 0.02;
-    p.rainStep = 0.02;
+    RunoffParameters p = water(0.02);
     p.sph.pressureSolver = solver;
     Runoff runoff(rain, p, ground);
     double firstX = -1.0, lastX = 0.0;
@@ -214,10 +209,10 @@ TEST(Runoff, WaterRunsDownATiltedPlaneAndNeverUnderIt)
         lastX = mean;
       }
     }
-    const std::string solverName = dfsph ? "dfsph_" : "delta_sph_";
-    RecordProperty(solverName + "time_s", std::to_string(runoff.time()));
-    RecordProperty(solverName + "first_x", std::to_string(firstX));
-    RecordProperty(solverName + "last_x", std::to_string(lastX));
+    const std::string prefix = dfsph ? "dfsph_" : "delta_sph_";
+    RecordProperty(prefix + "time_s", std::to_string(runoff.time()));
+    RecordProperty(prefix + "first_x", std::to_string(firstX));
+    RecordProperty(prefix + "last_x", std::to_string(lastX));
     EXPECT_GT(runoff.particleCount(), 60u);
     EXPECT_GT(lowest, -1e-6) << "a particle got under the terrain";
     EXPECT_GT(lastX, firstX + 0.2) << "the water should run down the slope (towards +x)";
