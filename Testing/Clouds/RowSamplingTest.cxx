@@ -110,6 +110,88 @@ TEST(RowSampling, PairWithRangesOfTwoOtherArraysMatchesTheScalarSampler)
   }
 }
 
+TEST(RowSampling, RowsThatMoveAlikeMatchTheScalarSampler)
+{
+  // Rows of samples traced as a smooth flow traces them: runs of neighbouring points whose
+  // corners lie side by side (read by vector loads), broken where a trace crosses a cell face
+  // against its neighbours, and rows pushed past the array's ends (clamped, where runs repeat
+  // corners). Longer than a block, so the blocks' seams are crossed too.
+  GridArray a, b;
+  for (GridArray* g : { &a, &b })
+  {
+    g->dims = { 600, 5, 4 };
+    g->offset = { 0.0, 0.5, 0.5 };
+    g->values.resize(600 * 5 * 4);
+  }
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> value(-3.0, 5.0);
+  for (std::size_t c = 0; c < a.values.size(); ++c)
+  {
+    a.values[c] = value(random);
+    b.values[c] = value(random);
+  }
+  const detail::DirectSampler sampler(a);
+  const int count = 600;
+  std::vector<double> x(count), y(count), z(count);
+  std::vector<double> outA(count), outB(count), lo(count), hi(count), loB(count), hiB(count), loA(count), hiA(count);
+  int rowsChecked = 0;
+  for (double shift : { 0.0, 0.35, -0.8, 2.6 })
+  {
+    for (double amplitude : { 0.0, 0.45, 1.3 })
+    {
+      for (int j = -1; j <= 5; j += 2)
+      {
+        for (int i = 0; i < count; ++i)
+        {
+          const double wave = amplitude * std::sin(0.07 * i + j);
+          x[i] = i + shift + wave;
+          y[i] = j + 0.5 - 0.6 * wave + 0.3 * shift;
+          z[i] = 1.5 + 0.4 * wave - shift;
+        }
+        const detail::RowLayout layout(a);
+        detail::readRow(layout, a.values.data(), x.data(), y.data(), z.data(), count, outA.data(), lo.data(),
+                        hi.data());
+        detail::readRowPair(layout, a.values.data(), b.values.data(), x.data(), y.data(), z.data(), count, loA.data(),
+                            outB.data(), loB.data(), hiB.data());
+        for (int i = 0; i < count; ++i)
+        {
+          const double p[3] = { x[i], y[i], z[i] };
+          double low, high, lowB, highB;
+          const double expected = sampler.at(a.values.data(), p, &low, &high);
+          const double expectedB = sampler.at(b.values.data(), p, &lowB, &highB);
+          ASSERT_NEAR(outA[i], expected, 1e-12) << copyName() << " copy, row " << rowsChecked << ", point " << i;
+          ASSERT_EQ(lo[i], low) << copyName() << " copy, row " << rowsChecked << ", point " << i;
+          ASSERT_EQ(hi[i], high) << copyName() << " copy, row " << rowsChecked << ", point " << i;
+          ASSERT_NEAR(loA[i], expected, 1e-12) << copyName() << " copy, pair, row " << rowsChecked << ", point " << i;
+          ASSERT_NEAR(outB[i], expectedB, 1e-12) << copyName() << " copy, pair, row " << rowsChecked << ", point " << i;
+          ASSERT_EQ(loB[i], lowB) << copyName() << " copy, pair, row " << rowsChecked << ", point " << i;
+          ASSERT_EQ(hiB[i], highB) << copyName() << " copy, pair, row " << rowsChecked << ", point " << i;
+        }
+        detail::readRowPairRanged(layout, b.values.data(), a.values.data(), a.values.data(), b.values.data(), x.data(),
+                                  y.data(), z.data(), count, outB.data(), outA.data(), loA.data(), hiA.data(),
+                                  loB.data(), hiB.data());
+        for (int i = 0; i < count; ++i)
+        {
+          const double p[3] = { x[i], y[i], z[i] };
+          double lowA, highA, lowB, highB;
+          const double expectedA = sampler.at(a.values.data(), p, &lowA, &highA);
+          const double expectedB = sampler.at(b.values.data(), p, &lowB, &highB);
+          ASSERT_NEAR(outA[i], expectedA, 1e-12)
+            << copyName() << " copy, ranged, row " << rowsChecked << ", point " << i;
+          ASSERT_NEAR(outB[i], expectedB, 1e-12)
+            << copyName() << " copy, ranged, row " << rowsChecked << ", point " << i;
+          ASSERT_EQ(loA[i], lowA) << copyName() << " copy, ranged, row " << rowsChecked << ", point " << i;
+          ASSERT_EQ(hiA[i], highA) << copyName() << " copy, ranged, row " << rowsChecked << ", point " << i;
+          ASSERT_EQ(loB[i], lowB) << copyName() << " copy, ranged, row " << rowsChecked << ", point " << i;
+          ASSERT_EQ(hiB[i], highB) << copyName() << " copy, ranged, row " << rowsChecked << ", point " << i;
+        }
+        ++rowsChecked;
+      }
+    }
+  }
+  EXPECT_EQ(rowsChecked, 48);
+}
+
 TEST(RowSampling, ScatterIsTheTransposeOfTheRead)
 {
   // The weights a row scatters are those the scalar sampler's forCorners gives, summed.

@@ -73,8 +73,85 @@ enum class Ranges
   OfOthers // lo/hi of range's samples, lo2/hi2 of range2's, at the same corners
 };
 
+// A row's points are read in blocks of this many (their corners kept on the stack).
+constexpr int Block = 256;
+
+// The corners and fractions of a block's points: point i's first corner is base[i] (its others
+// one stride on along each axis), its fractions fx[i], fy[i], fz[i].
+struct BlockCorners
+{
+  int base[Block];
+  double fx[Block], fy[Block], fz[Block];
+};
+
+// The corners and fractions of the points first .. first + count - 1 (count <= Block).
+__attribute__((always_inline)) inline void cornersOfBlock(const RowLayout& l, const double* __restrict x,
+                                                          const double* __restrict y, const double* __restrict z,
+                                                          int first, int count, BlockCorners& c)
+{
+  const AxisStep ax(l.n[0], l.offset[0], 1), ay(l.n[1], l.offset[1], l.n[0]), az(l.n[2], l.offset[2], l.n[0] * l.n[1]);
+#pragma omp simd
+  for (int i = 0; i < count; ++i)
+  {
+    int ix, iy, iz;
+    c.fx[i] = ax.at(x[first + i], ix);
+    c.fy[i] = ay.at(y[first + i], iy);
+    c.fz[i] = az.at(z[first + i], iz);
+    c.base[i] = ix + l.n[0] * (iy + l.n[1] * iz);
+  }
+}
+
+// out[first + i] = data at block point i, and with Second also out2 = data2 there, with the
+// ranges R asks for, for from <= i < to. With Run, the points' first corners are known to be
+// `run` + i, one sample apart along the array: the compiler then fetches the corners of a vector
+// of points with vector loads instead of gathers (in a smooth flow traced over a step of a cell
+// or so, most of a row's points move alike and land in neighbouring cells).
+template<bool Second, Ranges R, bool Run>
+__attribute__((always_inline)) inline void readSpan(const RowLayout& l, const BlockCorners& c, int run, int from,
+                                                    int to, int first, const double* __restrict data,
+                                                    const double* __restrict data2, const double* __restrict range,
+                                                    const double* __restrict range2, double* __restrict out,
+                                                    double* __restrict out2, double* __restrict lo,
+                                                    double* __restrict hi, double* __restrict lo2,
+                                                    double* __restrict hi2)
+{
+  const int sx = l.n[0] > 1 ? 1 : 0, sy = l.n[1] > 1 ? l.n[0] : 0, sz = l.n[2] > 1 ? l.n[0] * l.n[1] : 0;
+#pragma omp simd
+  for (int i = from; i < to; ++i)
+  {
+    const int b = Run ? run + i : c.base[i];
+    const double fx = c.fx[i], fy = c.fy[i], fz = c.fz[i];
+    const int o = first + i;
+    const int c1 = b + sx, c2 = b + sy, c3 = b + sx + sy, c4 = b + sz, c5 = b + sx + sz, c6 = b + sy + sz,
+              c7 = b + sx + sy + sz;
+    const Corners one = loadCorners(data, b, c1, c2, c3, c4, c5, c6, c7);
+    out[o] = blend(one, fx, fy, fz);
+    if constexpr (Second)
+    {
+      const Corners two = loadCorners(data2, b, c1, c2, c3, c4, c5, c6, c7);
+      out2[o] = blend(two, fx, fy, fz);
+      if constexpr (R == Ranges::OfRead)
+        rangeOf(two, lo[o], hi[o]);
+    }
+    else if constexpr (R == Ranges::OfRead)
+    {
+      rangeOf(one, lo[o], hi[o]);
+    }
+    if constexpr (R == Ranges::OfOthers)
+    {
+      rangeOf(loadCorners(range, b, c1, c2, c3, c4, c5, c6, c7), lo[o], hi[o]);
+      rangeOf(loadCorners(range2, b, c1, c2, c3, c4, c5, c6, c7), lo2[o], hi2[o]);
+    }
+  }
+}
+
+// A run shorter than this is read by gathers with its neighbours (a vector loop's start and
+// masked tail cost more than the loads save).
+constexpr int ShortestRun = 6;
+
 // out[i] = data at point i, and with Second also out2[i] = data2 there, with the ranges R asks
-// for (the corners and weights found once for all).
+// for (the corners and weights found once for all): block by block, the runs of points whose
+// corners lie side by side by vector loads, the rest by gathers.
 template<bool Second, Ranges R>
 __attribute__((always_inline)) inline void readRowImpl(const RowLayout& l, const double* __restrict data,
                                                        const double* __restrict data2, const double* __restrict range,
@@ -84,34 +161,31 @@ __attribute__((always_inline)) inline void readRowImpl(const RowLayout& l, const
                                                        double* __restrict lo, double* __restrict hi,
                                                        double* __restrict lo2, double* __restrict hi2)
 {
-  const AxisStep ax(l.n[0], l.offset[0], 1), ay(l.n[1], l.offset[1], l.n[0]), az(l.n[2], l.offset[2], l.n[0] * l.n[1]);
-  const int sx = ax.stride, sy = ay.stride, sz = az.stride;
-#pragma omp simd
-  for (int i = 0; i < count; ++i)
+  BlockCorners c;
+  for (int first = 0; first < count; first += Block)
   {
-    int ix, iy, iz;
-    const double fx = ax.at(x[i], ix), fy = ay.at(y[i], iy), fz = az.at(z[i], iz);
-    const int b = ix + l.n[0] * (iy + l.n[1] * iz);
-    const int c1 = b + sx, c2 = b + sy, c3 = b + sx + sy, c4 = b + sz, c5 = b + sx + sz, c6 = b + sy + sz,
-              c7 = b + sx + sy + sz;
-    const Corners first = loadCorners(data, b, c1, c2, c3, c4, c5, c6, c7);
-    out[i] = blend(first, fx, fy, fz);
-    if constexpr (Second)
+    const int m = count - first < Block ? count - first : Block;
+    cornersOfBlock(l, x, y, z, first, m, c);
+    int gatherFrom = 0; // the first point not yet read
+    for (int i = 0; i < m;)
     {
-      const Corners second = loadCorners(data2, b, c1, c2, c3, c4, c5, c6, c7);
-      out2[i] = blend(second, fx, fy, fz);
-      if constexpr (R == Ranges::OfRead)
-        rangeOf(second, lo[i], hi[i]);
+      const int run = c.base[i] - i;
+      int end = i + 1;
+      while (end < m && c.base[end] - end == run)
+        ++end;
+      if (end - i >= ShortestRun)
+      {
+        if (gatherFrom < i)
+          readSpan<Second, R, false>(l, c, 0, gatherFrom, i, first, data, data2, range, range2, out, out2, lo, hi, lo2,
+                                     hi2);
+        readSpan<Second, R, true>(l, c, run, i, end, first, data, data2, range, range2, out, out2, lo, hi, lo2, hi2);
+        gatherFrom = end;
+      }
+      i = end;
     }
-    else if constexpr (R == Ranges::OfRead)
-    {
-      rangeOf(first, lo[i], hi[i]);
-    }
-    if constexpr (R == Ranges::OfOthers)
-    {
-      rangeOf(loadCorners(range, b, c1, c2, c3, c4, c5, c6, c7), lo[i], hi[i]);
-      rangeOf(loadCorners(range2, b, c1, c2, c3, c4, c5, c6, c7), lo2[i], hi2[i]);
-    }
+    if (gatherFrom < m)
+      readSpan<Second, R, false>(l, c, 0, gatherFrom, m, first, data, data2, range, range2, out, out2, lo, hi, lo2,
+                                 hi2);
   }
 }
 
