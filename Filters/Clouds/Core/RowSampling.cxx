@@ -11,7 +11,7 @@ struct AxisStep
 {
   double offset, last;
   int lastCorner, stride;
-  AxisStep(int n, double offset_, int stride_)
+  __attribute__((always_inline)) AxisStep(int n, double offset_, int stride_)
     : offset(offset_)
     , last(n - 1)
     , lastCorner(n > 2 ? n - 2 : 0)
