@@ -84,20 +84,22 @@ struct BlockCorners
   double fx[Block], fy[Block], fz[Block];
 };
 
-// The corners and fractions of the points first .. first + count - 1 (count <= Block).
-__attribute__((always_inline)) inline void cornersOfBlock(const RowLayout& l, const double* __restrict x,
-                                                          const double* __restrict y, const double* __restrict z,
-                                                          int first, int count, BlockCorners& c)
+// The first corner (as an index) and the fractions of each of count points: the reads' and the
+// scatter's shared first step.
+__attribute__((always_inline)) inline void cornersOfRowBody(const RowLayout& l, const double* __restrict x,
+                                                            const double* __restrict y, const double* __restrict z,
+                                                            int count, int* __restrict base, double* __restrict fx,
+                                                            double* __restrict fy, double* __restrict fz)
 {
   const AxisStep ax(l.n[0], l.offset[0], 1), ay(l.n[1], l.offset[1], l.n[0]), az(l.n[2], l.offset[2], l.n[0] * l.n[1]);
 #pragma omp simd
   for (int i = 0; i < count; ++i)
   {
     int ix, iy, iz;
-    c.fx[i] = ax.at(x[first + i], ix);
-    c.fy[i] = ay.at(y[first + i], iy);
-    c.fz[i] = az.at(z[first + i], iz);
-    c.base[i] = ix + l.n[0] * (iy + l.n[1] * iz);
+    fx[i] = ax.at(x[i], ix);
+    fy[i] = ay.at(y[i], iy);
+    fz[i] = az.at(z[i], iz);
+    base[i] = ix + l.n[0] * (iy + l.n[1] * iz);
   }
 }
 
@@ -165,7 +167,7 @@ __attribute__((always_inline)) inline void readRowImpl(const RowLayout& l, const
   for (int first = 0; first < count; first += Block)
   {
     const int m = count - first < Block ? count - first : Block;
-    cornersOfBlock(l, x, y, z, first, m, c);
+    cornersOfRowBody(l, x + first, y + first, z + first, m, c.base, c.fx, c.fy, c.fz);
     int gatherFrom = 0; // the first point not yet read
     for (int i = 0; i < m;)
     {
@@ -252,26 +254,6 @@ PARAFLUID_SIMD_DISPATCH(readRowPairRanged,
                          double* out, double* out2, double* lo, double* hi, double* lo2, double* hi2),
                         (layout, data, data2, range, range2, x, y, z, count, out, out2, lo, hi, lo2, hi2),
                         readRowPairRangedBody)
-
-namespace
-{
-__attribute__((always_inline)) inline void cornersOfRowBody(const RowLayout& l, const double* __restrict x,
-                                                            const double* __restrict y, const double* __restrict z,
-                                                            int count, int* __restrict base, double* __restrict fx,
-                                                            double* __restrict fy, double* __restrict fz)
-{
-  const AxisStep ax(l.n[0], l.offset[0], 1), ay(l.n[1], l.offset[1], l.n[0]), az(l.n[2], l.offset[2], l.n[0] * l.n[1]);
-#pragma omp simd
-  for (int i = 0; i < count; ++i)
-  {
-    int ix, iy, iz;
-    fx[i] = ax.at(x[i], ix);
-    fy[i] = ay.at(y[i], iy);
-    fz[i] = az.at(z[i], iz);
-    base[i] = ix + l.n[0] * (iy + l.n[1] * iz);
-  }
-}
-} // namespace
 
 PARAFLUID_SIMD_DISPATCH(cornersOfRow,
                         (const RowLayout& layout, const double* x, const double* y, const double* z, int count,

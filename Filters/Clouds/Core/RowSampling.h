@@ -3,8 +3,9 @@
 // that the compiler vectorises it and compiled for AVX-512, AVX2 and the baseline, the widest
 // picked at run time. The eight samples of a read are fetched by vector loads along runs of
 // points whose corners lie side by side (most of a row traced through a smooth flow), by gathers
-// elsewhere: the loads made the 128^3 step of the stable fluids 1.3-1.4x faster. Points are in cell units (x / h
-// from the grid's origin) and clamped at the array's ends, as DirectSampler reads them.
+// elsewhere: the loads made the 128^3 step of the stable fluids 1.3-1.4x faster. Points are in
+// cell units (x / h from the grid's origin) and clamped at the array's ends, as DirectSampler
+// reads them.
 #include "parafluid/clouds/StaggeredGrid.h"
 
 namespace parafluid::clouds::detail
