@@ -14,8 +14,11 @@
 //    scattering medium, exp(-sqrt(3 (1 - albedo) (1 - g)) tau) (the diffusion approximation of
 //    radiative transfer, e.g. Bohren 1987), by the same octaves;
 //  - a start jittered per pixel (interleaved gradient noise, Jimenez 2014) against banding,
-//    steps that grow through thin air, a jump over empty blocks (a coarse grid of the density's
-//    maxima), and an early exit once the transmittance is below minTransmittance;
+//    steps that grow through thin air and step back to the fine stride where they land in
+//    cloud (so an edge is never integrated over a long stride), steps that shrink where one
+//    would cross an optical depth over 1/2 (thick smoke is lit at its surface), a jump over empty blocks (a
+//    coarse grid of the density's maxima), and an early exit once the transmittance is below
+//    minTransmittance;
 //  - the ray stops at the opaque scene's depth, and the result is premultiplied: the view's
 //    colour behind is kept in proportion to the transmittance (blend ONE, ONE_MINUS_SRC_ALPHA);
 //    under MPI it also writes the depth where it starts to scatter, so that ParaView's depth
@@ -54,6 +57,9 @@ uniform mat4 worldToClip;       // (key form)
 //VTK::Output::Dec
 
 const float PI = 3.14159265;
+// The optical depth one step may cross, and the shortest step (in steps) taken to keep to it.
+const float maxStepDepth = 0.5;
+const float minStepFraction = 1.0 / 16.0;
 
 float henyeyGreenstein(float cosTheta, float g)
 {
@@ -134,10 +140,24 @@ void main()
     vec3 uvw = toTexture(q);
     float rho = texture(densityTex, uvw).r;
     ++samples;
+    if (rho > 0.0 && step > stepLength)
+    {
+      // A long stride reached cloud: march this segment again at the fine stride.
+      step = stepLength;
+      continue;
+    }
+    float sigmaT = extinction * rho;
+    if (sigmaT * dt > maxStepDepth && dt > minStepFraction * stepLength)
+    {
+      // So dense that one step would hide most of itself: the light read at the sample would be
+      // that of a random depth inside the step (dark specks at the edge of thick smoke). March this
+      // segment again in steps that each cross at most maxStepDepth.
+      step = max(maxStepDepth / sigmaT, minStepFraction * stepLength);
+      continue;
+    }
     if (rho > 0.0)
     {
       tFirst = tFirst < 0.0 ? t : tFirst;
-      float sigmaT = extinction * rho;
       vec2 paths = shadows != 0 ? texture(lightTex, uvw).rg : vec2(0.0);
       // Octave k: a^k of the optical depth, b^k of the light, c^k of the anisotropy (a = b = c = 1/2).
       // The sky light (isotropic) by the same octaves.
@@ -154,10 +174,15 @@ void main()
       }
       sun *= mix(1.0, 1.0 - exp(-2.0 * extinction * paths.r), powder);
       vec3 scattered = albedo * sigmaT * (sun + sky);
-      float stepTransmittance = exp(-sigmaT * dt);
-      radiance += transmittance * scattered * (1.0 - stepTransmittance) / sigmaT;
+      float stepDepth = sigmaT * dt;
+      float stepTransmittance = exp(-stepDepth);
+      // The length over which the step scatters, (1 - exp(-sigma_t dt)) / sigma_t: its series where
+      // sigma_t is tiny (a density of ~1e-40 in a plume's fringe made sigma_t 0 and this 0 / 0, NaN
+      // pixels drawn black).
+      float scatterLength = stepDepth > 1e-4 ? (1.0 - stepTransmittance) / sigmaT : dt * (1.0 - 0.5 * stepDepth);
+      radiance += transmittance * scattered * scatterLength;
       transmittance *= stepTransmittance;
-      step = stepLength;
+      step = min(stepLength, maxStepDepth / sigmaT);
       if (transmittance < minTransmittance)
       {
         break;
@@ -165,7 +190,9 @@ void main()
     }
     else
     {
-      step = min(2.0 * step, 4.0 * stepLength); // thin air: longer strides
+      // Thin air: longer strides, up to twice the step (four times jumped thin wisps, and with the
+      // jitter's pattern drew cross-hatching in thin cloud).
+      step = min(2.0 * step, 2.0 * stepLength);
     }
     t += dt;
   }
