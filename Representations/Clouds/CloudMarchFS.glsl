@@ -16,9 +16,9 @@
 //  - a start jittered per pixel (interleaved gradient noise, Jimenez 2014) against banding,
 //    steps that grow through thin air and step back to the fine stride where they land in
 //    cloud (so an edge is never integrated over a long stride), steps that shrink where one
-//    would cross an optical depth over 1/2 (thick smoke is lit at its surface), a jump over empty blocks (a
-//    coarse grid of the density's maxima), and an early exit once the transmittance is below
-//    minTransmittance;
+//    would cross an optical depth over 1/2 (thick smoke is lit at its surface), a jump over
+//    empty blocks (a coarse grid of the density's maxima), and an early exit once the
+//    transmittance is below minTransmittance;
 //  - the ray stops at the opaque scene's depth, and the result is premultiplied: the view's
 //    colour behind is kept in proportion to the transmittance (blend ONE, ONE_MINUS_SRC_ALPHA);
 //    under MPI it also writes the depth where it starts to scatter, so that ParaView's depth
@@ -177,8 +177,8 @@ void main()
       float stepDepth = sigmaT * dt;
       float stepTransmittance = exp(-stepDepth);
       // The length over which the step scatters, (1 - exp(-sigma_t dt)) / sigma_t: its series where
-      // sigma_t is tiny (a density of ~1e-40 in a plume's fringe made sigma_t 0 and this 0 / 0, NaN
-      // pixels drawn black).
+      // sigma_t is tiny (at a plume's fringe extinction x density fell below the smallest normal
+      // float, llvmpipe flushed it to 0, and this was 0 / 0: NaN pixels drawn black).
       float scatterLength = stepDepth > 1e-4 ? (1.0 - stepTransmittance) / sigmaT : dt * (1.0 - 0.5 * stepDepth);
       radiance += transmittance * scattered * scatterLength;
       transmittance *= stepTransmittance;

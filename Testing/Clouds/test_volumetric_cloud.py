@@ -154,7 +154,7 @@ pftest.check(difference.mean() < 0.5 and difference.max() <= 8, "skipping keeps 
 # plume's edge, where extinction x density flushes to 0 on llvmpipe while the density is not 0;
 # the step's scattering, (1 - exp(-sigma dt)) / sigma, was 0 / 0 there: NaN pixels drawn black in
 # a ring round the plume's head. Lit from the camera's side under a bright sky, no pixel of the
-# plume is dark (208 were before the fix, the darkest 2/255; after it the darkest is 70/255). ----
+# plume is dark (170 were before the fix, the darkest 2/255; after it the darkest is 70/255). ----
 smoke_view = CreateRenderView()
 smoke_view.ViewSize = [400, 300]
 smoke_view.OrientationAxesVisibility = 0
