@@ -82,6 +82,9 @@ public:
   /// distribution (vortices).
   void SetParticleShifting(bool value) { this->SetParameter(this->Parameters.particleShifting, value); }
   bool GetParticleShifting() const { return this->Parameters.particleShifting; }
+  /// δ-SPH: correct the pressure gradient of particles with a full neighbourhood (on by default).
+  void SetGradientCorrection(bool value) { this->SetParameter(this->Parameters.gradientCorrection, value); }
+  bool GetGradientCorrection() const { return this->Parameters.gradientCorrection; }
 
   /// Periodic axes x, y, z (0 or 1): the pair of box faces of that axis wrap around.
   void SetPeriodicAxes(int x, int y, int z);

@@ -7,7 +7,13 @@
 //    et al. 2019), so a resting column stays hydrostatic instead of diffusing towards uniform
 //    density;
 //  - Tait's equation of state p = B ((rho / rho0)^7 - 1), B = c0^2 rho0 / 7;
-//  - the momentum-conserving pressure gradient -sum_j m (p_i / rho_i^2 + p_j / rho_j^2) grad W_ij;
+//  - the momentum-conserving pressure gradient -sum_j m (p_i / rho_i^2 + p_j / rho_j^2) grad W_ij,
+//    whose difference part sum_j m (p_j - p_i) / (rho_i rho_j) grad W_ij is, for particles with a
+//    full neighbourhood, corrected by the inverse of the neighbours' first moment (Bonet & Lok
+//    1999; SPHParameters::gradientCorrection). The plain gradient's gain depends on the lattice's
+//    shear, so on a sheared lattice under gravity it pushed back like an elastic solid: a standing
+//    wave ran 2 % fast at H = 3 spacings, 14 % at 2 (Testing/Benchmarks/README.md, "Standing
+//    wave"). Wall images then carry hydrostatically extrapolated pressure (Adami et al. 2012);
 //  - Monaghan's (1992) artificial viscosity with a small alpha as the only numerical viscosity, and
 //    the fluid's physical viscosity (the laminar term of SPHParameters::kinematicViscosity, by
 //    Morris et al.'s 1997 operator, whose lattice error does not depend on the shear's direction);
@@ -28,7 +34,10 @@ public:
   double signalSpeed(const SPHParameters&) const override { return this->SoundSpeed; }
   void permute(SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
                int threads) override;
-  std::size_t bytes() const override { return this->DensityRate.capacity() * sizeof(float); }
+  std::size_t bytes() const override
+  {
+    return (this->DensityRate.capacity() + this->Correction.capacity()) * sizeof(float);
+  }
 
   /// c0 [m/s]: SPHParameters::soundSpeed, or when that is 0, ten times the free-fall speed over the
   /// fluid's height along gravity (Monaghan 1994: density then varies by about 1 %), at least ten
@@ -46,10 +55,14 @@ private:
   void shiftParticles(SPHSolver& sim, float dt);
   /// rho += dt D rho / D t, with the rate from the current positions and velocities.
   void advanceDensity(SPHSolver& sim, float dt);
+  /// D rho / D t into DensityRate and, with the gradient correction, each particle's Correction.
+  void sumDensityRates(SPHSolver& sim);
 
   std::vector<float> DensityRate;
-  std::vector<float> Shift;   // 3 per particle
-  std::vector<float> WallSum; // the mesh wall's sum at each particle when its density last moved
+  std::vector<float> Shift;      // 3 per particle
+  std::vector<float> WallSum;    // the mesh wall's sum at each particle when its density last moved
+  std::vector<float> Correction; // 6 per particle: the gradient correction L - C I (symmetric)
+  bool CorrectionFresh = false;  // Correction summed where the particles are now
   double SoundSpeed = 0.0;
   float PressureCorrection = 1.0f; // pressure forces, see latticeGradientCorrection
 };

@@ -62,6 +62,12 @@ struct SPHParameters
   // the move, and was measured (with a weaker coefficient) to set still water moving; on, it keeps
   // the Taylor-Green vortex from breaking down (energy error 61 -> 14 % at 25 particles across).
   bool particleShifting = false;
+  // δ-SPH: correct the pressure gradient of every particle with a full neighbourhood (its wall
+  // images included) by the inverse of its neighbours' first moment (Bonet & Lok 1999), with the
+  // wall images' pressure extrapolated hydrostatically (Adami et al. 2012). The plain gradient's
+  // gain changes as the particle lattice shears, which ran a standing wave 2 % fast (see
+  // DeltaSPHSolver.h); free-surface particles keep the plain gradient.
+  bool gradientCorrection = true;
   // sigma [N/m]: surface tension (water-air: 0.0728); 0 skips it. surfaceTensionModel picks the force.
   float surfaceTension = 0.0f;
   SurfaceTensionModel surfaceTensionModel = SurfaceTensionModel::Akinci;
