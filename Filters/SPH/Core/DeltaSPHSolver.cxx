@@ -7,6 +7,7 @@
 #include "parafluid/sph/WallMirrors.h"
 #include "private/MeshWall.h"
 #include "private/NeighbourCandidates.h"
+#include "private/GradientCorrection.h"
 #include "private/WallImages.h"
 
 #include <algorithm>
@@ -17,7 +18,10 @@ namespace parafluid::sph
 {
 using detail::CandidateBuffer;
 using detail::forEachParticleByCell;
+using detail::addImageMoment;
+using detail::applyGradientCorrection;
 using detail::forEachWallImage;
+using detail::gradientCorrection;
 using detail::threadCount;
 
 namespace
@@ -25,10 +29,6 @@ namespace
 constexpr float kGamma = 7.0f;              // Tait exponent for water (Batchelor 1967; Monaghan 1994)
 constexpr float kTensileCoefficient = 0.2f; // Monaghan (2000): R_i = 0.2 |p_i| / rho_i^2 where p_i < 0
 constexpr float kTensileExponent = 4.0f;    // ... times (W(r) / W(spacing))^4
-// det(C M) of a particle's first moment between which the gradient correction is blended in (see
-// gradientCorrection): 1 for a full neighbourhood, 0.83 for a second layer under a free surface.
-constexpr double kPartialMoment = 0.95;
-constexpr double kFullMoment = 0.97;
 
 enum Channel
 {
@@ -363,50 +363,6 @@ float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float
   return sums[0];
 }
 
-/// The gradient correction of a particle from its first moment M (xx, xy, xz, yy, yz, zz; wall
-/// images included): L - C I, where L = M^-1 makes the gradient of a linear field exact on any
-/// arrangement (Bonet & Lok 1999) and C is the rest lattice's scalar correction, which every
-/// particle gets anyway. Only for a full neighbourhood: where a free surface cuts the support, M
-/// loses part of a direction and the plain gradient, whose p_i + p_j form holds a surface
-/// together, is kept. On a simple cubic lattice at H = 3 spacings det(C M) is 1 from the third
-/// layer under a surface on, 0.83 in the second and 0.28 in the first; the correction is blended
-/// in between kPartialMoment and kFullMoment, so that a particle nearing a surface is not kicked.
-/// (Correcting the second layer too, from 0.7-0.8, set still water moving at 4e-2 sqrt(gH).)
-void gradientCorrection(const float* m, float c, float* out)
-{
-  const double xx = m[0], xy = m[1], xz = m[2], yy = m[3], yz = m[4], zz = m[5];
-  const double cofXX = yy * zz - yz * yz, cofXY = xz * yz - xy * zz, cofXZ = xy * yz - xz * yy;
-  const double det = xx * cofXX + xy * cofXY + xz * cofXZ;
-  const double full = det * c * c * c;
-  const double weight = std::min(1.0, std::max(0.0, (full - kPartialMoment) / (kFullMoment - kPartialMoment)));
-  if (weight <= 0.0)
-  {
-    std::fill(out, out + 6, 0.0f);
-    return;
-  }
-  const double inverse[6] = { cofXX / det,
-                              cofXY / det,
-                              cofXZ / det,
-                              (xx * zz - xz * xz) / det,
-                              (xy * xz - xx * yz) / det,
-                              (xx * yy - xy * xy) / det };
-  for (int e = 0; e < 6; ++e)
-  {
-    const double lattice = (e == 0 || e == 3 || e == 5) ? c : 0.0;
-    out[e] = static_cast<float>(weight * (inverse[e] - lattice));
-  }
-}
-
-/// A wall image's moment mapped back to the particle: R M R with R = diag(scale).
-void addImageMoment(const float* moment, const float* scale, float* total)
-{
-  total[0] += moment[0];
-  total[1] += scale[0] * scale[1] * moment[1];
-  total[2] += scale[0] * scale[2] * moment[2];
-  total[3] += moment[3];
-  total[4] += scale[1] * scale[2] * moment[4];
-  total[5] += moment[5];
-}
 
 /// The sums of particle shifting at q over the padded hits: sum_j W_ij into out[0] and the
 /// concentration gradient sum_j (dW/dr)/r (1 + 0.2 (W_ij / W(dp))^4) (q - x_j) into out[1..3].
@@ -543,10 +499,7 @@ void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters&
       {
         // The momentum sum holds -C sum_j m (p_j - p_i) / (rho_i rho_j) grad W_ij among its terms;
         // corrected, that part is -L times the sum (gradientCorrection: L - C I).
-        const float* e = correction + 6 * static_cast<std::size_t>(i);
-        a[0] -= e[0] * difference[0] + e[1] * difference[1] + e[2] * difference[2];
-        a[1] -= e[1] * difference[0] + e[3] * difference[1] + e[4] * difference[2];
-        a[2] -= e[2] * difference[0] + e[4] * difference[1] + e[5] * difference[2];
+        applyGradientCorrection(correction + 6 * static_cast<std::size_t>(i), difference, a);
       }
       detail::MeshWallTable::Weight weight;
       const float* normal = nullptr;
