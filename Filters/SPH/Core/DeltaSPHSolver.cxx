@@ -5,9 +5,9 @@
 #include "parafluid/common/SimdDispatch.h"
 #include "parafluid/sph/SPHSolver.h"
 #include "parafluid/sph/WallMirrors.h"
+#include "private/GradientCorrection.h"
 #include "private/MeshWall.h"
 #include "private/NeighbourCandidates.h"
-#include "private/GradientCorrection.h"
 #include "private/WallImages.h"
 
 #include <algorithm>
@@ -16,10 +16,10 @@
 
 namespace parafluid::sph
 {
-using detail::CandidateBuffer;
-using detail::forEachParticleByCell;
 using detail::addImageMoment;
 using detail::applyGradientCorrection;
+using detail::CandidateBuffer;
+using detail::forEachParticleByCell;
 using detail::forEachWallImage;
 using detail::gradientCorrection;
 using detail::threadCount;
@@ -362,7 +362,6 @@ float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float
   }
   return sums[0];
 }
-
 
 /// The sums of particle shifting at q over the padded hits: sum_j W_ij into out[0] and the
 /// concentration gradient sum_j (dW/dr)/r (1 + 0.2 (W_ij / W(dp))^4) (q - x_j) into out[1..3].

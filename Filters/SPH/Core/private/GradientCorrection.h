@@ -1,6 +1,6 @@
 #pragma once
 // Internal to the SPH solver: the kernel gradient correction of a particle (Bonet & Lok 1999) from
-// the first moment of its neighbourhood, shared by δ-SPH and Müller's WCSPH.
+// the first moment of its neighbourhood (δ-SPH's; apart from its pair loops, and any solver's to use).
 #include <algorithm>
 
 namespace parafluid::sph::detail
