@@ -54,7 +54,10 @@ TEST(SPHValidation, DeltaSPHDamBreakAgainstMartinAndMoyce)
   std::printf("dam break: front error mean %.3f max %.3f, column height error mean %.3f max %.3f\n", r.frontMeanError,
               r.frontMaxError, r.heightMeanError, r.heightMaxError);
   EXPECT_LT(r.frontMeanError, 0.15);
-  EXPECT_LT(r.heightMeanError, 0.12);
+  // The 5 % on the residual column, against Martin & Moyce's Table 6 (read 1.2 % mean and
+  // 2.5 % at worst here when it landed, 2026-11-28).
+  EXPECT_LT(r.heightMeanError, 0.05);
+  EXPECT_LT(r.heightMaxError, 0.05);
 }
 
 TEST(SPHValidation, DeltaSPHImpactOnTheWallArrivesWhenLobovskysDid)
