@@ -120,11 +120,12 @@ float ownImageGradient(const Constants& k, float r)
 /// position and velocity q, vq, its density, 1 / density and p_i / rho_i^2 with its tensile part;
 /// j's velocity, density and pressure. With Laminar, `laminar` gets the laminar term's factor L
 /// (a_i += m L (dW/dr) / r w_ij, w_ij the pair's relative velocity: see laminarVelocity).
+/// `inverseRhoJ` gets 1 / rho_j, for the caller's difference sum.
 template<bool Laminar>
 __attribute__((always_inline)) inline float momentumFactor(float dx, float dy, float dz, float rr, float value,
                                                            const float* vq, float vxj, float vyj, float vzj, float rhoI,
                                                            float termI, float tensileI, float rhoJ, float pJ,
-                                                           const Constants& k, float* laminar)
+                                                           const Constants& k, float* laminar, float* inverseRhoJOut)
 {
   const float approach = (vq[0] - vxj) * dx + (vq[1] - vyj) * dy + (vq[2] - vzj) * dz; // v_ij . x_ij
   // One division for the three quotients 1 / rho_j, 1 / (r^2 + eta^2) and 2 / (rho_i + rho_j): a
@@ -133,6 +134,7 @@ __attribute__((always_inline)) inline float momentumFactor(float dx, float dy, f
   const float rrEta = rr + k.eta2, sumRho = rhoI + rhoJ;
   const float inverse = 1.0f / (rrEta * sumRho * rhoJ);
   const float inverseRhoJ = inverse * rrEta * sumRho;
+  *inverseRhoJOut = inverseRhoJ;
   const float termJ = pJ * inverseRhoJ * inverseRhoJ;
   const float tensileJ = pJ < 0.0f ? -kTensileCoefficient * termJ : 0.0f;
   // Capped at 1: Wendland C2 at h = 2 spacings is so peaked that W(0) / W(spacing) = 5.3, and
@@ -192,8 +194,9 @@ struct PairInput
 /// The momentum terms of particle i (position q, velocity vq, density and pressure) against the
 /// candidates: pressure, tensile correction, artificial and laminar viscosity. `t` turns the
 /// laminar term's relative velocity into that of a no-slip wall image (all ones and not read
-/// without NoSlipImage).
-template<bool Laminar, bool NoSlipImage>
+/// without NoSlipImage); `lift` is read only with Lift (a wall image's query: the particle's own
+/// neighbours have none, and skipping it saves four multiply-adds a pair).
+template<bool Laminar, bool NoSlipImage, bool Lift>
 __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, const float* q, const float* vq,
                                                           float rhoI, float pI, const float* t, const float* lift,
                                                           const Constants& k, Sums* out)
@@ -217,15 +220,16 @@ __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, c
     const WendlandPair w(k.w, __builtin_sqrtf(rr));
     // A wall image's pressure, extrapolated hydrostatically from its particle's (lift: 0 for real
     // neighbours and without the gradient correction; see wallImageLift).
-    const float pJ = pressure[j] + rho[j] * (lift[0] * px[j] + lift[1] * py[j] + lift[2] * pz[j] + lift[3]);
-    float laminar = 0.0f;
+    const float pJ =
+      Lift ? pressure[j] + rho[j] * (lift[0] * px[j] + lift[1] * py[j] + lift[2] * pz[j] + lift[3]) : pressure[j];
+    float laminar = 0.0f, inverseRhoJ;
     const float scalar = momentumFactor<Laminar>(dx, dy, dz, rr, w.value, vq, vx[j], vy[j], vz[j], rhoI, termI,
-                                                 tensileI, rho[j], pJ, k, &laminar) *
+                                                 tensileI, rho[j], pJ, k, &laminar, &inverseRhoJ) *
                          (k.mass * w.gradient); // the product first, as before the factor was shared
     ax += scalar * dx;
     ay += scalar * dy;
     az += scalar * dz;
-    const float difference = (pJ - pI) * (massOverRhoI / rho[j]) * w.gradient;
+    const float difference = (pJ - pI) * (massOverRhoI * inverseRhoJ) * w.gradient;
     bx += difference * dx;
     by += difference * dy;
     bz += difference * dz;
@@ -252,15 +256,15 @@ __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, c
 PARAFLUID_SIMD_DISPATCH(laminarForceTerms,
                         (const PairInput& in, const float* q, const float* vq, float rhoI, float pI, const float* t,
                          const float* lift, const Constants& k, Sums* out),
-                        (in, q, vq, rhoI, pI, t, lift, k, out), (forceTermsBody<true, true>))
+                        (in, q, vq, rhoI, pI, t, lift, k, out), (forceTermsBody<true, true, true>))
 PARAFLUID_SIMD_DISPATCH(laminarInteriorForceTerms,
                         (const PairInput& in, const float* q, const float* vq, float rhoI, float pI, const float* t,
                          const float* lift, const Constants& k, Sums* out),
-                        (in, q, vq, rhoI, pI, t, lift, k, out), (forceTermsBody<true, false>))
+                        (in, q, vq, rhoI, pI, t, lift, k, out), (forceTermsBody<true, false, false>))
 PARAFLUID_SIMD_DISPATCH(inviscidForceTerms,
                         (const PairInput& in, const float* q, const float* vq, float rhoI, float pI, const float* t,
                          const float* lift, const Constants& k, Sums* out),
-                        (in, q, vq, rhoI, pI, t, lift, k, out), (forceTermsBody<false, false>))
+                        (in, q, vq, rhoI, pI, t, lift, k, out), (forceTermsBody<false, false, true>))
 
 template<bool Laminar>
 Sums forceTerms(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, float pI, const float t[3],
@@ -430,9 +434,9 @@ void addOwnImageForce(const float* q, const float* vq, const float* t, const flo
   const float dx = q[0] - x[0], dy = q[1] - x[1], dz = q[2] - x[2];
   const float term = p / (rho * rho);
   const float tensile = p < 0.0f ? -kTensileCoefficient * term : 0.0f;
-  float laminar = 0.0f;
+  float laminar = 0.0f, inverseRho;
   const float scalar = momentumFactor<Laminar>(dx, dy, dz, dx * dx + dy * dy + dz * dz, WendlandPair(k.w, r).value, vq,
-                                               v[0], v[1], v[2], rho, term, tensile, rho, p, k, &laminar) *
+                                               v[0], v[1], v[2], rho, term, tensile, rho, p, k, &laminar, &inverseRho) *
                        k.mass * change;
   a[0] += scalar * dx;
   a[1] += scalar * dy;
