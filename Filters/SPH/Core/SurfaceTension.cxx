@@ -11,7 +11,10 @@
 // The paper's second term, a curvature force -gamma sum_j K_ij (n_i - n_j) along the difference of
 // surface normals, is left out: its weight relative to the cohesion is free in the paper, and every
 // weight tried, from the dimensional one (gamma m / h^3) down to 1/500 of it, blew a weightless
-// 5 mm cube up within 12 ms, while the cohesion alone pulls the cube round and stays stable.
+// 5 mm cube up within 12 ms, while the cohesion alone pulls the cube round and stays stable. (Later
+// probe: with the paper's normal, which points into the water, the term is stable; the opposite one
+// anti-diffuses short waves. What is missing is its share of sigma: at the paper's weight a drop
+// oscillated as at 3.9 sigma. Testing/Benchmarks/README.md, "Akinci's curvature term".)
 #include "parafluid/sph/SPHSolver.h"
 
 #include "parafluid/common/Kernels.h"
