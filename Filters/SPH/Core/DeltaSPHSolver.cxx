@@ -120,7 +120,7 @@ float ownImageGradient(const Constants& k, float r)
 /// position and velocity q, vq, its density, 1 / density and p_i / rho_i^2 with its tensile part;
 /// j's velocity, density and pressure. With Laminar, `laminar` gets the laminar term's factor L
 /// (a_i += m L (dW/dr) / r w_ij, w_ij the pair's relative velocity: see laminarVelocity).
-/// `inverseRhoJ` gets 1 / rho_j, for the caller's difference sum.
+/// `inverseRhoJOut` gets 1 / rho_j, for the caller's difference sum.
 template<bool Laminar>
 __attribute__((always_inline)) inline float momentumFactor(float dx, float dy, float dz, float rr, float value,
                                                            const float* vq, float vxj, float vyj, float vzj, float rhoI,
