@@ -64,7 +64,7 @@ void vtkPFSPHStep::SetPressureSolver(int solver)
 
 void vtkPFSPHStep::SetSurfaceTensionModel(int model)
 {
-  const int clamped = std::clamp(model, 0, 1);
+  const int clamped = std::clamp(model, 0, 2);
   this->SetParameter(this->Parameters.surfaceTensionModel, static_cast<parafluid::sph::SurfaceTensionModel>(clamped));
 }
 

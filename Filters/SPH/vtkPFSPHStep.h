@@ -61,7 +61,8 @@ public:
   void SetSurfaceTension(double value) { this->SetParameter(this->Parameters.surfaceTension, value); }
   double GetSurfaceTension() const { return this->Parameters.surfaceTension; }
 
-  /// 0: Müller's colour field, 1: Akinci et al. 2013 (the default).
+  /// 0: Müller's colour field, 1: Akinci et al. 2013, cohesion and curvature (the default), 2: their
+  /// cohesion alone.
   void SetSurfaceTensionModel(int model);
   int GetSurfaceTensionModel() const { return static_cast<int>(this->Parameters.surfaceTensionModel); }
 

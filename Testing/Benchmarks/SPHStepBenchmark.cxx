@@ -19,7 +19,7 @@ using namespace parafluid::sph;
 SPHSolver damBreak(std::size_t particles, int threads, PressureSolverType solverKind = PressureSolverType::WCSPH,
                    float surfaceTension = 0.0f, bool adaptive = false, double kernelRatio = 2.0,
                    float kinematicViscosity = 1e-6f, ViscositySolver cg = ViscositySolver::HandWrittenCG,
-                   bool particleShifting = false)
+                   bool particleShifting = false, SurfaceTensionModel tensionModel = SurfaceTensionModel::Akinci)
 {
   // Block of a x 2a x a (x, z, y) layers of spacing d: particles = 2 a^3 / d^3.
   const double a = 0.5;
@@ -27,6 +27,7 @@ SPHSolver damBreak(std::size_t particles, int threads, PressureSolverType solver
   SPHParameters p;
   p.pressureSolver = solverKind;
   p.surfaceTension = surfaceTension;
+  p.surfaceTensionModel = tensionModel;
   p.adaptiveTimeStep = adaptive;
   p.smoothingLength = static_cast<float>(kernelRatio * d);
   // Müller's seed method with its paper's viscosity; the others at water's.
@@ -101,11 +102,16 @@ BENCHMARK(BM_SPHStep)
   ->UseRealTime()
   ->MinTime(2.0);
 
-/// The colour-field pass costs this much when on; with sigma = 0 it is not compiled into the loop.
+/// What surface tension costs, on δ-SPH's step at its default 3 spacings: 0 off, 1 Akinci's two
+/// terms (the default model), 2 Akinci's cohesion alone (Müller's colour field is WCSPH's and
+/// DFSPH's, fused into their force pass).
 void BM_SPHStepWithSurfaceTension(benchmark::State& state)
 {
+  const SurfaceTensionModel models[] = { SurfaceTensionModel::Akinci, SurfaceTensionModel::Akinci,
+                                         SurfaceTensionModel::AkinciCohesion };
   SPHSolver solver =
-    damBreak(static_cast<std::size_t>(state.range(0)), 2, PressureSolverType::WCSPH, state.range(1) ? 0.0728f : 0.0f);
+    damBreak(static_cast<std::size_t>(state.range(0)), 2, PressureSolverType::DeltaSPH, state.range(1) ? 0.0728f : 0.0f,
+             false, 3.0, 1e-6f, ViscositySolver::HandWrittenCG, false, models[state.range(1)]);
   for (auto _ : state)
   {
     solver.step();
@@ -117,6 +123,7 @@ BENCHMARK(BM_SPHStepWithSurfaceTension)
   ->ArgNames({ "particles", "tension" })
   ->Args({ 100'000, 0 })
   ->Args({ 100'000, 1 })
+  ->Args({ 100'000, 2 })
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime()
   ->MinTime(2.0);

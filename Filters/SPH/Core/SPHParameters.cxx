@@ -82,6 +82,12 @@ std::string SPHParameters::validate() const
   {
     return "SurfaceTension must be zero or positive (N/m), got " + std::to_string(surfaceTension);
   }
+  if (surfaceTension > 0.0f && surfaceTensionModel == SurfaceTensionModel::ColourField &&
+      pressureSolver == PressureSolverType::DeltaSPH)
+  {
+    return "SurfaceTensionModel: the colour field is part of the WCSPH and DFSPH force pass; with δ-SPH choose "
+           "Akinci 2013";
+  }
   if (!std::isfinite(surfaceThreshold) || surfaceThreshold < 0.0f)
   {
     return "SurfaceThreshold must be zero or positive, got " + std::to_string(surfaceThreshold);

@@ -750,6 +750,10 @@ double SPHSolver::bytesPerParticle() const
                       this->ScratchId.capacity() * sizeof(std::int64_t) +
                       this->ScratchIndex.capacity() * sizeof(std::uint32_t) +
                       this->InverseDensity.capacity() * sizeof(float) + this->Grid.bytes() + this->Pressure->bytes();
+  for (const auto& normal : this->SurfaceNormal)
+  {
+    total += normal.capacity() * sizeof(float);
+  }
   return static_cast<double>(total) / static_cast<double>(n);
 }
 } // namespace parafluid::sph

@@ -1,20 +1,22 @@
 // Surface tension of Akinci, Akinci & Teschner, "Versatile Surface Tension and Adhesion for SPH
-// Fluids" (SIGGRAPH Asia 2013), its cohesion force: pairs attract at long range and repel at short
-// range (so particles do not clump), each pair weighted by K_ij = 2 rho0 / (rho_i + rho_j), which
-// strengthens it where neighbours are missing, at the surface.
+// Fluids" (SIGGRAPH Asia 2013). Two terms, each pair weighted by K_ij = 2 rho0 / (rho_i + rho_j),
+// which strengthens it where neighbours are missing:
+// - cohesion: pairs attract at long range and repel at short range (so particles do not clump);
+// - curvature: a_i -= gamma sum_j K_ij (n_i - n_j), n_i = h sum_j (m / rho_j) grad_i W_ij the
+//   surface normal, which points into the fluid (with the opposite normal the term grows short
+//   waves and blows up). It pulls a bulge in, a hollow out: it minimises curvature.
 //
-// Units. The paper's gamma is a free coefficient. Here it is scaled so that the pair potential the
-// cohesion derives from has the surface energy sigma (Kirkwood & Buff 1949: for a pair potential
-// phi of a fluid of number density n, sigma = (pi n^2 / 8) int r^4 phi'(r) dr), which makes
-// SurfaceTension a physical value in N/m (water-air 0.0728) at any resolution.
-//
-// The paper's second term, a curvature force -gamma sum_j K_ij (n_i - n_j) along the difference of
-// surface normals, is left out: its weight relative to the cohesion is free in the paper, and every
-// weight tried, from the dimensional one (gamma m / h^3) down to 1/500 of it, blew a weightless
-// 5 mm cube up within 12 ms, while the cohesion alone pulls the cube round and stays stable. (Later
-// probe: with the paper's normal, which points into the water, the term is stable; the opposite one
-// anti-diffuses short waves. What is missing is its share of sigma: at the paper's weight a drop
-// oscillated as at 3.9 sigma. Testing/Benchmarks/README.md, "Akinci's curvature term".)
+// Units. The paper's gamma is a free coefficient, the same for both terms. Here it is scaled so
+// that the two terms together have the surface tension sigma of a flat interface in the
+// continuum limit (a uniform fluid up to the interface, K_ij = 1):
+// - the cohesion derives from a pair potential phi'(r) = gamma m^2 C(r), whose surface tension is
+//   Kirkwood & Buff's (1949) sigma = (pi n^2 / 8) int r^4 phi'(r) dr;
+// - the curvature term's force is not central; its surface tension is the mechanical one,
+//   sigma = int (P_N - P_T) dz, from the force the fluid below a plane exerts on the fluid above
+//   it (Irving & Kirkwood 1950), integrated over the plane's height (curvatureShare below).
+// With Wendland C2 at 3 spacings (δ-SPH) the curvature term carries 3.1 times the cohesion's
+// share, with the cubic spline at 2 spacings (DFSPH) 0.91 times. The oscillating drop of
+// Testing/SPH/SurfaceTensionTest.cxx checks the sum against Rayleigh's frequency.
 #include "parafluid/sph/SPHSolver.h"
 
 #include "parafluid/common/Kernels.h"
@@ -22,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace parafluid::sph
 {
@@ -32,37 +35,165 @@ using detail::threadCount;
 namespace
 {
 /// Akinci's cohesion kernel C(r) = 32 / (pi h^9) { (h - r)^3 r^3 for h/2 < r <= h;
-/// 2 (h - r)^3 r^3 - h^6 / 64 for 0 < r <= h/2 } (negative = repulsive at short range).
-float cohesion(float r, float h)
+/// 2 (h - r)^3 r^3 - h^6 / 64 for 0 < r <= h/2 } (negative = repulsive at short range), with its
+/// constants taken out of the pair loop.
+struct CohesionKernel
 {
-  if (r >= h || r <= 0.0f)
+  explicit CohesionKernel(float h)
+    : h(h)
+    , coefficient(static_cast<float>(32.0 / (kPi * std::pow(static_cast<double>(h), 9.0))))
+    , core(static_cast<float>(std::pow(static_cast<double>(h), 6.0) / 64.0))
   {
-    return 0.0f;
   }
-  const float c = 32.0f / (kPiF * std::pow(h, 9.0f));
-  const float d = (h - r) * (h - r) * (h - r) * r * r * r;
-  return r > 0.5f * h ? c * d : c * (2.0f * d - std::pow(h, 6.0f) / 64.0f);
-}
+  /// C(r) for 0 <= r <= h (0 beyond); branch-free for the vectorised loop.
+  float operator()(float r) const
+  {
+    const float e = std::max(h - r, 0.0f);
+    const float d = e * e * e * r * r * r;
+    return coefficient * (r > 0.5f * h ? d : 2.0f * d - core);
+  }
+  float h, coefficient, core;
+};
 
-/// int_0^h r^4 C(r) dr, by Simpson's rule (C is a polynomial on each half: exact enough).
-double cohesionMoment(float h)
+/// Simpson's rule of f over [a, b] with n (even) intervals.
+template<class F>
+double simpson(F&& f, double a, double b, int n)
 {
-  const int n = 2000;
   double sum = 0.0;
   for (int k = 0; k <= n; ++k)
   {
-    const double r = h * static_cast<double>(k) / n;
     const double weight = (k == 0 || k == n) ? 1.0 : (k % 2 == 1 ? 4.0 : 2.0);
-    sum += weight * r * r * r * r * cohesion(static_cast<float>(r), h);
+    sum += weight * f(a + (b - a) * k / n);
   }
-  return sum * h / (3.0 * n);
+  return sum * (b - a) / (3.0 * n);
+}
+
+/// int_0^h r^4 C(r) dr (C is a polynomial on each half: exact enough).
+double cohesionMoment(float h)
+{
+  const CohesionKernel cohesion(h);
+  return simpson([&cohesion](double r) { return r * r * r * r * cohesion(static_cast<float>(r)); }, 0.0, h, 2000);
+}
+
+/// The kernel that measures density, as a function of r.
+struct DensityKernelValue
+{
+  DensityKernel kernel;
+  WendlandC2Kernel wendland;
+  CubicSplineKernel cubic;
+  Poly6Kernel poly6;
+  DensityKernelValue(DensityKernel k, float h)
+    : kernel(k)
+    , wendland(h)
+    , cubic(h)
+    , poly6(h)
+  {
+  }
+  float operator()(float r) const
+  {
+    switch (kernel)
+    {
+      case DensityKernel::WendlandC2:
+        return wendland.value(r);
+      case DensityKernel::CubicSpline:
+        return cubic.value(r);
+      default:
+        return poly6.valueFromSquared(r * r);
+    }
+  }
+  /// (dW/dr) / r, so that grad_i W_ij = this times (x_i - x_j).
+  float gradientFactor(float r) const
+  {
+    switch (kernel)
+    {
+      case DensityKernel::WendlandC2:
+        return wendland.gradientFactor(r);
+      case DensityKernel::CubicSpline:
+        return r > 0.0f ? cubic.radialDerivative(r) / r : 0.0f;
+      default:
+        return poly6.gradientFactorFromSquared(r * r);
+    }
+  }
+};
+
+/// The curvature term's surface tension over the cohesion's, both per unit gamma, on a flat
+/// interface of a uniform fluid (z < 0, number density n = rho0 / m). There the normal is
+/// n(z) = -h W1(z) z^, with W1(z) = 2 pi int_|z|^h W(r) r dr the kernel integrated over a plane,
+/// and the element at y pushes the element at x with gamma m n^2 h (W1(z_x) - W1(z_y)) along z
+/// wherever |x - y| < h. The surface tension is the sum over pairs of their separation in z times
+/// that force, halved (each pair counted from both ends), over the disc of radius
+/// sqrt(h^2 - dz^2) at each separation dz: sigma_curvature = gamma rho0^2 h J / (2 m). Below
+/// z = -2h no pair has a force.
+double curvatureShare(DensityKernel kernel, float h, float m, float rho0, double cohesionIntegral)
+{
+  const DensityKernelValue w(kernel, h);
+  const int cells = 240;
+  const double dz = 2.0 * h / cells;
+  std::vector<double> z(cells), w1(cells);
+  for (int k = 0; k < cells; ++k)
+  {
+    z[k] = -(k + 0.5) * dz;
+    const double from = std::min(std::fabs(z[k]), static_cast<double>(h));
+    w1[k] =
+      2.0 * kPi * simpson([&w](double r) { return r * w(static_cast<float>(r)); }, from, static_cast<double>(h), 200);
+  }
+  double j = 0.0;
+  for (int a = 0; a < cells; ++a)
+  {
+    for (int b = 0; b < cells; ++b)
+    {
+      const double separation = z[a] - z[b];
+      if (std::fabs(separation) < h)
+      {
+        j += separation * (w1[a] - w1[b]) * kPi * (h * h - separation * separation);
+      }
+    }
+  }
+  j *= dz * dz;
+  const double curvatureSigma = rho0 * rho0 * h * j / (2.0 * m);           // per unit gamma
+  const double cohesionSigma = kPi * rho0 * rho0 * cohesionIntegral / 8.0; // per unit gamma
+  return curvatureSigma / cohesionSigma;
 }
 } // namespace
+
+void SPHSolver::computeSurfaceNormals()
+{
+  ParticleState& s = this->State;
+  const SPHParameters& p = this->Parameters;
+  const float h = p.smoothingLength;
+  const float m = p.particleMass;
+  const DensityKernelValue w(p.densityKernel(), h);
+  for (auto& normal : this->SurfaceNormal)
+  {
+    normal.resize(s.size());
+  }
+  float* normal[3] = { this->SurfaceNormal[0].data(), this->SurfaceNormal[1].data(), this->SurfaceNormal[2].data() };
+  forEachParticleByCell(this->Grid, s, h, threadCount(p), { s.density.data() },
+                        [&](CandidateBuffer& c, std::uint32_t i)
+                        {
+                          const float q[3] = { s.x[i], s.y[i], s.z[i] };
+                          const std::uint32_t count = c.findHits(q, h * h);
+                          float g[3] = { 0.0f, 0.0f, 0.0f };
+                          for (std::uint32_t k = 0; k < count; ++k)
+                          {
+                            const std::uint32_t j = c.hits[k];
+                            const float f = m / c.channel[0][j] * w.gradientFactor(std::sqrt(c.distanceSquared[j]));
+                            g[0] += f * (q[0] - c.x[j]);
+                            g[1] += f * (q[1] - c.y[j]);
+                            g[2] += f * (q[2] - c.z[j]);
+                          }
+                          for (int a = 0; a < 3; ++a)
+                          {
+                            normal[a][i] = h * g[a];
+                          }
+                        });
+}
 
 void SPHSolver::addSurfaceTension()
 {
   const SPHParameters& p = this->Parameters;
-  if (!(p.surfaceTension > 0.0f) || p.surfaceTensionModel != SurfaceTensionModel::Akinci)
+  const bool withCurvature = p.surfaceTensionModel == SurfaceTensionModel::Akinci;
+  if (!(p.surfaceTension > 0.0f) || !(withCurvature || p.surfaceTensionModel == SurfaceTensionModel::AkinciCohesion))
   {
     return;
   }
@@ -70,35 +201,82 @@ void SPHSolver::addSurfaceTension()
   const float h = p.smoothingLength;
   const float m = p.particleMass;
   const float rho0 = p.restDensity;
-  // Kirkwood-Buff with phi'(r) = gamma m^2 C(r) and n m = rho0: sigma = pi rho0^2 gamma I / 8.
-  const auto gamma = static_cast<float>(8.0 * p.surfaceTension / (kPi * rho0 * rho0 * cohesionMoment(h)));
+  // Kirkwood-Buff with phi'(r) = gamma m^2 C(r) and n m = rho0: sigma = pi rho0^2 gamma I / 8,
+  // shared with the curvature term in proportion to their surface tensions per unit gamma
+  // (computed once for a set of parameters: the integrals cost as much as a small scene's pass).
+  const std::array<float, 6> key = { static_cast<float>(p.surfaceTensionModel), p.surfaceTension, h, m, rho0,
+                                     static_cast<float>(p.densityKernel()) };
+  if (key != this->AkinciGammaKey)
+  {
+    const double moment = cohesionMoment(h);
+    const double curvature = withCurvature ? curvatureShare(p.densityKernel(), h, m, rho0, moment) : 0.0;
+    this->AkinciGamma = static_cast<float>(8.0 * p.surfaceTension / (kPi * rho0 * rho0 * moment * (1.0 + curvature)));
+    this->AkinciGammaKey = key;
+  }
+  const float gamma = this->AkinciGamma;
+  if (withCurvature)
+  {
+    this->computeSurfaceNormals();
+  }
+  const CohesionKernel cohesion(h);
   const float* rho = s.density.data();
-  // Forces between real particles only: an image across a wall is not fluid that pulls.
-  forEachParticleByCell(this->Grid, s, h, threadCount(p), { s.density.data() },
-                        [&](CandidateBuffer& c, std::uint32_t i)
-                        {
-                          const float q[3] = { s.x[i], s.y[i], s.z[i] };
-                          const std::uint32_t count = c.findHits(q, h * h);
-                          float a[3] = { 0.0f, 0.0f, 0.0f };
-                          for (std::uint32_t k = 0; k < count; ++k)
-                          {
-                            const std::uint32_t j = c.hits[k];
-                            const float r = std::sqrt(c.distanceSquared[j]);
-                            if (r <= 0.0f)
-                            {
-                              continue;
-                            }
-                            const float weight = 2.0f * rho0 / (rho[i] + c.channel[0][j]);
-                            const float pull = gamma * m * cohesion(r, h) / r;
-                            for (int d = 0; d < 3; ++d)
-                            {
-                              const float x = q[d] - (d == 0 ? c.x[j] : d == 1 ? c.y[j] : c.z[j]);
-                              a[d] -= weight * pull * x;
-                            }
-                          }
-                          s.ax[i] += a[0];
-                          s.ay[i] += a[1];
-                          s.az[i] += a[2];
-                        });
+  const float* normal[3] = { this->SurfaceNormal[0].data(), this->SurfaceNormal[1].data(),
+                             this->SurfaceNormal[2].data() };
+  const float pullScale = gamma * m;
+  // Forces between real particles only: an image across a wall is not fluid that pulls. The
+  // candidates carry the normals only when the curvature term reads them. A particle's own entry
+  // (r = 0) adds nothing: its 1/r is taken as 0, and n_i - n_i = 0.
+  const auto pass = [&](CandidateBuffer& c, std::uint32_t i)
+  {
+    const float q[3] = { s.x[i], s.y[i], s.z[i] };
+    const float n[3] = { withCurvature ? normal[0][i] : 0.0f, withCurvature ? normal[1][i] : 0.0f,
+                         withCurvature ? normal[2][i] : 0.0f };
+    const std::uint32_t count = c.findHits(q, h * h);
+    const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
+    const float* rhoJ = c.channel[0].data();
+    const std::uint32_t* hits = c.hits.data();
+    const float rhoI = rho[i];
+    float ax = 0.0f, ay = 0.0f, az = 0.0f;
+    if (withCurvature)
+    {
+      const float *nx = c.channel[1].data(), *ny = c.channel[2].data(), *nz = c.channel[3].data();
+#pragma omp simd reduction(+ : ax, ay, az)
+      for (std::uint32_t k = 0; k < count; ++k)
+      {
+        const std::uint32_t j = hits[k];
+        const float r = std::sqrt(r2[j]);
+        const float weight = 2.0f * rho0 / (rhoI + rhoJ[j]);
+        const float pull = pullScale * cohesion(r) * (r > 0.0f ? 1.0f / r : 0.0f);
+        ax -= weight * (pull * (q[0] - px[j]) + gamma * (n[0] - nx[j]));
+        ay -= weight * (pull * (q[1] - py[j]) + gamma * (n[1] - ny[j]));
+        az -= weight * (pull * (q[2] - pz[j]) + gamma * (n[2] - nz[j]));
+      }
+    }
+    else
+    {
+#pragma omp simd reduction(+ : ax, ay, az)
+      for (std::uint32_t k = 0; k < count; ++k)
+      {
+        const std::uint32_t j = hits[k];
+        const float r = std::sqrt(r2[j]);
+        const float pull = 2.0f * rho0 / (rhoI + rhoJ[j]) * pullScale * cohesion(r) * (r > 0.0f ? 1.0f / r : 0.0f);
+        ax -= pull * (q[0] - px[j]);
+        ay -= pull * (q[1] - py[j]);
+        az -= pull * (q[2] - pz[j]);
+      }
+    }
+    s.ax[i] += ax;
+    s.ay[i] += ay;
+    s.az[i] += az;
+  };
+  if (withCurvature)
+  {
+    forEachParticleByCell(this->Grid, s, h, threadCount(p), { s.density.data(), normal[0], normal[1], normal[2] },
+                          pass);
+  }
+  else
+  {
+    forEachParticleByCell(this->Grid, s, h, threadCount(p), { s.density.data() }, pass);
+  }
 }
 } // namespace parafluid::sph

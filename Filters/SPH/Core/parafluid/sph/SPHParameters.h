@@ -18,8 +18,9 @@ enum class PressureSolverType
 
 enum class SurfaceTensionModel
 {
-  ColourField, // Müller et al. 2003: sigma times the colour field's curvature at the surface
-  Akinci       // Akinci, Akinci & Teschner 2013: cohesion between pairs (SurfaceTension.cxx)
+  ColourField,   // Müller et al. 2003: sigma times the colour field's curvature at the surface
+  Akinci,        // Akinci, Akinci & Teschner 2013: cohesion and curvature terms (SurfaceTension.cxx)
+  AkinciCohesion // the same paper's cohesion alone, scaled to sigma by itself
 };
 
 /// How DFSPH's implicit viscosity system is solved (both matrix-free, Jacobi-preconditioned

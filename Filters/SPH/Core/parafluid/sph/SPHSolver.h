@@ -127,9 +127,11 @@ private:
   /// Viscosity, surface tension, gravity and (when withPressure) the equation-of-state pressure
   /// into State.a*; each pass is compiled in only when its coefficient is non-zero (SPHForces.cxx).
   void computeAccelerations(bool withPressure);
-  /// Adds Akinci et al.'s (2013) cohesion to State.a* (SurfaceTension.cxx), when sigma > 0 and
-  /// that model is chosen.
+  /// Adds Akinci et al.'s (2013) cohesion, and with SurfaceTensionModel::Akinci their curvature
+  /// term, to State.a* (SurfaceTension.cxx), when sigma > 0 and one of those models is chosen.
   void addSurfaceTension();
+  /// The surface normals of Akinci's curvature term into SurfaceNormal.
+  void computeSurfaceNormals();
 
   // The pressure solvers advance the simulation through its shared parts (grid, walls, forces,
   // time-step control) and keep their own per-particle arrays.
@@ -145,6 +147,10 @@ private:
   std::vector<std::int64_t> ScratchId;
   std::vector<std::uint32_t> ScratchIndex;
   std::vector<float> InverseDensity;
+  std::array<std::vector<float>, 3> SurfaceNormal; // Akinci's n_i = h sum_j (m / rho_j) grad W_ij
+  // Akinci's gamma for the parameters it was computed from (model, sigma, h, m, rho0, kernel).
+  float AkinciGamma = 0.0f;
+  std::array<float, 6> AkinciGammaKey = {};
   std::vector<float> PressureImpulse; // sum of p dt over the steps of advance() [Pa s]
   float ParticleSpacing = 0.0f;       // [m] edge of the cube a particle fills at rest density
   // Lattice corrections of the chosen solver's viscous operator and of Müller's spiky pressure
