@@ -2,11 +2,12 @@
 //  - hydrostatic column and still water (rho0 g depth);
 //  - dam break against Martin & Moyce (1952): surge front and residual column height;
 //  - dam break against Lobovsky et al. (2014): the pressure on the downstream wall;
-//  - Taylor-Green vortex (energy decay), Poiseuille flow (profile), standing wave (frequency).
+//  - Taylor-Green vortex (energy decay), Poiseuille flow (profile), standing wave (frequency);
+//  - a weightless drop's oscillation under surface tension (Akinci's two terms) against Rayleigh.
 // Writes <scene>.csv (one row per solver and resolution) and <scene>_curves.csv into the directory
 // given as first argument; plot_validation.py draws them.
 // Usage: ParaFluidSPHValidation <output-directory> [--scene all|hydrostatic|stillwater|dambreak|
-//        lobovsky|taylorgreen|poiseuille|standingwave] [--solver WCSPH|DFSPH|DeltaSPH]
+//        lobovsky|taylorgreen|poiseuille|standingwave|drop] [--solver WCSPH|DFSPH|DeltaSPH]
 //        [--resolutions 10,20,40] [--kernel-ratio r] (h / spacing of the chosen solvers)
 #include "SPHScenes.h"
 
@@ -27,7 +28,7 @@ namespace
 {
 const char* const kUsage =
   "usage: ParaFluidSPHValidation <output-directory> [--scene all|hydrostatic|stillwater|dambreak|lobovsky|\n"
-  "         taylorgreen|poiseuille|standingwave] [--solver WCSPH|DFSPH|DeltaSPH] [--resolutions 10,20,40]\n"
+  "         taylorgreen|poiseuille|standingwave|drop] [--solver WCSPH|DFSPH|DeltaSPH] [--resolutions 10,20,40]\n"
   "         [--kernel-ratio r]\n";
 
 /// One scene: its default resolutions, its CSV header, and a run that prints and returns a CSV row.
@@ -129,6 +130,19 @@ std::map<std::string, Scene> scenes()
                             return cost(r.cost) + "," + std::to_string(r.frequency) + "," + std::to_string(r.exact) +
                                    "," + std::to_string(r.frequencyError);
                           } };
+  all["drop"] = { { 8, 10, 14 },
+                  "period,rayleigh,period_error,sigma_ratio,largest_density,crossings",
+                  [](PressureSolverType s, int n, std::ostream& curves)
+                  {
+                    const Drop r = oscillatingDrop(s, n, &curves);
+                    std::printf("drop         %-8s %3d: %7lld particles %7lld steps %8.1f s  period %.2f ms (Rayleigh "
+                                "%.2f ms) error %.4f sigma ratio %.3f\n",
+                                solverName(s), n, r.cost.particles, r.cost.steps, r.cost.seconds, r.period * 1e3,
+                                r.rayleigh * 1e3, r.periodError, r.sigmaRatio);
+                    return cost(r.cost) + "," + std::to_string(r.period) + "," + std::to_string(r.rayleigh) + "," +
+                           std::to_string(r.periodError) + "," + std::to_string(r.sigmaRatio) + "," +
+                           std::to_string(r.largestDensity) + "," + std::to_string(r.crossings);
+                  } };
   return all;
 }
 } // namespace

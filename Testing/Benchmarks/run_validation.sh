@@ -18,7 +18,7 @@ if [ -z "$program" ]; then
     "$root/Testing/Benchmarks/SPHValidation.cxx" -o "$program"
 fi
 pids=()
-for scene in hydrostatic stillwater dambreak lobovsky taylorgreen poiseuille standingwave; do
+for scene in hydrostatic stillwater dambreak lobovsky taylorgreen poiseuille standingwave drop; do
   mkdir -p "$out/$scene"
   OMP_NUM_THREADS="${THREADS_PER_SCENE:-2}" "$program" "$out/$scene" --scene "$scene" >"$out/$scene/log.txt" 2>&1 &
   pids+=($!)

@@ -6,17 +6,22 @@
 //   surface normal, which points into the fluid (with the opposite normal the term grows short
 //   waves and blows up). It pulls a bulge in, a hollow out: it minimises curvature.
 //
-// Units. The paper's gamma is a free coefficient, the same for both terms. Here it is scaled so
-// that the two terms together have the surface tension sigma of a flat interface in the
+// Units. The paper's gamma is a free coefficient, the same number for both terms (in SI units: the
+// cohesion's gamma m_j C(r) and the curvature's gamma (n_i - n_j) differ by the units of a
+// density, so the terms' split of sigma depends on rho0, not on the particle size). Here gamma is
+// scaled so that the two terms together have the surface tension sigma of a flat interface in the
 // continuum limit (a uniform fluid up to the interface, K_ij = 1):
 // - the cohesion derives from a pair potential phi'(r) = gamma m^2 C(r), whose surface tension is
 //   Kirkwood & Buff's (1949) sigma = (pi n^2 / 8) int r^4 phi'(r) dr;
 // - the curvature term's force is not central; its surface tension is the mechanical one,
 //   sigma = int (P_N - P_T) dz, from the force the fluid below a plane exerts on the fluid above
 //   it (Irving & Kirkwood 1950), integrated over the plane's height (curvatureShare below).
-// With Wendland C2 at 3 spacings (δ-SPH) the curvature term carries 3.1 times the cohesion's
-// share, with the cubic spline at 2 spacings (DFSPH) 0.91 times. The oscillating drop of
-// Testing/SPH/SurfaceTensionTest.cxx checks the sum against Rayleigh's frequency.
+// With Wendland C2 at 3 spacings (δ-SPH) the curvature term carries 3.12 times the cohesion's
+// share, with the cubic spline at 2 spacings (DFSPH) 0.91 times. Nothing is fitted: the oscillating
+// drop (Testing/SPH/Validation/Drop.cxx, in ctest and ParaFluidSPHValidation) checks the sum
+// against Rayleigh's period: within 0.2-1.9 % with δ-SPH at 8-14 particles over the radius.
+// SurfaceTensionModel::AkinciCohesion keeps the cohesion alone, scaled by itself; a drop's
+// deformation then dies out within a quarter period instead of oscillating.
 #include "parafluid/sph/SPHSolver.h"
 
 #include "parafluid/common/Kernels.h"

@@ -14,8 +14,9 @@
 
 namespace parafluid::validation
 {
-constexpr float kGravity = 9.81f; // [m/s^2]
-constexpr float kRho0 = 1000.0f;  // [kg/m^3]
+constexpr float kGravity = 9.81f;               // [m/s^2]
+constexpr float kRho0 = 1000.0f;                // [kg/m^3]
+constexpr float kWaterSurfaceTension = 0.0728f; // water-air at 20 C [N/m]
 
 const char* solverName(sph::PressureSolverType solver);
 
@@ -115,4 +116,22 @@ struct StandingWave
   double frequencyError = 0.0; // relative
 };
 StandingWave standingWave(sph::PressureSolverType solver, int across, std::ostream* curves = nullptr);
+
+/// A weightless water drop of radius 2.5 mm, `across` particles over its radius, stretched by
+/// `stretch` along x (volume kept) and let go: the period of its l = 2 oscillation, from the zero
+/// crossings of (<x^2> - <y^2>) / (<x^2> + <y^2>), against Rayleigh's (1879)
+/// omega^2 = 8 sigma / (rho R^3) (32.7 ms), with sigma water's 0.0728 N/m. curves: rows
+/// solver,across,t,elongation.
+struct Drop
+{
+  RunCost cost;
+  double period = 0.0, rayleigh = 0.0; // [s]
+  double periodError = 1.0;            // relative; 1 when fewer than three zero crossings
+  double sigmaRatio = 0.0;             // the surface tension the period implies, over the one set
+  double largestDensity = 0.0;         // over rho0, the largest of the steps
+  int crossings = 0;
+};
+Drop oscillatingDrop(sph::PressureSolverType solver, int across, std::ostream* curves = nullptr,
+                     sph::SurfaceTensionModel model = sph::SurfaceTensionModel::Akinci, double stretch = 0.1,
+                     double duration = 0.1);
 } // namespace parafluid::validation
