@@ -336,6 +336,30 @@ bool vtkPFSPHStep::ResolveParameters(vtkFieldData* fd, SPHParameters& p)
   return true;
 }
 
+void vtkPFSPHStep::WarnOfUnvalidatedSurfaceTension(const SPHParameters& p)
+{
+  // DFSPH's density solve corrects compression only, so it does not hold the under-dense surface
+  // layer that Akinci's forces pull in; where those forces outweigh gravity at the particle scale
+  // a resting millimetre drop boils (Testing/Benchmarks/README.md, "Akinci's curvature term,
+  // landed"). δ-SPH holds it.
+  const bool akinci = p.surfaceTensionModel != parafluid::sph::SurfaceTensionModel::ColourField;
+  if (p.pressureSolver != PressureSolverType::DFSPH || !akinci || !(p.surfaceTension > 0.0f))
+  {
+    return;
+  }
+  const double capillary = p.surfaceTension / (p.restDensity * p.smoothingLength * p.smoothingLength);
+  const double gravity =
+    std::sqrt(p.gravity[0] * p.gravity[0] + p.gravity[1] * p.gravity[1] + p.gravity[2] * p.gravity[2]);
+  if (capillary > gravity)
+  {
+    vtkWarningMacro(<< "SPH Step: with DFSPH, Akinci surface tension that outweighs gravity at the particle scale "
+                       "(SurfaceTension / (RestDensity SmoothingLength^2) = "
+                    << capillary << " m/s^2, gravity " << gravity
+                    << " m/s^2) is not validated: a resting drop boils. Choose δ-SPH as PressureSolver for surface "
+                       "tension at this scale.");
+  }
+}
+
 bool vtkPFSPHStep::StartSimulation(vtkPointSet* input, vtkPolyData* surface)
 {
   Cache& cache = *this->Cached;
@@ -345,6 +369,7 @@ bool vtkPFSPHStep::StartSimulation(vtkPointSet* input, vtkPolyData* surface)
   {
     return false;
   }
+  this->WarnOfUnvalidatedSurfaceTension(p);
   // The solver (85 bytes a particle for WCSPH in the benchmarks, more for DFSPH) and the output's
   // arrays: 200 bytes a particle, checked before anything is allocated.
   const std::string memory =

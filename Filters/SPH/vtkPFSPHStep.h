@@ -182,6 +182,8 @@ private:
   /// error that names the property to set) when the input cannot supply them.
   bool ResolveParameters(vtkFieldData* fieldData, parafluid::sph::SPHParameters& resolved);
   /// A new simulation from the input particles and the optional boundary surface.
+  /// Warns where the parameters ask for what the validation found unsound (Benchmarks README).
+  void WarnOfUnvalidatedSurfaceTension(const parafluid::sph::SPHParameters& p);
   bool StartSimulation(vtkPointSet* input, vtkPolyData* boundary);
   /// Steps the cached simulation to output `target`, one output interval at a time: 1 when there,
   /// 0 after an error, -1 when the user aborted (the simulation is dropped either way).
