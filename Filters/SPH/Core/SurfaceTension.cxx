@@ -25,6 +25,7 @@
 #include "parafluid/sph/SPHSolver.h"
 
 #include "parafluid/common/Kernels.h"
+#include "private/AnyKernel.h"
 #include "private/NeighbourCandidates.h"
 
 #include <algorithm>
@@ -80,45 +81,26 @@ double cohesionMoment(float h)
   return simpson([&cohesion](double r) { return r * r * r * r * cohesion(static_cast<float>(r)); }, 0.0, h, 2000);
 }
 
-/// The kernel that measures density, as a function of r.
-struct DensityKernelValue
+/// (dW/dr) / r of a density kernel from r^2, so that grad_i W_ij = this times (x_i - x_j); 0 at
+/// r = 0, where it multiplies a zero vector.
+struct WendlandGradient
 {
-  DensityKernel kernel;
-  WendlandC2Kernel wendland;
-  CubicSplineKernel cubic;
-  Poly6Kernel poly6;
-  DensityKernelValue(DensityKernel k, float h)
-    : kernel(k)
-    , wendland(h)
-    , cubic(h)
-    , poly6(h)
+  WendlandC2Kernel w;
+  float operator()(float r2) const { return w.gradientFactor(std::sqrt(r2)); }
+};
+struct CubicGradient
+{
+  CubicSplineKernel w;
+  float operator()(float r2) const
   {
+    const float r = std::sqrt(r2);
+    return r > 0.0f ? w.radialDerivative(r) / r : 0.0f;
   }
-  float operator()(float r) const
-  {
-    switch (kernel)
-    {
-      case DensityKernel::WendlandC2:
-        return wendland.value(r);
-      case DensityKernel::CubicSpline:
-        return cubic.value(r);
-      default:
-        return poly6.valueFromSquared(r * r);
-    }
-  }
-  /// (dW/dr) / r, so that grad_i W_ij = this times (x_i - x_j).
-  float gradientFactor(float r) const
-  {
-    switch (kernel)
-    {
-      case DensityKernel::WendlandC2:
-        return wendland.gradientFactor(r);
-      case DensityKernel::CubicSpline:
-        return r > 0.0f ? cubic.radialDerivative(r) / r : 0.0f;
-      default:
-        return poly6.gradientFactorFromSquared(r * r);
-    }
-  }
+};
+struct Poly6Gradient
+{
+  Poly6Kernel w;
+  float operator()(float r2) const { return w.gradientFactorFromSquared(r2); }
 };
 
 /// The curvature term's surface tension over the cohesion's, both per unit gamma, on a flat
@@ -131,7 +113,7 @@ struct DensityKernelValue
 /// z = -2h no pair has a force.
 double curvatureShare(DensityKernel kernel, float h, float m, float rho0, double cohesionIntegral)
 {
-  const DensityKernelValue w(kernel, h);
+  const detail::AnyKernel w(kernel, h);
   const int cells = 240;
   const double dz = 2.0 * h / cells;
   std::vector<double> z(cells), w1(cells);
@@ -139,8 +121,8 @@ double curvatureShare(DensityKernel kernel, float h, float m, float rho0, double
   {
     z[k] = -(k + 0.5) * dz;
     const double from = std::min(std::fabs(z[k]), static_cast<double>(h));
-    w1[k] =
-      2.0 * kPi * simpson([&w](double r) { return r * w(static_cast<float>(r)); }, from, static_cast<double>(h), 200);
+    w1[k] = 2.0 * kPi *
+            simpson([&w](double r) { return r * w.value(static_cast<float>(r)); }, from, static_cast<double>(h), 200);
   }
   double j = 0.0;
   for (int a = 0; a < cells; ++a)
@@ -167,31 +149,45 @@ void SPHSolver::computeSurfaceNormals()
   const SPHParameters& p = this->Parameters;
   const float h = p.smoothingLength;
   const float m = p.particleMass;
-  const DensityKernelValue w(p.densityKernel(), h);
   for (auto& normal : this->SurfaceNormal)
   {
     normal.resize(s.size());
   }
   float* normal[3] = { this->SurfaceNormal[0].data(), this->SurfaceNormal[1].data(), this->SurfaceNormal[2].data() };
-  forEachParticleByCell(this->Grid, s, h, threadCount(p), { s.density.data() },
-                        [&](CandidateBuffer& c, std::uint32_t i)
-                        {
-                          const float q[3] = { s.x[i], s.y[i], s.z[i] };
-                          const std::uint32_t count = c.findHits(q, h * h);
-                          float g[3] = { 0.0f, 0.0f, 0.0f };
-                          for (std::uint32_t k = 0; k < count; ++k)
+  // The kernel is chosen once, outside the pair loop.
+  const auto sum = [&](const auto& gradientFactor)
+  {
+    forEachParticleByCell(this->Grid, s, h, threadCount(p), { s.density.data() },
+                          [&](CandidateBuffer& c, std::uint32_t i)
                           {
-                            const std::uint32_t j = c.hits[k];
-                            const float f = m / c.channel[0][j] * w.gradientFactor(std::sqrt(c.distanceSquared[j]));
-                            g[0] += f * (q[0] - c.x[j]);
-                            g[1] += f * (q[1] - c.y[j]);
-                            g[2] += f * (q[2] - c.z[j]);
-                          }
-                          for (int a = 0; a < 3; ++a)
-                          {
-                            normal[a][i] = h * g[a];
-                          }
-                        });
+                            const float q[3] = { s.x[i], s.y[i], s.z[i] };
+                            const std::uint32_t count = c.findHits(q, h * h);
+                            float g[3] = { 0.0f, 0.0f, 0.0f };
+                            for (std::uint32_t k = 0; k < count; ++k)
+                            {
+                              const std::uint32_t j = c.hits[k];
+                              const float f = m / c.channel[0][j] * gradientFactor(c.distanceSquared[j]);
+                              g[0] += f * (q[0] - c.x[j]);
+                              g[1] += f * (q[1] - c.y[j]);
+                              g[2] += f * (q[2] - c.z[j]);
+                            }
+                            for (int a = 0; a < 3; ++a)
+                            {
+                              normal[a][i] = h * g[a];
+                            }
+                          });
+  };
+  switch (p.densityKernel())
+  {
+    case DensityKernel::WendlandC2:
+      sum(WendlandGradient{ WendlandC2Kernel(h) });
+      break;
+    case DensityKernel::CubicSpline:
+      sum(CubicGradient{ CubicSplineKernel(h) });
+      break;
+    default:
+      sum(Poly6Gradient{ Poly6Kernel(h) });
+  }
 }
 
 void SPHSolver::addSurfaceTension()
