@@ -352,6 +352,40 @@ TEST(MeshBoundary, WaterOnAMeshFloorHasRestDensityInItsBottomLayer)
   EXPECT_LT(without, 0.9);
 }
 
+TEST(BoxWalls, DeltaSPHTankAtRestPushesNoFloorParticleIntoItsEdgeOrCorner)
+{
+  // δ-SPH water 10 layers deep in a box (a slab 4 particles thick, walls on every side), at SPH
+  // Step's kernel of 3 spacings, as it starts in hydrostatic equilibrium. A wall holds a particle
+  // off through the pair with its own image, whose stiffened profile is scaled to Wendland's at one
+  // spacing; an edge or corner particle's image across two or three walls is sqrt(2) or sqrt(3)
+  // spacings away, where that profile pushed 11 % less: those particles started at 2 m/s^2 into
+  // their corners (and 2.0 m/s^2 down), every other floor particle at rest.
+  SPHParameters p = water(PressureSolverType::DeltaSPH);
+  p.smoothingLength = 3.0f * kSpacing;
+  p.particleMass = latticeParticleMass(kSpacing, p.smoothingLength, p.restDensity, p.densityKernel());
+  p.domainBounds = { 0.0f, 10 * kSpacing, 0.0f, 4 * kSpacing, 0.0f, 20 * kSpacing };
+  const SPHSolver solver(p, block({ 0.0, 10 * kSpacing, 0.0, 4 * kSpacing, 0.0, 10 * kSpacing }));
+  const auto& s = solver.state();
+  double sideways = 0.0, lowestUp = 1e30, highestUp = -1e30;
+  int floorParticles = 0;
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    if (s.z[i] > kSpacing)
+    {
+      continue;
+    }
+    ++floorParticles;
+    sideways = std::max<double>(sideways, std::hypot(s.ax[i], s.ay[i]));
+    lowestUp = std::min<double>(lowestUp, s.az[i]);
+    highestUp = std::max<double>(highestUp, s.az[i]);
+  }
+  RecordProperty("largest_sideways_acceleration", std::to_string(sideways));
+  RecordProperty("vertical_acceleration_spread", std::to_string(highestUp - lowestUp));
+  ASSERT_EQ(floorParticles, 40);
+  EXPECT_LT(sideways, 0.01);             // m/s^2, against 9.81 of gravity
+  EXPECT_LT(highestUp - lowestUp, 0.01); // every floor particle alike
+}
+
 TEST(MeshBoundary, DeltaSPHWaterRestsStillOnAMeshFloor)
 {
   // δ-SPH water 8 layers deep on a flat mesh floor (the box's floor far below), at SPH Step's

@@ -39,12 +39,15 @@ TEST(SPHValidation, DeltaSPHStillWaterStaysStillAndHydrostatic)
   const StillWater r = stillWater(PressureSolverType::DeltaSPH, 10, 10.0);
   std::printf("still water: largest speed %.2e sqrt(gH), pressure error %.4f, drift %.3f spacings\n", r.largestSpeed,
               r.pressureError, r.highestDrift);
-  // Before a wall's push on a particle by its own image grew all the way to the wall, a floor
-  // particle sank onto the floor after about a second (closest 0.00 spacings) and set the tank
-  // moving at 2.6-3.9e-3 sqrt(gH); since, 1.2-1.9e-3 (the target of issue 21, 1e-3, is not met).
-  EXPECT_LT(r.largestSpeed, 0.003);
+  // Issue 21's target: the largest speed over the last second under 1e-3 sqrt(gH). Before a wall's
+  // push on a particle by its own image grew all the way to the wall, a floor particle sank onto the
+  // floor after about a second (closest 0.00 spacings) and set the tank moving at 2.6-3.9e-3; then
+  // 1.2-1.9e-3, the top layers creeping (drift 0.6 spacings) as the density diffusion pumped their
+  // steady departure from hydrostatic between them; since the diffusion at a free surface takes
+  // only the departure's fast part, 7e-5 (drift 0.004 spacings).
+  EXPECT_LT(r.largestSpeed, 0.001);
   EXPECT_LT(r.pressureError, 0.05);
-  EXPECT_LT(r.highestDrift, 1.0);
+  EXPECT_LT(r.highestDrift, 0.1);
   EXPECT_GT(r.closestToWall, 0.3);
 }
 
@@ -70,7 +73,8 @@ TEST(SPHValidation, DeltaSPHImpactOnTheWallArrivesWhenLobovskysDid)
   // The first peak is the artificial sound speed's water hammer, several times the experiment's
   // 2.84 (issue 21's 20 % is not met); with the front's particles running into their own soft
   // wall images it was 49, with the own image's push growing towards the wall about 26, and with
-  // the wall images' pressure extrapolated hydrostatically (the gradient correction's wall) 33.
+  // the wall images' pressure extrapolated hydrostatically (the gradient correction's wall) 33
+  // (34.4 since the density diffusion at a free surface leaves the departure's slow part alone).
   EXPECT_LT(r.peakPressure, 36.0);
 }
 

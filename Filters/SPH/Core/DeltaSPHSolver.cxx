@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 
 namespace parafluid::sph
@@ -36,7 +37,9 @@ enum Channel
   VY,
   VZ,
   DENSITY,
-  PRESSURE
+  PRESSURE,            // the force pass
+  FULLNESS = PRESSURE, // the continuity pass: each particle's neighbourhoodFullness, a step old
+  SLOW_DEPARTURE       // the continuity pass: the slow part of each particle's departure from hydrostatic
 };
 
 struct Constants
@@ -172,7 +175,7 @@ __attribute__((always_inline)) inline void laminarVelocity(const float* vq, floa
 /// no ordinary function (GCC requires the same tuning), so they touch no std:: call.
 struct PairInput
 {
-  const float *px, *py, *pz, *vx, *vy, *vz, *rho, *pressure;
+  const float *px, *py, *pz, *vx, *vy, *vz, *rho, *pressure, *fullness, *slowDeparture;
   const std::uint32_t* hits;
   std::uint32_t count;
   /// The hits of q, or (image) of a wall image of the particle whose own hits were found last.
@@ -185,6 +188,8 @@ struct PairInput
     , vz(c.channel[VZ].data())
     , rho(c.channel[DENSITY].data())
     , pressure(c.channel[PRESSURE].data())
+    , fullness(c.channel[FULLNESS].data())
+    , slowDeparture(c.channel[SLOW_DEPARTURE].data())
     , hits(image ? c.imageHits.data() : c.hits.data())
     , count(image ? c.findImageHits(q, h2) : c.padHits(c.findHits(q, h2, false)))
   {
@@ -301,17 +306,30 @@ void wallImageLift(const float* q, const float* x, const float* scale, const Con
   }
 }
 
+/// rho_i - rho^H(x_i), up to a constant: rho^H = rho0 (1 + g . x / c0^2), the linearised hydrostatic
+/// density the diffusion leaves alone (densityRateBody).
+float departureFromHydrostatic(const Constants& k, const ParticleState& s, std::size_t i)
+{
+  const float height = k.gravity[0] * s.x[i] + k.gravity[1] * s.y[i] + k.gravity[2] * s.z[i];
+  return s.density[i] - k.rho0 - k.rho0 * height * k.inverseC0Squared;
+}
+
 /// D rho_i / D t: continuity, plus (when `diffuse`: real neighbours only, an image's density is the
 /// particle's own, not that of the depth it is mirrored to) diffusion of the density's departure
 /// from hydrostatic (Fourtakas et al. 2019, linearised: rho_j^H - rho_i^H = rho0 g . (x_j - x_i) /
-/// c0^2 to first order in the compression, which stays about 1 % at c0 = 10 v_max).
+/// c0^2 to first order in the compression, which stays about 1 % at c0 = 10 v_max). Between
+/// particles whose neighbourhoods are full (fullness 1) the whole departure diffuses; as either
+/// nears a free surface, only its fast part, the departure less its slow part (see
+/// DeltaSPHSolver::SlowDeparture).
 __attribute__((always_inline)) inline void densityRateBody(const PairInput& in, const float* q, const float* vq,
-                                                           float rhoI, bool diffuse, const Constants& k, float* out)
+                                                           float rhoI, bool diffuse, float fullnessI, float slowI,
+                                                           const Constants& k, float* out)
 {
   const std::uint32_t count = in.count;
   const float *px = in.px, *py = in.py, *pz = in.pz;
   const float *vx = in.vx, *vy = in.vy, *vz = in.vz;
   const float* rho = in.rho;
+  const float *fullness = in.fullness, *slow = in.slowDeparture;
   const std::uint32_t* hits = in.hits;
   const float diffusion = diffuse ? k.delta * k.hSmooth * k.c0 * 2.0f * k.mass : 0.0f;
   float rate = 0.0f, mxx = 0.0f, mxy = 0.0f, mxz = 0.0f, myy = 0.0f, myz = 0.0f, mzz = 0.0f;
@@ -325,7 +343,7 @@ __attribute__((always_inline)) inline void densityRateBody(const PairInput& in, 
     const float approach = (vq[0] - vx[j]) * dx + (vq[1] - vy[j]) * dy + (vq[2] - vz[j]) * dz;
     const float hydrostatic =
       -k.rho0 * (k.gravity[0] * dx + k.gravity[1] * dy + k.gravity[2] * dz) * k.inverseC0Squared;
-    const float psi = (rho[j] - rhoI) - hydrostatic;
+    const float psi = (rho[j] - rhoI) - hydrostatic - (1.0f - fullnessI * fullness[j]) * (slow[j] - slowI);
     // One division, and the quotient taken whole (finite for the padding's far sentinel).
     rate += w.gradient * (k.mass * approach - diffusion * psi * (rr / (rho[j] * (rr + k.eta2))));
     // The first moment sum_j V_j (x_j - x_i) (x) grad W_ij = -sum_j V_j x_ij x_ij^T (dW/dr) / r.
@@ -348,18 +366,18 @@ __attribute__((always_inline)) inline void densityRateBody(const PairInput& in, 
 
 PARAFLUID_SIMD_DISPATCH(densityRateInto,
                         (const PairInput& in, const float* q, const float* vq, float rhoI, bool diffuse,
-                         const Constants& k, float* out),
-                        (in, q, vq, rhoI, diffuse, k, out), densityRateBody)
+                         float fullnessI, float slowI, const Constants& k, float* out),
+                        (in, q, vq, rhoI, diffuse, fullnessI, slowI, k, out), densityRateBody)
 
 /// D rho_i / D t of one query (the particle or a wall image), and the query's first moment
-/// (xx, xy, xz, yy, yz, zz) into moment.
-float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, bool image, const Constants& k,
-                  float moment[6])
+/// (xx, xy, xz, yy, yz, zz) into moment. fullnessI and slowI: the particle's (densityRateBody).
+float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, bool image, float fullnessI,
+                  float slowI, const Constants& k, float moment[6])
 {
   const PairInput in(c, q, k.h2, image);
   const bool diffuse = !image;
   float sums[7];
-  densityRateInto(in, q, vq, rhoI, diffuse, k, sums);
+  densityRateInto(in, q, vq, rhoI, diffuse, fullnessI, slowI, k, sums);
   for (int m = 0; m < 6; ++m)
   {
     moment[m] = sums[1 + m];
@@ -412,6 +430,16 @@ float ownImageChange(const float* q, const float* x, const Constants& k, float& 
   }
   r = std::sqrt((q[0] - x[0]) * (q[0] - x[0]) + (q[1] - x[1]) * (q[1] - x[1]) + (q[2] - x[2]) * (q[2] - x[2]));
   if (!(r > 0.0f) || r >= k.w.h)
+  {
+    return 0.0f;
+  }
+  // Only an image across one wall: the profile is scaled to Wendland's gradient at one spacing, and
+  // an image across two or three walls (a particle in an edge or corner) rests sqrt(2) or sqrt(3)
+  // spacings away, where that profile pushes less than Wendland's (by 11 % at sqrt(2) and H = 3
+  // spacings): it pushed corner particles into their corners, the largest speeds of a resting
+  // tank's first second (Testing/Benchmarks/README.md, "Still water, met").
+  const int mirrored = static_cast<int>(q[0] != x[0]) + static_cast<int>(q[1] != x[1]) + static_cast<int>(q[2] != x[2]);
+  if (mirrored != 1)
   {
     return 0.0f;
   }
@@ -526,30 +554,44 @@ void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters&
 }
 } // namespace
 
+namespace
+{
+double gravityMagnitude(const SPHParameters& p)
+{
+  return std::sqrt(static_cast<double>(p.gravity[0]) * p.gravity[0] + static_cast<double>(p.gravity[1]) * p.gravity[1] +
+                   static_cast<double>(p.gravity[2]) * p.gravity[2]);
+}
+
+/// The fluid's height along gravity [m], counting its top layer of particles (half a kernel radius).
+double fluidHeight(const SPHParameters& p, const ParticleState& s)
+{
+  const double g = gravityMagnitude(p);
+  double lowest = 0.0, highest = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    const double along = g > 0.0 ? -(s.x[i] * p.gravity[0] + s.y[i] * p.gravity[1] + s.z[i] * p.gravity[2]) / g : 0.0;
+    lowest = i == 0 ? along : std::min(lowest, along);
+    highest = i == 0 ? along : std::max(highest, along);
+  }
+  return highest - lowest + 0.5 * p.smoothingLength;
+}
+} // namespace
+
 double DeltaSPHSolver::automaticSoundSpeed(const SPHParameters& p, const ParticleState& s)
 {
   if (p.soundSpeed > 0.0f)
   {
     return p.soundSpeed;
   }
-  const double g =
-    std::sqrt(static_cast<double>(p.gravity[0]) * p.gravity[0] + static_cast<double>(p.gravity[1]) * p.gravity[1] +
-              static_cast<double>(p.gravity[2]) * p.gravity[2]);
-  double lowest = 0.0, highest = 0.0, fastest = 0.0;
-  bool first = true;
+  const double g = gravityMagnitude(p);
+  double fastest = 0.0;
   for (std::size_t i = 0; i < s.size(); ++i)
   {
-    // Height along gravity (any direction), and the fastest initial speed.
-    const double along = g > 0.0 ? -(s.x[i] * p.gravity[0] + s.y[i] * p.gravity[1] + s.z[i] * p.gravity[2]) / g : 0.0;
-    lowest = first ? along : std::min(lowest, along);
-    highest = first ? along : std::max(highest, along);
-    first = false;
     fastest =
       std::max(fastest, std::sqrt(static_cast<double>(s.vx[i]) * s.vx[i] + static_cast<double>(s.vy[i]) * s.vy[i] +
                                   static_cast<double>(s.vz[i]) * s.vz[i]));
   }
-  // The column's height counts its top layer of particles too (half a kernel radius).
-  const double height = highest - lowest + 0.5 * p.smoothingLength;
+  const double height = fluidHeight(p, s);
   double speed = std::max(std::sqrt(2.0 * g * height), fastest);
   if (p.surfaceTension > 0.0f)
   {
@@ -564,6 +606,13 @@ void DeltaSPHSolver::start(SPHSolver& sim)
 {
   ParticleState& s = sim.State;
   this->SoundSpeed = automaticSoundSpeed(sim.Parameters, s);
+  // The slow part of the density's departure follows it over the fluid's free-fall time over its
+  // own height: ten sqrt(2) times the time sound crosses that height at the automatic c0, and 3.5
+  // times the slowest acoustic period (4 H / c0), so acoustic noise stays in the fast part; a
+  // departure held longer than that (a truncated kernel's at a free surface at rest) counts as slow.
+  // Without gravity nothing holds the surface off hydrostatic, and the whole departure diffuses.
+  const double g = gravityMagnitude(sim.Parameters);
+  this->SlowDepartureTime = g > 0.0 ? std::sqrt(fluidHeight(sim.Parameters, s) / g) : 0.0;
   this->PressureCorrection =
     latticeGradientCorrection(sim.ParticleSpacing, sim.Parameters.smoothingLength, DensityKernel::WendlandC2);
   // Density is state here: a given one (a prepared initial condition) is kept; otherwise the
@@ -575,6 +624,7 @@ void DeltaSPHSolver::start(SPHSolver& sim)
     this->startHydrostatic(sim);
   }
   this->DensityRate.assign(s.size(), 0.0f);
+  this->startSlowDeparture(sim);
   // The wall's sum where each particle starts: its density counts from there.
   this->WallSum.assign(s.size(), 0.0f);
   if (sim.Wall)
@@ -643,7 +693,7 @@ void DeltaSPHSolver::permute(SPHSolver& sim, const std::vector<std::uint32_t>& o
 {
   // Density is state here (it is integrated, not summed), so it moves with its particle.
   ParticleState& s = sim.State;
-  for (auto* a : { &s.density, &this->DensityRate, &this->WallSum })
+  for (auto* a : { &s.density, &this->DensityRate, &this->WallSum, &this->Fullness, &this->SlowDeparture })
   {
     if (a->size() == s.size())
     {
@@ -729,8 +779,10 @@ void DeltaSPHSolver::sumDensityRates(SPHSolver& sim)
     constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing, sim.LaplacianCorrection, this->PressureCorrection);
   this->DensityRate.resize(s.size());
   this->Correction.resize(k.correctGradient ? 6 * s.size() : 0);
+  this->NextFullness.resize(s.size());
   forEachParticleByCell(
-    sim.Grid, s, p.smoothingLength, threadCount(p), { s.vx.data(), s.vy.data(), s.vz.data(), s.density.data() },
+    sim.Grid, s, p.smoothingLength, threadCount(p),
+    { s.vx.data(), s.vy.data(), s.vz.data(), s.density.data(), this->Fullness.data(), this->SlowDeparture.data() },
     [&](CandidateBuffer& c, std::uint32_t i)
     {
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
@@ -740,7 +792,8 @@ void DeltaSPHSolver::sumDensityRates(SPHSolver& sim)
                        [&](const float* q, const float* v, const float*, const float* scale, bool image)
                        {
                          float queryMoment[6];
-                         rate += densityRate(c, q, v, s.density[i], image, k, queryMoment);
+                         rate += densityRate(c, q, v, s.density[i], image, this->Fullness[i], this->SlowDeparture[i], k,
+                                             queryMoment);
                          addImageMoment(queryMoment, scale, moment);
                          if (image)
                          {
@@ -752,7 +805,10 @@ void DeltaSPHSolver::sumDensityRates(SPHSolver& sim)
       {
         gradientCorrection(moment, k.pressureCorrection, &this->Correction[6 * i]);
       }
+      this->NextFullness[i] = detail::neighbourhoodFullness(moment, k.pressureCorrection);
     });
+  // Written after the pass, which reads every neighbour's: the next step's diffusion uses these.
+  std::swap(this->Fullness, this->NextFullness);
   this->CorrectionFresh = k.correctGradient;
 }
 
@@ -785,6 +841,58 @@ void DeltaSPHSolver::advanceDensity(SPHSolver& sim, float dt)
       rho[i] += twiceMass * (sum - this->WallSum[i]);
       this->WallSum[i] = sum;
     }
+  }
+  this->followSlowDeparture(sim, dt);
+}
+
+void DeltaSPHSolver::resize(std::size_t n)
+{
+  // Added particles (SPHSolver::addParticles): full neighbourhoods until the next continuity pass
+  // says otherwise, and a slow departure that start() takes from where they are.
+  this->Fullness.resize(n, 1.0f);
+  this->SlowDeparture.resize(n, std::numeric_limits<float>::quiet_NaN());
+}
+
+void DeltaSPHSolver::startSlowDeparture(SPHSolver& sim)
+{
+  // Kept across a restart (particles added: see resize); otherwise each particle's slow departure
+  // starts at its departure, so the fluid as given counts as settled.
+  const ParticleState& s = sim.State;
+  const std::size_t n = s.size();
+  if (this->Fullness.size() != n || this->SlowDeparture.size() != n)
+  {
+    this->Fullness.assign(n, 1.0f);
+    this->SlowDeparture.assign(n, std::numeric_limits<float>::quiet_NaN());
+  }
+  this->NextFullness.resize(n);
+  const Constants k =
+    constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing, sim.LaplacianCorrection, this->PressureCorrection);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (!std::isfinite(this->SlowDeparture[i]) || !(this->SlowDepartureTime > 0.0))
+    {
+      this->SlowDeparture[i] = this->SlowDepartureTime > 0.0 ? departureFromHydrostatic(k, s, i) : 0.0f;
+    }
+  }
+}
+
+void DeltaSPHSolver::followSlowDeparture(SPHSolver& sim, float dt)
+{
+  const SPHParameters& p = sim.Parameters;
+  if (!(p.densityDiffusion > 0.0f) || !(this->SlowDepartureTime > 0.0))
+  {
+    return; // nothing diffuses, or (no gravity) the slow part stays 0
+  }
+  const Constants k =
+    constants(p, this->SoundSpeed, sim.ParticleSpacing, sim.LaplacianCorrection, this->PressureCorrection);
+  const float follow = static_cast<float>(std::min(1.0, dt / this->SlowDepartureTime));
+  const ParticleState& s = sim.State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  float* slow = this->SlowDeparture.data();
+#pragma omp parallel for schedule(static) num_threads(threadCount(p))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    slow[i] += follow * (departureFromHydrostatic(k, s, static_cast<std::size_t>(i)) - slow[i]);
   }
 }
 

@@ -23,6 +23,23 @@ inline void addImageMoment(const float* moment, const float* scale, float* total
   total[5] += moment[5];
 }
 
+/// How full a particle's neighbourhood is, from the determinant of its first moment M (wall images
+/// included) and the rest lattice's scalar correction c: 1 where det(c M) >= kFullMoment, 0 up to
+/// kPartialMoment (the first two layers under a free surface), linear between.
+inline double neighbourhoodFullness(double det, double c)
+{
+  const double full = det * c * c * c;
+  return std::min(1.0, std::max(0.0, (full - kPartialMoment) / (kFullMoment - kPartialMoment)));
+}
+
+/// The same from M itself (xx, xy, xz, yy, yz, zz).
+inline float neighbourhoodFullness(const float* m, float c)
+{
+  const double xx = m[0], xy = m[1], xz = m[2], yy = m[3], yz = m[4], zz = m[5];
+  const double det = xx * (yy * zz - yz * yz) + xy * (xz * yz - xy * zz) + xz * (xy * yz - xz * yy);
+  return static_cast<float>(neighbourhoodFullness(det, c));
+}
+
 /// The gradient correction of a particle from its first moment M (wall images included): L - C I,
 /// where L = M^-1 makes the gradient of a linear field exact on any arrangement and C is the rest
 /// lattice's scalar correction, which every particle gets anyway. Only for a full neighbourhood:
@@ -35,8 +52,7 @@ inline void gradientCorrection(const float* m, float c, float* out)
   const double xx = m[0], xy = m[1], xz = m[2], yy = m[3], yz = m[4], zz = m[5];
   const double cofXX = yy * zz - yz * yz, cofXY = xz * yz - xy * zz, cofXZ = xy * yz - xz * yy;
   const double det = xx * cofXX + xy * cofXY + xz * cofXZ;
-  const double full = det * c * c * c;
-  const double weight = std::min(1.0, std::max(0.0, (full - kPartialMoment) / (kFullMoment - kPartialMoment)));
+  const double weight = neighbourhoodFullness(det, c);
   if (weight <= 0.0)
   {
     std::fill(out, out + 6, 0.0f);

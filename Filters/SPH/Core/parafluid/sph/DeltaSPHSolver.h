@@ -5,7 +5,9 @@
 //    surface has no density deficit and needs no pressure clamp;
 //  - density diffusion (Molteni & Colagrossi 2009) with the hydrostatic part removed (Fourtakas
 //    et al. 2019), so a resting column stays hydrostatic instead of diffusing towards uniform
-//    density;
+//    density; near a free surface (a cut neighbourhood) only the departure's fast part diffuses:
+//    the truncated kernel holds the top layers at rest slightly off hydrostatic, and diffusing
+//    that steady departure pumped density between them, a creep that set still water moving;
 //  - Tait's equation of state p = B ((rho / rho0)^7 - 1), B = c0^2 rho0 / 7;
 //  - the momentum-conserving pressure gradient -sum_j m (p_i / rho_i^2 + p_j / rho_j^2) grad W_ij,
 //    whose difference part sum_j m (p_j - p_i) / (rho_i rho_j) grad W_ij is, for particles with a
@@ -34,9 +36,12 @@ public:
   double signalSpeed(const SPHParameters&) const override { return this->SoundSpeed; }
   void permute(SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
                int threads) override;
+  void resize(std::size_t n) override;
   std::size_t bytes() const override
   {
-    return (this->DensityRate.capacity() + this->Correction.capacity()) * sizeof(float);
+    return (this->DensityRate.capacity() + this->Correction.capacity() + this->Fullness.capacity() +
+            this->NextFullness.capacity() + this->SlowDeparture.capacity()) *
+           sizeof(float);
   }
 
   /// c0 [m/s]: SPHParameters::soundSpeed, or when that is 0, ten times the free-fall speed over the
@@ -55,14 +60,27 @@ private:
   void shiftParticles(SPHSolver& sim, float dt);
   /// rho += dt D rho / D t, with the rate from the current positions and velocities.
   void advanceDensity(SPHSolver& sim, float dt);
-  /// D rho / D t into DensityRate and, with the gradient correction, each particle's Correction.
+  /// D rho / D t into DensityRate and, with the gradient correction, each particle's Correction;
+  /// each particle's Fullness for the next step.
   void sumDensityRates(SPHSolver& sim);
+  /// SlowDeparture for the particles that have none (all at a start, the added ones at a restart).
+  void startSlowDeparture(SPHSolver& sim);
+  /// SlowDeparture moves towards each particle's departure over SlowDepartureTime.
+  void followSlowDeparture(SPHSolver& sim, float dt);
 
   std::vector<float> DensityRate;
   std::vector<float> Shift;      // 3 per particle
   std::vector<float> WallSum;    // the mesh wall's sum at each particle when its density last moved
   std::vector<float> Correction; // 6 per particle: the gradient correction L - C I (symmetric)
   bool CorrectionFresh = false;  // Correction summed where the particles are now
+  // How full each particle's neighbourhood was at the last continuity pass (detail::
+  // neighbourhoodFullness: 1 inside the fluid, 0 in the first two layers under a free surface).
+  std::vector<float> Fullness, NextFullness;
+  // The slow part of each particle's density departure from hydrostatic [kg/m^3], a first-order low
+  // pass of it over SlowDepartureTime (up to a constant): at a free surface the diffusion acts on
+  // the departure less this, the noise it is there to damp. 0 without gravity.
+  std::vector<float> SlowDeparture;
+  double SlowDepartureTime = 0.0; // [s], sqrt(H / g) of the fluid's height H (start); 0 without gravity
   double SoundSpeed = 0.0;
   float PressureCorrection = 1.0f; // pressure forces, see latticeGradientCorrection
 };

@@ -53,7 +53,8 @@ struct SPHParameters
   // times water's 1e-3: it also damps the acoustic noise of that scheme). 0, the default, skips it.
   float viscosity = 0.0f;
   // δ-SPH: Monaghan's artificial viscosity alpha (its only numerical viscosity; 0.01-0.02 in the
-  // δ-SPH literature), the density-diffusion coefficient delta (0.1, Molteni & Colagrossi 2009),
+  // δ-SPH literature), the density-diffusion coefficient delta (0.1, Molteni & Colagrossi 2009;
+  // near a free surface it acts on the fast part of the density only, see DeltaSPHSolver.h),
   // and the speed of sound c0 [m/s] (0: ten times the free-fall speed over the fluid's height).
   float artificialViscosity = 0.01f;
   float densityDiffusion = 0.1f;
