@@ -552,10 +552,7 @@ void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters&
       s.az[i] = a[2];
     });
 }
-} // namespace
 
-namespace
-{
 double gravityMagnitude(const SPHParameters& p)
 {
   return std::sqrt(static_cast<double>(p.gravity[0]) * p.gravity[0] + static_cast<double>(p.gravity[1]) * p.gravity[1] +
@@ -864,7 +861,6 @@ void DeltaSPHSolver::startSlowDeparture(SPHSolver& sim)
     this->Fullness.assign(n, 1.0f);
     this->SlowDeparture.assign(n, std::numeric_limits<float>::quiet_NaN());
   }
-  this->NextFullness.resize(n);
   const Constants k =
     constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing, sim.LaplacianCorrection, this->PressureCorrection);
   for (std::size_t i = 0; i < n; ++i)
