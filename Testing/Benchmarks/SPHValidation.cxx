@@ -7,7 +7,7 @@
 // Writes <scene>.csv (one row per solver and resolution) and <scene>_curves.csv into the directory
 // given as first argument; plot_validation.py draws them.
 // Usage: ParaFluidSPHValidation <output-directory> [--scene all|hydrostatic|stillwater|dambreak|
-//        lobovsky|taylorgreen|poiseuille|standingwave|drop] [--solver WCSPH|DFSPH|DeltaSPH]
+//        lobovsky|taylorgreen|poiseuille|standingwave|drop|lattice] [--solver WCSPH|DFSPH|DeltaSPH]
 //        [--resolutions 10,20,40] [--kernel-ratio r] (h / spacing of the chosen solvers)
 #include "SPHScenes.h"
 
@@ -28,8 +28,8 @@ namespace
 {
 const char* const kUsage =
   "usage: ParaFluidSPHValidation <output-directory> [--scene all|hydrostatic|stillwater|dambreak|lobovsky|\n"
-  "         taylorgreen|poiseuille|standingwave|drop] [--solver WCSPH|DFSPH|DeltaSPH] [--resolutions 10,20,40]\n"
-  "         [--kernel-ratio r]\n";
+  "         taylorgreen|poiseuille|standingwave|drop|lattice] [--solver WCSPH|DFSPH|DeltaSPH]\n"
+  "         [--resolutions 10,20,40] [--kernel-ratio r]\n";
 
 /// One scene: its default resolutions, its CSV header, and a run that prints and returns a CSV row.
 struct Scene
@@ -97,6 +97,18 @@ std::map<std::string, Scene> scenes()
                                "," + std::to_string(r.peakTimeError) + "," + std::to_string(r.peakPressureError) + "," +
                                std::to_string(r.frontError);
                       } };
+  all["lattice"] = { { 10, 12, 16 },
+                     "rms_speed,largest_speed,mean_pressure",
+                     [](PressureSolverType s, int n, std::ostream& curves)
+                     {
+                       const PressurisedLattice r = pressurisedLattice(s, n, &curves);
+                       std::printf("lattice      %-8s %3d: %7lld particles %7lld steps %8.1f s  rms speed %.2e m/s "
+                                   "largest %.2e m/s (mean pressure %.0f Pa)\n",
+                                   solverName(s), n, r.cost.particles, r.cost.steps, r.cost.seconds, r.rmsSpeed,
+                                   r.largestSpeed, r.meanPressure);
+                       return cost(r.cost) + "," + std::to_string(r.rmsSpeed) + "," + std::to_string(r.largestSpeed) +
+                              "," + std::to_string(r.meanPressure);
+                     } };
   all["taylorgreen"] = { { 25, 50, 100 },
                          "energy_decay_error",
                          [](PressureSolverType s, int n, std::ostream& curves)

@@ -59,6 +59,20 @@ struct StillWater
 };
 StillWater stillWater(sph::PressureSolverType solver, int across, double duration);
 
+/// A periodic cube of water `across` particles on a side (12.5 mm apart, the still-water tank's
+/// spacing at 40 across) without gravity, under a uniform 3.9 kPa (0.4 m of water), started on its
+/// simple cubic lattice with 1e-4 spacings of noise, for 1.5 s: a fluid has no shear stiffness, so
+/// nothing should move; a lattice that the pressure forces shear apart grows a transverse wave.
+/// curves: rows solver,across,t,rms_speed,largest_speed (the largest over each 0.25 s).
+struct PressurisedLattice
+{
+  RunCost cost;
+  double rmsSpeed = 0.0;     // at the end [m/s]
+  double largestSpeed = 0.0; // over the last 0.25 s [m/s]
+  double meanPressure = 0.0; // at the end [Pa]
+};
+PressurisedLattice pressurisedLattice(sph::PressureSolverType solver, int across, std::ostream* curves = nullptr);
+
 /// Martin & Moyce (1952): a column a = 2.25 in wide and 2a high released in a tank 6a long; the
 /// surge front Z = x/a against T = t sqrt(2 g / a), compared up to T = 3, and the residual
 /// column height at the left wall h / 2a against tau = t sqrt(g / a). curves: rows
