@@ -13,8 +13,10 @@ shear moduli C44 (u along x, k along y) and C' (u along x - y, k along x + y) of
 standing wave feels as a spurious elasticity (Testing/Benchmarks/README.md, "The pressure gradient on a
 sheared lattice").
 
-Usage: /usr/bin/python3 Testing/Benchmarks/lattice_stability.py [kernel:support ...]
-       (kernel: wendland (δ-SPH's Wendland C2) or quintic (Morris et al. 1997's M6 spline))
+Usage: /usr/bin/python3 Testing/Benchmarks/lattice_stability.py [kernel:support[:density_kernel:support] ...]
+       (kernel: wendland (δ-SPH's Wendland C2), cubic (DFSPH's and Müller's cubic spline) or quintic
+       (Morris et al. 1997's M6 spline); the density kernel, whose response holds the compression, is
+       Wendland C2 at 3 spacings unless given)
 """
 import itertools
 import sys
@@ -23,6 +25,7 @@ import numpy as np
 
 SHAPES = {
     "wendland": lambda q: np.maximum(1.0 - q, 0.0) ** 4 * (1.0 + 4.0 * q),
+    "cubic": lambda q: np.where(q < 0.5, 1.0 - 6.0 * q * q + 6.0 * q**3, 2.0 * np.maximum(1.0 - q, 0.0) ** 3),
     "quintic": lambda q: (np.maximum(1.0 - q, 0.0) ** 5 - 6.0 * np.maximum(2.0 / 3.0 - q, 0.0) ** 5 +
                           15.0 * np.maximum(1.0 / 3.0 - q, 0.0) ** 5),
 }
@@ -37,7 +40,7 @@ def radial_derivatives(kernel, support, r, step=1e-5):
     return (w(r + step) - w(r - step)) / (2.0 * step), (w(r + step) - 2.0 * w(r) + w(r - step)) / step**2
 
 
-def analyse(kernel, support, density_support, samples=13):
+def analyse(kernel, support, density_kernel, density_support, samples=13):
     reach = int(np.ceil(max(support, density_support)))
     offsets = [np.array(o, float) for o in itertools.product(range(-reach, reach + 1), repeat=3)
                if 0.0 < np.linalg.norm(o) < max(support, density_support)]
@@ -47,7 +50,7 @@ def analyse(kernel, support, density_support, samples=13):
         e = x / r
         first, second = radial_derivatives(kernel, support, r) if r < support else (0.0, 0.0)
         hessian = second * np.outer(e, e) + first / r * (np.eye(3) - np.outer(e, e))
-        density_slope = radial_derivatives("wendland", density_support, r)[0] if r < density_support else 0.0
+        density_slope = radial_derivatives(density_kernel, density_support, r)[0] if r < density_support else 0.0
         terms.append((x, hessian, density_slope * e))
 
     def matrices(k):
@@ -87,8 +90,9 @@ def main():
                              "quintic:2.9", "quintic:3"]
     print("kernel     support  smallest eigenvalue / k^2 (at k / pi)      C44        C'       verdict")
     for case in cases:
-        kernel, support = case.split(":")
-        worst, where, c44, c_prime = analyse(kernel, float(support), density_support=3.0)
+        kernel, support, *density = case.split(":")  # the density kernel: δ-SPH's Wendland at 3 unless given
+        density_kernel, density_support = (density[0], float(density[1])) if density else ("wendland", 3.0)
+        worst, where, c44, c_prime = analyse(kernel, float(support), density_kernel, density_support)
         verdict = "stable" if worst >= -1e-6 else "unstable"
         print(f"{kernel:9s}  {float(support):6.2f}   {worst:+.5f} at {np.round(where, 2)}   "
               f"{c44:+.5f}  {c_prime:+.5f}   {verdict}")
