@@ -16,7 +16,8 @@ sheared lattice").
 Usage: /usr/bin/python3 Testing/Benchmarks/lattice_stability.py [kernel:support[:density_kernel:support] ...]
        (kernel: wendland (δ-SPH's Wendland C2), cubic (DFSPH's and Müller's cubic spline) or quintic
        (Morris et al. 1997's M6 spline); the density kernel, whose response holds the compression, is
-       Wendland C2 at 3 spacings unless given)
+       the same kernel at the same support unless given: quintic:2.8:wendland:3 is a quintic
+       2 p_i term inside δ-SPH's Wendland kernel at 3 spacings)
 """
 import itertools
 import sys
@@ -86,12 +87,12 @@ def analyse(kernel, support, density_kernel, density_support, samples=13):
 
 def main():
     cases = sys.argv[1:] or ["wendland:2.75", "wendland:2.8", "wendland:2.85", "wendland:2.9", "wendland:2.95",
-                             "wendland:3", "wendland:3.2", "wendland:3.5", "quintic:2.7", "quintic:2.8",
-                             "quintic:2.9", "quintic:3"]
+                             "wendland:3", "wendland:3.2", "wendland:3.5", "wendland:4", "quintic:2.8:wendland:3",
+                             "quintic:3:wendland:3", "cubic:2"]
     print("kernel     support  smallest eigenvalue / k^2 (at k / pi)      C44        C'       verdict")
     for case in cases:
-        kernel, support, *density = case.split(":")  # the density kernel: δ-SPH's Wendland at 3 unless given
-        density_kernel, density_support = (density[0], float(density[1])) if density else ("wendland", 3.0)
+        kernel, support, *density = case.split(":")  # the density kernel: the same one unless given
+        density_kernel, density_support = (density[0], float(density[1])) if density else (kernel, float(support))
         worst, where, c44, c_prime = analyse(kernel, float(support), density_kernel, density_support)
         verdict = "stable" if worst >= -1e-6 else "unstable"
         print(f"{kernel:9s}  {float(support):6.2f}   {worst:+.5f} at {np.round(where, 2)}   "
