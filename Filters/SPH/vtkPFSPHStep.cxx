@@ -292,9 +292,10 @@ bool vtkPFSPHStep::ResolveParameters(vtkFieldData* fd, SPHParameters& p)
     p.smoothingLength = static_cast<float>(parafluid::vtk::fieldValue(fd, contract::SmoothingLength, 2.0 * spacing));
     if (p.pressureSolver == parafluid::sph::PressureSolverType::DeltaSPH)
     {
-      // δ-SPH's Wendland kernel wants at least 3 spacings (at 2, waves run 14 % fast: the
-      // Benchmarks README); an input's wider smoothing_length is kept.
-      p.smoothingLength = std::max(p.smoothingLength, static_cast<float>(3.0 * spacing));
+      // δ-SPH's Wendland kernel wants kDeltaSPHSupport spacings (at 2, waves run 14 % fast; at 3
+      // the lattice under pressure shears apart: the Benchmarks README); an input's wider
+      // smoothing_length is kept.
+      p.smoothingLength = std::max(p.smoothingLength, static_cast<float>(parafluid::sph::kDeltaSPHSupport * spacing));
     }
   }
   const bool domainGiven = std::any_of(p.domainBounds.begin(), p.domainBounds.end(), [](float v) { return v != 0.0f; });

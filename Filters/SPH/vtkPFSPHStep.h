@@ -86,6 +86,10 @@ public:
   /// δ-SPH: correct the pressure gradient of particles with a full neighbourhood (on by default).
   void SetGradientCorrection(bool value) { this->SetParameter(this->Parameters.gradientCorrection, value); }
   bool GetGradientCorrection() const { return this->Parameters.gradientCorrection; }
+  /// δ-SPH: take the smooth part out of the pressure force's 2 p_i term in full neighbourhoods,
+  /// so the particle lattice has no long-wave shear stiffness under pressure (on by default).
+  void SetPushHighPass(bool value) { this->SetParameter(this->Parameters.pushHighPass, value); }
+  bool GetPushHighPass() const { return this->Parameters.pushHighPass; }
 
   /// Periodic axes x, y, z (0 or 1): the pair of box faces of that axis wrap around.
   void SetPeriodicAxes(int x, int y, int z);

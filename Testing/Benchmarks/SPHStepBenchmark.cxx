@@ -71,13 +71,13 @@ double meanNeighbours(const SPHSolver& solver)
 
 void BM_SPHStep(benchmark::State& state)
 {
-  // solver 0: Müller's WCSPH; 2: δ-SPH at h = 2 spacings; 3: δ-SPH at h = 3 spacings; 4: the same with
+  // solver 0: Müller's WCSPH; 2: δ-SPH at h = 2 spacings; 3: δ-SPH at its default kDeltaSPHSupport; 4: the same with
   // particle shifting (SPH Step's ParticleShifting).
   const bool delta = state.range(2) >= 2;
   SPHSolver solver =
     damBreak(static_cast<std::size_t>(state.range(0)), static_cast<int>(state.range(1)),
              delta ? PressureSolverType::DeltaSPH : PressureSolverType::WCSPH, 0.0f, false,
-             state.range(2) >= 3 ? 3.0 : 2.0, 1e-6f, ViscositySolver::HandWrittenCG, state.range(2) == 4);
+             state.range(2) >= 3 ? kDeltaSPHSupport : 2.0, 1e-6f, ViscositySolver::HandWrittenCG, state.range(2) == 4);
   for (auto _ : state)
   {
     solver.step();
@@ -102,7 +102,7 @@ BENCHMARK(BM_SPHStep)
   ->UseRealTime()
   ->MinTime(2.0);
 
-/// What surface tension costs, on δ-SPH's step at its default 3 spacings: 0 off, 1 Akinci's two
+/// What surface tension costs, on δ-SPH's step at its default support (kDeltaSPHSupport): 0 off, 1 Akinci's two
 /// terms (the default model), 2 Akinci's cohesion alone (Müller's colour field is WCSPH's and
 /// DFSPH's, fused into their force pass).
 void BM_SPHStepWithSurfaceTension(benchmark::State& state)
@@ -111,7 +111,7 @@ void BM_SPHStepWithSurfaceTension(benchmark::State& state)
                                          SurfaceTensionModel::AkinciCohesion };
   SPHSolver solver =
     damBreak(static_cast<std::size_t>(state.range(0)), 2, PressureSolverType::DeltaSPH, state.range(1) ? 0.0728f : 0.0f,
-             false, 3.0, 1e-6f, ViscositySolver::HandWrittenCG, false, models[state.range(1)]);
+             false, kDeltaSPHSupport, 1e-6f, ViscositySolver::HandWrittenCG, false, models[state.range(1)]);
   for (auto _ : state)
   {
     solver.step();

@@ -9,6 +9,7 @@
 // Usage: ParaFluidSPHValidation <output-directory> [--scene all|hydrostatic|stillwater|dambreak|
 //        lobovsky|taylorgreen|poiseuille|standingwave|drop|lattice] [--solver WCSPH|DFSPH|DeltaSPH]
 //        [--resolutions 10,20,40] [--kernel-ratio r] (h / spacing of the chosen solvers)
+//        [--no-push-high-pass] (δ-SPH's SPHParameters::pushHighPass off)
 #include "SPHScenes.h"
 
 #include <cstdio>
@@ -29,7 +30,7 @@ namespace
 const char* const kUsage =
   "usage: ParaFluidSPHValidation <output-directory> [--scene all|hydrostatic|stillwater|dambreak|lobovsky|\n"
   "         taylorgreen|poiseuille|standingwave|drop|lattice] [--solver WCSPH|DFSPH|DeltaSPH]\n"
-  "         [--resolutions 10,20,40] [--kernel-ratio r]\n";
+  "         [--resolutions 10,20,40] [--kernel-ratio r] [--no-push-high-pass]\n";
 
 /// One scene: its default resolutions, its CSV header, and a run that prints and returns a CSV row.
 struct Scene
@@ -178,6 +179,10 @@ int main(int argc, char** argv)
     if (option == "--kernel-ratio" && k + 1 < argc)
     {
       ratio = std::stof(argv[++k]);
+    }
+    else if (option == "--no-push-high-pass")
+    {
+      setPushHighPass(false);
     }
     else if (option == "--scene" && k + 1 < argc)
     {

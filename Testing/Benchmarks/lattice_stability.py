@@ -13,7 +13,12 @@ shear moduli C44 (u along x, k along y) and C' (u along x - y, k along x + y) of
 standing wave feels as a spurious elasticity (Testing/Benchmarks/README.md, "The pressure gradient on a
 sheared lattice").
 
-Usage: /usr/bin/python3 Testing/Benchmarks/lattice_stability.py [kernel:support[:density_kernel:support] ...]
+With --high-pass the 2 p_i term is δ-SPH's with SPHParameters::pushHighPass: less its Shepard mean over
+the same kernel (self included), so D(k) becomes (1 - S(k)) D(k) with S(k) = sum_j W(x_j) cos(k.x_j) /
+sum_j W(x_j); S is between 0 and 1 for a kernel whose Fourier transform is positive (Wendland's), so a
+stable lattice stays stable and the long-wave moduli go to zero.
+
+Usage: /usr/bin/python3 Testing/Benchmarks/lattice_stability.py [--high-pass] [kernel:support[:density_kernel:support] ...]
        (kernel: wendland (δ-SPH's Wendland C2), cubic (DFSPH's and Müller's cubic spline) or quintic
        (Morris et al. 1997's M6 spline); the density kernel, whose response holds the compression, is
        the same kernel at the same support unless given: quintic:2.8:wendland:3 is a quintic
@@ -41,8 +46,19 @@ def radial_derivatives(kernel, support, r, step=1e-5):
     return (w(r + step) - w(r - step)) / (2.0 * step), (w(r + step) - 2.0 * w(r) + w(r - step)) / step**2
 
 
-def analyse(kernel, support, density_kernel, density_support, samples=13):
+def shepard_mean(kernel, support):
+    """S(k): the lattice's kernel-weighted mean of cos k.x_j, the particle itself included."""
+    reach = int(np.ceil(support))
+    points = [np.array(o, float) for o in itertools.product(range(-reach, reach + 1), repeat=3)
+              if np.linalg.norm(o) < support]
+    weights = np.array([SHAPES[kernel](np.linalg.norm(x) / support) for x in points])
+    points = np.array(points)
+    return lambda k: float(weights @ np.cos(points @ k)) / float(weights.sum())
+
+
+def analyse(kernel, support, density_kernel, density_support, high_pass=False, samples=13):
     reach = int(np.ceil(max(support, density_support)))
+    smooth = shepard_mean(kernel, support) if high_pass else (lambda k: 0.0)
     offsets = [np.array(o, float) for o in itertools.product(range(-reach, reach + 1), repeat=3)
                if 0.0 < np.linalg.norm(o) < max(support, density_support)]
     terms = []
@@ -55,7 +71,7 @@ def analyse(kernel, support, density_kernel, density_support, samples=13):
         terms.append((x, hessian, density_slope * e))
 
     def matrices(k):
-        d = sum((1.0 - np.cos(k @ x)) * h for x, h, _ in terms)
+        d = sum((1.0 - np.cos(k @ x)) * h for x, h, _ in terms) * (1.0 - smooth(k))
         g = sum(np.sin(k @ x) * s for x, _, s in terms)
         return d, g
 
@@ -86,14 +102,15 @@ def analyse(kernel, support, density_kernel, density_support, samples=13):
 
 
 def main():
-    cases = sys.argv[1:] or ["wendland:2.75", "wendland:2.8", "wendland:2.85", "wendland:2.9", "wendland:2.95",
+    high_pass = "--high-pass" in sys.argv[1:]
+    cases = [a for a in sys.argv[1:] if a != "--high-pass"] or ["wendland:2.75", "wendland:2.8", "wendland:2.85", "wendland:2.9", "wendland:2.95",
                              "wendland:3", "wendland:3.2", "wendland:3.5", "wendland:4", "quintic:2.8:wendland:3",
                              "quintic:3:wendland:3", "cubic:2"]
     print("kernel     support  smallest eigenvalue / k^2 (at k / pi)      C44        C'       verdict")
     for case in cases:
         kernel, support, *density = case.split(":")  # the density kernel: the same one unless given
         density_kernel, density_support = (density[0], float(density[1])) if density else (kernel, float(support))
-        worst, where, c44, c_prime = analyse(kernel, float(support), density_kernel, density_support)
+        worst, where, c44, c_prime = analyse(kernel, float(support), density_kernel, density_support, high_pass)
         verdict = "stable" if worst >= -1e-6 else "unstable"
         print(f"{kernel:9s}  {float(support):6.2f}   {worst:+.5f} at {np.round(where, 2)}   "
               f"{c44:+.5f}  {c_prime:+.5f}   {verdict}")

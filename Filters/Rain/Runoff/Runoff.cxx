@@ -57,7 +57,7 @@ Runoff::Runoff(const RainParameters& rain, const RunoffParameters& runoff, std::
   const auto [lowest, highest] = std::minmax_element(z.begin(), z.end());
   const double top = std::max(rain.height, static_cast<double>(*highest) + 10.0 * d);
   const bool delta = s.pressureSolver == sph::PressureSolverType::DeltaSPH;
-  s.smoothingLength = static_cast<float>((delta ? 3.0 : 2.0) * d);
+  s.smoothingLength = static_cast<float>((delta ? sph::kDeltaSPHSupport : 2.0) * d);
   // δ-SPH's terrain is not a wall in its sums here (SPH Step's δ-SPH over a mesh has it): under
   // the cloudburst of Runoff.BasinKeepsTheRainVolume δ-SPH with the wall blew up after 11 s at the
   // default CFL number on one machine and ran the 30 s on another (rounding decides: marginal);

@@ -37,9 +37,12 @@ enum Channel
   VY,
   VZ,
   DENSITY,
-  PRESSURE,            // the force pass
-  FULLNESS = PRESSURE, // the continuity pass: each particle's neighbourhoodFullness, a step old
-  SLOW_DEPARTURE       // the continuity pass: the slow part of each particle's departure from hydrostatic
+  PRESSURE,                // the force pass
+  FULLNESS = PRESSURE,     // the continuity pass: each particle's neighbourhoodFullness, a step old
+  SLOW_DEPARTURE,          // the continuity pass: the slow part of each particle's departure from hydrostatic
+  PUSH_X = SLOW_DEPARTURE, // the force pass: DeltaSPHSolver::FullPush, x, y and z
+  PUSH_Y,
+  PUSH_Z
 };
 
 struct Constants
@@ -69,6 +72,7 @@ struct Constants
   // The gradient correction (SPHParameters::gradientCorrection): its first moments are summed in
   // the continuity pass, and wall images carry hydrostatically extrapolated pressure.
   bool correctGradient;
+  bool highPass; // SPHParameters::pushHighPass
 };
 
 struct Sums
@@ -76,6 +80,7 @@ struct Sums
   float a[3] = { 0, 0, 0 };
   float difference[3] = { 0, 0, 0 }; // sum_j m (p_j - p_i) / (rho_i rho_j) grad W_ij
   float densityRate = 0.0f;
+  float smooth[4] = { 0, 0, 0, 0 }; // sum_j V_j W_ij, and sum_j V_j W_ij FullPush_j (x, y, z)
 };
 
 /// (dW/dr) / r of the Wendland kernel, and the kernel itself, at distance r. (Builtins only: it is
@@ -175,7 +180,7 @@ __attribute__((always_inline)) inline void laminarVelocity(const float* vq, floa
 /// no ordinary function (GCC requires the same tuning), so they touch no std:: call.
 struct PairInput
 {
-  const float *px, *py, *pz, *vx, *vy, *vz, *rho, *pressure, *fullness, *slowDeparture;
+  const float *px, *py, *pz, *vx, *vy, *vz, *rho, *pressure, *fullness, *slowDeparture, *pushY, *pushZ;
   const std::uint32_t* hits;
   std::uint32_t count;
   /// The hits of q, or (image) of a wall image of the particle whose own hits were found last.
@@ -190,6 +195,8 @@ struct PairInput
     , pressure(c.channel[PRESSURE].data())
     , fullness(c.channel[FULLNESS].data())
     , slowDeparture(c.channel[SLOW_DEPARTURE].data())
+    , pushY(c.channel[PUSH_Y].data())
+    , pushZ(c.channel[PUSH_Z].data())
     , hits(image ? c.imageHits.data() : c.hits.data())
     , count(image ? c.findImageHits(q, h2) : c.padHits(c.findHits(q, h2, false)))
   {
@@ -215,8 +222,10 @@ __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, c
   const float termI = pI * inverseRhoI * inverseRhoI;
   const float tensileI = pI < 0.0f ? -kTensileCoefficient * termI : 0.0f;
   const float massOverRhoI = k.mass * inverseRhoI;
+  const float *pushX = in.slowDeparture, *pushY = in.pushY, *pushZ = in.pushZ;
   float ax = 0.0f, ay = 0.0f, az = 0.0f, bx = 0.0f, by = 0.0f, bz = 0.0f;
-#pragma omp simd reduction(+ : ax, ay, az, bx, by, bz)
+  float sw = 0.0f, sx = 0.0f, sy = 0.0f, sz = 0.0f;
+#pragma omp simd reduction(+ : ax, ay, az, bx, by, bz, sw, sx, sy, sz)
   for (std::uint32_t n = 0; n < count; ++n)
   {
     const int j = static_cast<int>(hits[n]); // signed: a gather sign-extends its 32-bit indices
@@ -238,6 +247,12 @@ __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, c
     bx += difference * dx;
     by += difference * dy;
     bz += difference * dz;
+    // The Shepard mean of the neighbours' FullPush for the push's high pass (pushHighPass).
+    const float smoothing = k.mass * inverseRhoJ * w.value;
+    sw += smoothing;
+    sx += smoothing * pushX[j];
+    sy += smoothing * pushY[j];
+    sz += smoothing * pushZ[j];
     if constexpr (Laminar)
     {
       float wx, wy, wz;
@@ -254,6 +269,10 @@ __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, c
   out->difference[0] = bx;
   out->difference[1] = by;
   out->difference[2] = bz;
+  out->smooth[0] = sw;
+  out->smooth[1] = sx;
+  out->smooth[2] = sy;
+  out->smooth[3] = sz;
 }
 
 // The pair loops compiled for AVX-512, AVX2 and the baseline, the widest this CPU runs picked
@@ -333,7 +352,8 @@ __attribute__((always_inline)) inline void densityRateBody(const PairInput& in, 
   const std::uint32_t* hits = in.hits;
   const float diffusion = diffuse ? k.delta * k.hSmooth * k.c0 * 2.0f * k.mass : 0.0f;
   float rate = 0.0f, mxx = 0.0f, mxy = 0.0f, mxz = 0.0f, myy = 0.0f, myz = 0.0f, mzz = 0.0f;
-#pragma omp simd reduction(+ : rate, mxx, mxy, mxz, myy, myz, mzz)
+  float gx = 0.0f, gy = 0.0f, gz = 0.0f;
+#pragma omp simd reduction(+ : rate, mxx, mxy, mxz, myy, myz, mzz, gx, gy, gz)
   for (std::uint32_t n = 0; n < count; ++n)
   {
     const int j = static_cast<int>(hits[n]); // signed: a gather sign-extends its 32-bit indices
@@ -354,6 +374,11 @@ __attribute__((always_inline)) inline void densityRateBody(const PairInput& in, 
     myy += v * dy * dy;
     myz += v * dy * dz;
     mzz += v * dz * dz;
+    // G = sum_j m grad W_ij, the 2 p_i term's sum (pushHighPass).
+    const float g = k.mass * w.gradient;
+    gx += g * dx;
+    gy += g * dy;
+    gz += g * dz;
   }
   out[0] = rate;
   out[1] = mxx;
@@ -362,6 +387,9 @@ __attribute__((always_inline)) inline void densityRateBody(const PairInput& in, 
   out[4] = myy;
   out[5] = myz;
   out[6] = mzz;
+  out[7] = gx;
+  out[8] = gy;
+  out[9] = gz;
 }
 
 PARAFLUID_SIMD_DISPATCH(densityRateInto,
@@ -369,16 +397,17 @@ PARAFLUID_SIMD_DISPATCH(densityRateInto,
                          float fullnessI, float slowI, const Constants& k, float* out),
                         (in, q, vq, rhoI, diffuse, fullnessI, slowI, k, out), densityRateBody)
 
-/// D rho_i / D t of one query (the particle or a wall image), and the query's first moment
-/// (xx, xy, xz, yy, yz, zz) into moment. fullnessI and slowI: the particle's (densityRateBody).
+/// D rho_i / D t of one query (the particle or a wall image), and into moment the query's first
+/// moment (xx, xy, xz, yy, yz, zz) and its G = sum_j m grad W_ij (x, y, z). fullnessI and slowI:
+/// the particle's (densityRateBody).
 float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, bool image, float fullnessI,
-                  float slowI, const Constants& k, float moment[6])
+                  float slowI, const Constants& k, float moment[9])
 {
   const PairInput in(c, q, k.h2, image);
   const bool diffuse = !image;
-  float sums[7];
+  float sums[10];
   densityRateInto(in, q, vq, rhoI, diffuse, fullnessI, slowI, k, sums);
-  for (int m = 0; m < 6; ++m)
+  for (int m = 0; m < 9; ++m)
   {
     moment[m] = sums[1 + m];
   }
@@ -496,17 +525,19 @@ float ownImageDensityRate(const float* q, const float* vq, const float* x, const
 
 template<bool Laminar>
 void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const Constants& k,
-               const detail::MeshWall* wall, const float* correction)
+               const detail::MeshWall* wall, const float* correction, const float* push, const float* fullness)
 {
+  const std::size_t n = s.size();
   forEachParticleByCell(
     grid, s, p.smoothingLength, threadCount(p),
-    { s.vx.data(), s.vy.data(), s.vz.data(), s.density.data(), s.pressure.data() },
+    { s.vx.data(), s.vy.data(), s.vz.data(), s.density.data(), s.pressure.data(), push, push + n, push + 2 * n },
     [&](CandidateBuffer& c, std::uint32_t i)
     {
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
       const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
       float a[3] = { p.gravity[0], p.gravity[1], p.gravity[2] };
       float difference[3] = { 0.0f, 0.0f, 0.0f };
+      float smooth[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
       forEachWallImage(position, velocity, p,
                        [&](const float* q, const float* v, const float* t, const float* scale, bool image)
                        {
@@ -524,8 +555,23 @@ void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters&
                          {
                            a[d] += scale[d] * g.a[d];
                            difference[d] += scale[d] * g.difference[d];
+                           smooth[1 + d] += scale[d] * g.smooth[1 + d];
                          }
+                         smooth[0] += g.smooth[0];
                        });
+      if (k.highPass && smooth[0] > 0.0f)
+      {
+        // The symmetric form's -2 C p_i / rho_i^2 G_i less its smooth part: + 2 C p_i / rho_i^2
+        // times the Shepard mean of the neighbours' fullness-weighted G, where i's own
+        // neighbourhood is full (SPHParameters::pushHighPass). The mean is over the wall images
+        // too, mirrored, so a wall's own-image push (odd across the wall) survives it.
+        const float rho = s.density[i];
+        const float factor = 2.0f * k.pressureCorrection * s.pressure[i] / (rho * rho) * fullness[i] / smooth[0];
+        for (int d = 0; d < 3; ++d)
+        {
+          a[d] += factor * smooth[1 + d];
+        }
+      }
       if (correction)
       {
         // The momentum sum holds -C sum_j m (p_j - p_i) / (rho_i rho_j) grad W_ij among its terms;
@@ -743,7 +789,8 @@ Constants constants(const SPHParameters& p, double soundSpeed, float spacing, fl
                     w.radialDerivative(restSpacing),
                     restSpacing,
                     spacing < 0.45f * p.smoothingLength,
-                    p.gradientCorrection };
+                    p.gradientCorrection,
+                    p.pushHighPass };
 }
 } // namespace
 
@@ -751,18 +798,22 @@ void DeltaSPHSolver::computeAccelerations(SPHSolver& sim)
 {
   const Constants k =
     constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing, sim.LaplacianCorrection, this->PressureCorrection);
-  if (k.correctGradient && !this->CorrectionFresh)
+  if (!this->CorrectionFresh)
   {
-    this->sumDensityRates(sim); // at the start: the step sums the moments with the density rates
+    // At the start (the step sums these with the density rates). FullPush is summed and gathered
+    // even with pushHighPass off: the force pass's loop reads it either way.
+    this->sumDensityRates(sim);
   }
   const float* correction = k.correctGradient ? this->Correction.data() : nullptr;
   if (sim.Parameters.kinematicViscosity > 0.0f || sim.Parameters.viscosity > 0.0f)
   {
-    forcePass<true>(sim.Grid, sim.State, sim.Parameters, k, sim.Wall.get(), correction);
+    forcePass<true>(sim.Grid, sim.State, sim.Parameters, k, sim.Wall.get(), correction, this->FullPush.data(),
+                    this->Fullness.data());
   }
   else
   {
-    forcePass<false>(sim.Grid, sim.State, sim.Parameters, k, sim.Wall.get(), correction);
+    forcePass<false>(sim.Grid, sim.State, sim.Parameters, k, sim.Wall.get(), correction, this->FullPush.data(),
+                     this->Fullness.data());
   }
   this->CorrectionFresh = false;
   sim.addSurfaceTension();
@@ -777,6 +828,7 @@ void DeltaSPHSolver::sumDensityRates(SPHSolver& sim)
   this->DensityRate.resize(s.size());
   this->Correction.resize(k.correctGradient ? 6 * s.size() : 0);
   this->NextFullness.resize(s.size());
+  this->FullPush.resize(3 * s.size());
   forEachParticleByCell(
     sim.Grid, s, p.smoothingLength, threadCount(p),
     { s.vx.data(), s.vy.data(), s.vz.data(), s.density.data(), this->Fullness.data(), this->SlowDeparture.data() },
@@ -784,14 +836,18 @@ void DeltaSPHSolver::sumDensityRates(SPHSolver& sim)
     {
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
       const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
-      float rate = 0.0f, moment[6] = { 0, 0, 0, 0, 0, 0 };
+      float rate = 0.0f, moment[6] = { 0, 0, 0, 0, 0, 0 }, push[3] = { 0, 0, 0 };
       forEachWallImage(position, velocity, p,
                        [&](const float* q, const float* v, const float*, const float* scale, bool image)
                        {
-                         float queryMoment[6];
+                         float queryMoment[9];
                          rate += densityRate(c, q, v, s.density[i], image, this->Fullness[i], this->SlowDeparture[i], k,
                                              queryMoment);
                          addImageMoment(queryMoment, scale, moment);
+                         for (int d = 0; d < 3; ++d)
+                         {
+                           push[d] += scale[d] * queryMoment[6 + d];
+                         }
                          if (image)
                          {
                            rate += ownImageDensityRate(q, v, position, velocity, k);
@@ -803,10 +859,14 @@ void DeltaSPHSolver::sumDensityRates(SPHSolver& sim)
         gradientCorrection(moment, k.pressureCorrection, &this->Correction[6 * i]);
       }
       this->NextFullness[i] = detail::neighbourhoodFullness(moment, k.pressureCorrection);
+      for (int d = 0; d < 3; ++d)
+      {
+        this->FullPush[d * s.size() + i] = this->NextFullness[i] * push[d];
+      }
     });
   // Written after the pass, which reads every neighbour's: the next step's diffusion uses these.
   std::swap(this->Fullness, this->NextFullness);
-  this->CorrectionFresh = k.correctGradient;
+  this->CorrectionFresh = true;
 }
 
 void DeltaSPHSolver::advanceDensity(SPHSolver& sim, float dt)

@@ -20,10 +20,12 @@ constexpr float kWaterSurfaceTension = 0.0728f; // water-air at 20 C [N/m]
 
 const char* solverName(sph::PressureSolverType solver);
 
-/// The kernel support radius in particle spacings the scenes give a solver (2, 2 and 3 for WCSPH,
-/// DFSPH and δ-SPH unless set).
+/// The kernel support radius in particle spacings the scenes give a solver (2, 2 and
+/// sph::kDeltaSPHSupport for WCSPH, DFSPH and δ-SPH unless set).
 void setKernelRatio(sph::PressureSolverType solver, float ratio);
 float kernelRatio(sph::PressureSolverType solver);
+/// δ-SPH's SPHParameters::pushHighPass in the scenes (on unless set).
+void setPushHighPass(bool on);
 
 /// Water of the given solver at h = kernelRatio spacings in `domain`. Müller's WCSPH (the seed method) keeps
 /// its paper's 3.5 Pa s, without which it rings; the others have water's viscosity only.

@@ -8,9 +8,16 @@ using sph::PressureSolverType;
 
 namespace
 {
-// h / spacing per solver: Müller's and DFSPH's 2 (DFSPH's Jacobi solves need <= 2.25); δ-SPH's 3,
-// the Wendland kernel's usual support (at 2 its standing waves run 14 % fast, see the README).
-float gKernelRatio[3] = { 2.0f, 2.0f, 3.0f };
+// h / spacing per solver: Müller's and DFSPH's 2 (DFSPH's Jacobi solves need <= 2.25); δ-SPH's
+// default, 2.9 (sph::kDeltaSPHSupport: at 2 its standing waves run 14 % fast, at 3 its pressurised
+// lattice shears apart; see the README).
+float gKernelRatio[3] = { 2.0f, 2.0f, sph::kDeltaSPHSupport };
+bool gPushHighPass = true;
+}
+
+void setPushHighPass(bool on)
+{
+  gPushHighPass = on;
 }
 
 void setKernelRatio(PressureSolverType solver, float ratio)
@@ -46,6 +53,7 @@ sph::SPHParameters water(PressureSolverType solver, float spacing, const std::ar
   p.gravity = { 0.0f, 0.0f, -kGravity };
   p.domainBounds = domain;
   p.particleMass = sph::latticeParticleMass(spacing, p.smoothingLength, kRho0, p.densityKernel());
+  p.pushHighPass = gPushHighPass;
   return p;
 }
 

@@ -58,7 +58,7 @@ std::uint32_t findHitsAmongKernel(const float* x, const float* y, const float* z
                                   std::uint32_t amongCount, const float q[3], float h2, std::uint32_t* out);
 
 /// Up to this many per-particle values ride along with the positions of the candidates.
-constexpr int kMaxChannels = 6;
+constexpr int kMaxChannels = 8;
 
 /// The particles b..e (of positions px, py, pz, shifted by `shift`) whose distance² to the box
 /// lo..hi is not reach2 or more, appended in order at `size` to x, y, z and, for k < channels,

@@ -16,6 +16,13 @@
 //    shear, so on a sheared lattice under gravity it pushed back like an elastic solid: a standing
 //    wave ran 2 % fast at H = 3 spacings, 14 % at 2 (Testing/Benchmarks/README.md, "Standing
 //    wave"). Wall images then carry hydrostatically extrapolated pressure (Adami et al. 2012);
+//  - the rest of that gradient, about 2 p_i / rho_i^2 sum_j m grad W_ij, is what holds particles
+//    apart and a free surface together, but under pressure it is also a pair potential that gives
+//    the particle lattice shear moduli: negative at 3 spacings (the lattice shears apart: still
+//    water 40 particles across moved), positive at 2.8-2.9 (a spurious elasticity: a standing wave
+//    2 % fast). In full neighbourhoods its smooth part is taken out (SPHParameters::pushHighPass):
+//    with the default support of 2.9 spacings (kDeltaSPHSupport) the lattice is then stable and has
+//    no long-wave shear modulus (Testing/Benchmarks/lattice_stability.py --high-pass);
 //  - Monaghan's (1992) artificial viscosity with a small alpha as the only numerical viscosity, and
 //    the fluid's physical viscosity (the laminar term of SPHParameters::kinematicViscosity, by
 //    Morris et al.'s 1997 operator, whose lattice error does not depend on the shear's direction);
@@ -40,7 +47,7 @@ public:
   std::size_t bytes() const override
   {
     return (this->DensityRate.capacity() + this->Correction.capacity() + this->Fullness.capacity() +
-            this->NextFullness.capacity() + this->SlowDeparture.capacity()) *
+            this->NextFullness.capacity() + this->SlowDeparture.capacity() + this->FullPush.capacity()) *
            sizeof(float);
   }
 
@@ -60,8 +67,8 @@ private:
   void shiftParticles(SPHSolver& sim, float dt);
   /// rho += dt D rho / D t, with the rate from the current positions and velocities.
   void advanceDensity(SPHSolver& sim, float dt);
-  /// D rho / D t into DensityRate and, with the gradient correction, each particle's Correction;
-  /// each particle's Fullness for the next step.
+  /// D rho / D t into DensityRate, each particle's Correction (with the gradient correction) and
+  /// FullPush; each particle's Fullness for the next step.
   void sumDensityRates(SPHSolver& sim);
   /// SlowDeparture for the particles that have none (all at a start, the added ones at a restart).
   void startSlowDeparture(SPHSolver& sim);
@@ -72,10 +79,14 @@ private:
   std::vector<float> Shift;      // 3 per particle
   std::vector<float> WallSum;    // the mesh wall's sum at each particle when its density last moved
   std::vector<float> Correction; // 6 per particle: the gradient correction L - C I (symmetric)
-  bool CorrectionFresh = false;  // Correction summed where the particles are now
+  bool CorrectionFresh = false;  // Correction and FullPush summed where the particles are now
   // How full each particle's neighbourhood was at the last continuity pass (detail::
   // neighbourhoodFullness: 1 inside the fluid, 0 in the first two layers under a free surface).
   std::vector<float> Fullness, NextFullness;
+  // Each particle's fullness times its G = sum_j m grad W_ij (wall images included), summed with
+  // the density rates; x, y and z one after the other (n each), channels of the force pass, which
+  // smooths them for the push's high pass (SPHParameters::pushHighPass).
+  std::vector<float> FullPush;
   // The slow part of each particle's density departure from hydrostatic [kg/m^3], a first-order low
   // pass of it over SlowDepartureTime (up to a constant): at a free surface the diffusion acts on
   // the departure less this, the noise it is there to damp. 0 without gravity.

@@ -38,6 +38,11 @@ enum class WallFriction
   LogLaw
 };
 
+/// δ-SPH's kernel support [particle spacings] when none is given. Wendland C2's lattice under
+/// pressure is stable only at 2.8-2.9 spacings (Testing/Benchmarks/lattice_stability.py); at 2
+/// waves ran 14 % fast, at 3 the lattice sheared apart in still water 40 particles across.
+constexpr float kDeltaSPHSupport = 2.9f;
+
 struct SPHParameters
 {
   PressureSolverType pressureSolver = PressureSolverType::DeltaSPH;
@@ -70,6 +75,15 @@ struct SPHParameters
   // gain changes as the particle lattice shears, which ran a standing wave 2 % fast (see
   // DeltaSPHSolver.h); free-surface particles keep the plain gradient.
   bool gradientCorrection = true;
+  // δ-SPH: in full neighbourhoods, take the smooth part out of the rest of the symmetric pressure
+  // force, 2 p_i / rho_i^2 G_i with G_i = sum_j m grad W_ij: add 2 p_i / rho_i^2 times the
+  // Shepard mean of the neighbours' G (fullness-weighted) over the same kernel. G is zero on a
+  // regular lattice and large only particle by particle, so what this removes is the lattice's
+  // long-wave shear stiffness under pressure, a spurious elasticity, while the push that keeps
+  // particles apart (and a wall's own image's) stays. With it the lattice under pressure is stable
+  // at 2.8-2.9 spacings with no long-wave shear modulus: still water and a standing wave both
+  // right at kDeltaSPHSupport (Testing/Benchmarks/README.md, "The pressure push's high pass").
+  bool pushHighPass = true;
   // sigma [N/m]: surface tension (water-air: 0.0728); 0 skips it. surfaceTensionModel picks the force.
   float surfaceTension = 0.0f;
   SurfaceTensionModel surfaceTensionModel = SurfaceTensionModel::Akinci;
