@@ -47,6 +47,16 @@ pftest.check(shifted[:, 0].min() >= 0 and shifted[:, 0].max() <= 0.6 and shifted
              "a shifted particle left the box")
 sph.ParticleShifting = 0
 
+# The pressure push's high pass (δ-SPH, on by default) likewise: off, the run restarts and the
+# particles under pressure move differently.
+pftest.check(sph.PushHighPass == 1, "PushHighPass must be on by default")
+sph.PushHighPass = 0
+plain = pftest.points(pftest.fetch(sph, times[5]))
+pftest.check(steps_taken(sph) == 50, "a new PushHighPass must restart the run (took %d steps)" % steps_taken(sph))
+pftest.check(np.abs(plain - unshifted).max() > 0, "PushHighPass changed no particle")
+pftest.check(np.all(np.isfinite(plain)), "non-finite positions without PushHighPass")
+sph.PushHighPass = 1
+
 # Output keeps the input's order: the particle with id k is point k.
 data = pftest.fetch(sph, times[5])
 pftest.check(np.array_equal(pftest.point_array(data, "id"), np.arange(data.GetNumberOfPoints())), "order not kept")
