@@ -352,8 +352,8 @@ __attribute__((always_inline)) inline void densityRateBody(const PairInput& in, 
   const std::uint32_t* hits = in.hits;
   const float diffusion = diffuse ? k.delta * k.hSmooth * k.c0 * 2.0f * k.mass : 0.0f;
   float rate = 0.0f, mxx = 0.0f, mxy = 0.0f, mxz = 0.0f, myy = 0.0f, myz = 0.0f, mzz = 0.0f;
-  float gx = 0.0f, gy = 0.0f, gz = 0.0f;
-#pragma omp simd reduction(+ : rate, mxx, mxy, mxz, myy, myz, mzz, gx, gy, gz)
+  float gx = 0.0f, gy = 0.0f, gz = 0.0f, least = 1.0f;
+#pragma omp simd reduction(+ : rate, mxx, mxy, mxz, myy, myz, mzz, gx, gy, gz) reduction(min : least)
   for (std::uint32_t n = 0; n < count; ++n)
   {
     const int j = static_cast<int>(hits[n]); // signed: a gather sign-extends its 32-bit indices
@@ -379,6 +379,7 @@ __attribute__((always_inline)) inline void densityRateBody(const PairInput& in, 
     gx += g * dx;
     gy += g * dy;
     gz += g * dz;
+    least = fullness[j] < least ? fullness[j] : least; // the padding's sentinel has fullness 1
   }
   out[0] = rate;
   out[1] = mxx;
@@ -390,6 +391,7 @@ __attribute__((always_inline)) inline void densityRateBody(const PairInput& in, 
   out[7] = gx;
   out[8] = gy;
   out[9] = gz;
+  out[10] = least;
 }
 
 PARAFLUID_SIMD_DISPATCH(densityRateInto,
@@ -398,16 +400,16 @@ PARAFLUID_SIMD_DISPATCH(densityRateInto,
                         (in, q, vq, rhoI, diffuse, fullnessI, slowI, k, out), densityRateBody)
 
 /// D rho_i / D t of one query (the particle or a wall image), and into moment the query's first
-/// moment (xx, xy, xz, yy, yz, zz) and its G = sum_j m grad W_ij (x, y, z). fullnessI and slowI:
-/// the particle's (densityRateBody).
+/// moment (xx, xy, xz, yy, yz, zz), its G = sum_j m grad W_ij (x, y, z) and the smallest fullness
+/// (a step old) among its neighbours. fullnessI and slowI: the particle's (densityRateBody).
 float densityRate(CandidateBuffer& c, const float q[3], const float vq[3], float rhoI, bool image, float fullnessI,
-                  float slowI, const Constants& k, float moment[9])
+                  float slowI, const Constants& k, float moment[10])
 {
   const PairInput in(c, q, k.h2, image);
   const bool diffuse = !image;
-  float sums[10];
+  float sums[11];
   densityRateInto(in, q, vq, rhoI, diffuse, fullnessI, slowI, k, sums);
-  for (int m = 0; m < 9; ++m)
+  for (int m = 0; m < 10; ++m)
   {
     moment[m] = sums[1 + m];
   }
@@ -525,7 +527,7 @@ float ownImageDensityRate(const float* q, const float* vq, const float* x, const
 
 template<bool Laminar>
 void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const Constants& k,
-               const detail::MeshWall* wall, const float* correction, const float* push, const float* fullness)
+               const detail::MeshWall* wall, const float* correction, const float* push, const float* interior)
 {
   const std::size_t n = s.size();
   forEachParticleByCell(
@@ -566,7 +568,7 @@ void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters&
         // neighbourhood is full (SPHParameters::pushHighPass). The mean is over the wall images
         // too, mirrored, so a wall's own-image push (odd across the wall) survives it.
         const float rho = s.density[i];
-        const float factor = 2.0f * k.pressureCorrection * s.pressure[i] / (rho * rho) * fullness[i] / smooth[0];
+        const float factor = 2.0f * k.pressureCorrection * s.pressure[i] / (rho * rho) * interior[i] / smooth[0];
         for (int d = 0; d < 3; ++d)
         {
           a[d] += factor * smooth[1 + d];
@@ -808,12 +810,12 @@ void DeltaSPHSolver::computeAccelerations(SPHSolver& sim)
   if (sim.Parameters.kinematicViscosity > 0.0f || sim.Parameters.viscosity > 0.0f)
   {
     forcePass<true>(sim.Grid, sim.State, sim.Parameters, k, sim.Wall.get(), correction, this->FullPush.data(),
-                    this->Fullness.data());
+                    this->Interior.data());
   }
   else
   {
     forcePass<false>(sim.Grid, sim.State, sim.Parameters, k, sim.Wall.get(), correction, this->FullPush.data(),
-                     this->Fullness.data());
+                     this->Interior.data());
   }
   this->CorrectionFresh = false;
   sim.addSurfaceTension();
@@ -829,6 +831,7 @@ void DeltaSPHSolver::sumDensityRates(SPHSolver& sim)
   this->Correction.resize(k.correctGradient ? 6 * s.size() : 0);
   this->NextFullness.resize(s.size());
   this->FullPush.resize(3 * s.size());
+  this->Interior.resize(s.size());
   forEachParticleByCell(
     sim.Grid, s, p.smoothingLength, threadCount(p),
     { s.vx.data(), s.vy.data(), s.vz.data(), s.density.data(), this->Fullness.data(), this->SlowDeparture.data() },
@@ -836,11 +839,11 @@ void DeltaSPHSolver::sumDensityRates(SPHSolver& sim)
     {
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
       const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
-      float rate = 0.0f, moment[6] = { 0, 0, 0, 0, 0, 0 }, push[3] = { 0, 0, 0 };
+      float rate = 0.0f, moment[6] = { 0, 0, 0, 0, 0, 0 }, push[3] = { 0, 0, 0 }, least = 1.0f;
       forEachWallImage(position, velocity, p,
                        [&](const float* q, const float* v, const float*, const float* scale, bool image)
                        {
-                         float queryMoment[9];
+                         float queryMoment[10];
                          rate += densityRate(c, q, v, s.density[i], image, this->Fullness[i], this->SlowDeparture[i], k,
                                              queryMoment);
                          addImageMoment(queryMoment, scale, moment);
@@ -848,6 +851,7 @@ void DeltaSPHSolver::sumDensityRates(SPHSolver& sim)
                          {
                            push[d] += scale[d] * queryMoment[6 + d];
                          }
+                         least = std::min(least, queryMoment[9]);
                          if (image)
                          {
                            rate += ownImageDensityRate(q, v, position, velocity, k);
@@ -859,9 +863,13 @@ void DeltaSPHSolver::sumDensityRates(SPHSolver& sim)
         gradientCorrection(moment, k.pressureCorrection, &this->Correction[6 * i]);
       }
       this->NextFullness[i] = detail::neighbourhoodFullness(moment, k.pressureCorrection);
+      // Full, and so are its neighbours (a step ago): no surface within a kernel of any of them.
+      // (A particle two spacings under a surface has a full first moment but a cut kernel, whose
+      // G is the surface's push; smoothing that in pulled a drop's surface layers inwards.)
+      this->Interior[i] = this->NextFullness[i] * least;
       for (int d = 0; d < 3; ++d)
       {
-        this->FullPush[d * s.size() + i] = this->NextFullness[i] * push[d];
+        this->FullPush[d * s.size() + i] = this->Interior[i] * push[d];
       }
     });
   // Written after the pass, which reads every neighbour's: the next step's diffusion uses these.

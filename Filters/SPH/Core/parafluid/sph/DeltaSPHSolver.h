@@ -47,7 +47,8 @@ public:
   std::size_t bytes() const override
   {
     return (this->DensityRate.capacity() + this->Correction.capacity() + this->Fullness.capacity() +
-            this->NextFullness.capacity() + this->SlowDeparture.capacity() + this->FullPush.capacity()) *
+            this->NextFullness.capacity() + this->SlowDeparture.capacity() + this->FullPush.capacity() +
+            this->Interior.capacity()) *
            sizeof(float);
   }
 
@@ -87,6 +88,9 @@ private:
   // the density rates; x, y and z one after the other (n each), channels of the force pass, which
   // smooths them for the push's high pass (SPHParameters::pushHighPass).
   std::vector<float> FullPush;
+  // How far inside the fluid each particle is, for the same: its fullness times the smallest of its
+  // neighbours' (1 where no surface is within a kernel of any of them).
+  std::vector<float> Interior;
   // The slow part of each particle's density departure from hydrostatic [kg/m^3], a first-order low
   // pass of it over SlowDepartureTime (up to a constant): at a free surface the diffusion acts on
   // the departure less this, the noise it is there to damp. 0 without gravity.
