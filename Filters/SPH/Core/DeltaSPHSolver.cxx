@@ -564,9 +564,9 @@ void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters&
       if (k.highPass && smooth[0] > 0.0f)
       {
         // The symmetric form's -2 C p_i / rho_i^2 G_i less its smooth part: + 2 C p_i / rho_i^2
-        // times the Shepard mean of the neighbours' fullness-weighted G, where i's own
-        // neighbourhood is full (SPHParameters::pushHighPass). The mean is over the wall images
-        // too, mirrored, so a wall's own-image push (odd across the wall) survives it.
+        // times the Shepard mean of the neighbours' Interior-weighted G, where i is inside the
+        // fluid (SPHParameters::pushHighPass). The mean is over the wall images too, mirrored, so
+        // a wall's own-image push (odd across the wall) survives it.
         const float rho = s.density[i];
         const float factor = 2.0f * k.pressureCorrection * s.pressure[i] / (rho * rho) * interior[i] / smooth[0];
         for (int d = 0; d < 3; ++d)

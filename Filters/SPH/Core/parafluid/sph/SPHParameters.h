@@ -75,12 +75,13 @@ struct SPHParameters
   // gain changes as the particle lattice shears, which ran a standing wave 2 % fast (see
   // DeltaSPHSolver.h); free-surface particles keep the plain gradient.
   bool gradientCorrection = true;
-  // δ-SPH: in full neighbourhoods, take the smooth part out of the rest of the symmetric pressure
-  // force, 2 p_i / rho_i^2 G_i with G_i = sum_j m grad W_ij: add 2 p_i / rho_i^2 times the
-  // Shepard mean of the neighbours' G (fullness-weighted) over the same kernel. G is zero on a
-  // regular lattice and large only particle by particle, so what this removes is the lattice's
-  // long-wave shear stiffness under pressure, a spurious elasticity, while the push that keeps
-  // particles apart (and a wall's own image's) stays. With it the lattice under pressure is stable
+  // δ-SPH: inside the fluid (no free surface within a kernel of a particle or of its neighbours),
+  // take the smooth part out of the rest of the symmetric pressure force, 2 p_i / rho_i^2 G_i with
+  // G_i = sum_j m grad W_ij: add 2 p_i / rho_i^2 times the Shepard mean of the neighbours' G over
+  // the same kernel. G is zero on a regular lattice and large only particle by particle, so what
+  // this removes is the lattice's long-wave shear stiffness under pressure, a spurious elasticity,
+  // while the push that keeps particles apart (and a wall's own image's) stays. Near a surface the
+  // force is the plain one: there G is the surface's push. With it the lattice under pressure is stable
   // at 2.8-2.9 spacings with no long-wave shear modulus: still water and a standing wave both
   // right at kDeltaSPHSupport (Testing/Benchmarks/README.md, "The pressure push's high pass").
   bool pushHighPass = true;
