@@ -863,7 +863,8 @@ void DeltaSPHSolver::sumDensityRates(SPHSolver& sim)
         gradientCorrection(moment, k.pressureCorrection, &this->Correction[6 * i]);
       }
       this->NextFullness[i] = detail::neighbourhoodFullness(moment, k.pressureCorrection);
-      // Full, and so are its neighbours (a step ago): no surface within a kernel of any of them.
+      // Full, and so are its neighbours (a step ago, as the diffusion reads them; at the start every
+      // particle counts as full until this first pass): no surface within a kernel of any of them.
       // (A particle two spacings under a surface has a full first moment but a cut kernel, whose
       // G is the surface's push; smoothing that in pulled a drop's surface layers inwards.)
       this->Interior[i] = this->NextFullness[i] * least;
