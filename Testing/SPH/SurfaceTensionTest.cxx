@@ -94,11 +94,15 @@ TEST(SurfaceTension, AkinciPullsAWeightlessCubeRoundWithoutClumping)
 TEST(SurfaceTension, AkinciDropOscillatesAtRayleighsFrequency)
 {
   // A weightless water drop of radius 2.5 mm, 8 particles across its radius, stretched 10 % along
-  // x, oscillates in its l = 2 mode at Rayleigh's period (32.8 ms) over 1.5 periods. Both of
+  // x, oscillates in its l = 2 mode at Rayleigh's period (32.8 ms) over 2.5 periods. Both of
   // Akinci's terms are on, scaled together to sigma (SurfaceTension.cxx); nothing in that scaling
-  // is fitted to a drop. (The cohesion alone does not oscillate: it fails here.)
+  // is fitted to a drop. (The cohesion alone does not oscillate: it fails here.) Over 1.5 periods
+  // (3 zero crossings) the release's first swing weighs on the period: since δ-SPH's support is 2.9
+  // spacings with the push's high pass it read 33.53 ms in the Release build and 34.45 ms (5.1 %)
+  // in the sanitizer build; over 2.5 periods 33.29 ms (Release) and 33.96 ms (sanitizer), over 3
+  // periods 32.57 ms (Release).
   const validation::Drop drop =
-    validation::oscillatingDrop(PressureSolverType::DeltaSPH, 8, nullptr, SurfaceTensionModel::Akinci, 0.1, 0.05);
+    validation::oscillatingDrop(PressureSolverType::DeltaSPH, 8, nullptr, SurfaceTensionModel::Akinci, 0.1, 0.08);
   std::printf("drop: %d zero crossings, period %.2f ms, Rayleigh %.2f ms (sigma_eff / sigma %.3f), largest density "
               "%.4f rho0\n",
               drop.crossings, drop.period * 1e3, drop.rayleigh * 1e3, drop.sigmaRatio, drop.largestDensity);
