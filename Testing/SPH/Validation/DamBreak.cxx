@@ -145,31 +145,42 @@ Lobovsky lobovsky(PressureSolverType solver, int across, std::ostream* curves)
     }
     return weights > 0.0 ? weighted / weights * pressureScale : 0.0;
   };
-  const double dt = 0.0005; // [s]: 0.0029 in t*, fine enough for the impact's rise
+  // The sensor is read after every step, 0.05-0.25 ms apart (the experiment sampled every 0.05 ms),
+  // for the arrival and the first peak; the curves' rows are its mean over each 0.5 ms. (Until
+  // 2026-11-28 the peak too was taken from those means, which spread the impact's spike: 12.9
+  // against 22.1 read every step at 80 particles across.)
+  const double interval = 0.0005; // [s] between the curves' rows: 0.0029 in t*
   const double end = 3.5 / timeScale;
   const SceneTimer timer;
   bool arrived = false;
   double peak = 0.0, peakTime = 0.0, arrival = 0.0;
   while (s.time() < end - 1e-12)
   {
-    r.cost.steps += s.advance(dt);
-    const double t = s.time() * timeScale;
-    const double p = sensor();
-    if (curves)
+    const double start = s.time(), next = std::min(end, start + interval);
+    double integral = 0.0; // of the reading over the interval [s]
+    while (s.time() < next - 1e-12)
     {
-      *curves << solverName(solver) << "," << across << "," << t << "," << p << "\n";
+      const double dt = s.step(next - s.time());
+      ++r.cost.steps;
+      const double t = s.time() * timeScale, p = sensor();
+      integral += p * dt;
+      if (!arrived && p > 0.1)
+      {
+        arrived = true;
+        arrival = t;
+      }
+      // The first peak: the largest reading within 0.3 t* of the arrival (the experiment's first
+      // peak lies 0.02 after its arrival; the reflected jet's later rise is another event).
+      if (arrived && t < arrival + 0.3 && p > peak)
+      {
+        peak = p;
+        peakTime = t;
+      }
     }
-    if (!arrived && p > 0.1)
+    if (curves && s.time() > start)
     {
-      arrived = true;
-      arrival = t;
-    }
-    // The first peak: the largest reading within 0.3 t* of the arrival (the experiment's first
-    // peak lies 0.02 after its arrival; the reflected jet's later rise is another event).
-    if (arrived && t < arrival + 0.3 && p > peak)
-    {
-      peak = p;
-      peakTime = t;
+      *curves << solverName(solver) << "," << across << "," << s.time() * timeScale << ","
+              << integral / (s.time() - start) << "\n";
     }
   }
   r.cost.seconds = timer.seconds();
