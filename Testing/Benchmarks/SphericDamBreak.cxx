@@ -45,7 +45,7 @@ int main(int argc, char** argv)
   {
     SPHParameters p;
     p.pressureSolver = solver;
-    // δ-SPH at its 3 spacings (the peer: Wendland quintic at 2.6), DFSPH at its 2.
+    // δ-SPH at its default kDeltaSPHSupport (the peer: Wendland quintic at 2.6), DFSPH at its 2.
     p.smoothingLength = static_cast<float>((solver == PressureSolverType::DeltaSPH ? kDeltaSPHSupport : 2.0f) * d);
     p.particleMass = latticeParticleMass(static_cast<float>(d), p.smoothingLength, p.restDensity, p.densityKernel());
     p.domainBounds = { 0.0f, 3.22f, 0.0f, 1.0f, 0.0f, 1.0f };

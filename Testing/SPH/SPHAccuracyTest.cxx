@@ -72,7 +72,7 @@ TEST(LatticeCorrections, MassAndSpacingAreInversesAndTheGradientCorrectionIsSmal
 
 TEST(LatticeCorrections, MorrisLaplacianIsNearlyExactOnTheLatticeWhereMonaghansIsWeakAlongItsAxes)
 {
-  // Wendland C2 at 3 spacings (δ-SPH's default): Monaghan's operator, whose error depends on the
+  // Wendland C2 at 3 spacings (δ-SPH's default until it became 2.9): Monaghan's operator, whose error depends on the
   // direction of shear against the lattice, misses an axis-aligned shear by about 8 %; Morris's,
   // whose second moment is isotropic on a cubic lattice, by about the eta^2 of the pair closest in.
   const float monaghan = latticeLaplacianCorrection(0.01f, 0.03f, DensityKernel::WendlandC2);
@@ -355,11 +355,11 @@ TEST(MeshBoundary, WaterOnAMeshFloorHasRestDensityInItsBottomLayer)
 TEST(BoxWalls, DeltaSPHTankAtRestPushesNoFloorParticleIntoItsEdgeOrCorner)
 {
   // δ-SPH water 10 layers deep in a box (a slab 4 particles thick, walls on every side), at SPH
-  // Step's kernel of 3 spacings, as it starts in hydrostatic equilibrium. A wall holds a particle
-  // off through the pair with its own image, whose stiffened profile is scaled to Wendland's at one
-  // spacing; an edge or corner particle's image across two or three walls is sqrt(2) or sqrt(3)
-  // spacings away, where that profile pushed 11 % less: those particles started at 2 m/s^2 into
-  // their corners (and 2.0 m/s^2 down), every other floor particle at rest.
+  // Step's kernel of 3 spacings until 2026-11-28 (2.9 since), as it starts in hydrostatic equilibrium. A wall holds a
+  // particle off through the pair with its own image, whose stiffened profile is scaled to Wendland's at one spacing;
+  // an edge or corner particle's image across two or three walls is sqrt(2) or sqrt(3) spacings away, where that
+  // profile pushed 11 % less: those particles started at 2 m/s^2 into their corners (and 2.0 m/s^2 down), every other
+  // floor particle at rest.
   SPHParameters p = water(PressureSolverType::DeltaSPH);
   p.smoothingLength = 3.0f * kSpacing;
   p.particleMass = latticeParticleMass(kSpacing, p.smoothingLength, p.restDensity, p.densityKernel());
@@ -389,9 +389,9 @@ TEST(BoxWalls, DeltaSPHTankAtRestPushesNoFloorParticleIntoItsEdgeOrCorner)
 TEST(MeshBoundary, DeltaSPHWaterRestsStillOnAMeshFloor)
 {
   // δ-SPH water 8 layers deep on a flat mesh floor (the box's floor far below), at SPH Step's
-  // kernel of 3 spacings: with the mesh a wall in its sums it rests (bottom layer half a spacing
-  // up, the top where it started). With the mesh only stopping particles, the bottom layer fell
-  // onto the mesh within 0.8 s and the water sloshed at 0.1-0.5 m/s.
+  // kernel of 3 spacings until 2026-11-28 (2.9 since): with the mesh a wall in its sums it rests (bottom layer half a
+  // spacing up, the top where it started). With the mesh only stopping particles, the bottom layer fell onto the mesh
+  // within 0.8 s and the water sloshed at 0.1-0.5 m/s.
   const float floorZ = 0.1f;
   auto floor = std::make_shared<TriangleBoundary>(
     std::vector<float>{ -0.1f, -0.1f, floorZ, 0.5f, -0.1f, floorZ, 0.5f, 0.5f, floorZ, -0.1f, 0.5f, floorZ },

@@ -16,7 +16,7 @@
 // - the curvature term's force is not central; its surface tension is the mechanical one,
 //   sigma = int (P_N - P_T) dz, from the force the fluid below a plane exerts on the fluid above
 //   it (Irving & Kirkwood 1950), integrated over the plane's height (curvatureShare below).
-// With Wendland C2 at 3 spacings (δ-SPH) the curvature term carries 3.13 times the cohesion's
+// With Wendland C2 at 3 spacings (about δ-SPH's 2.9) the curvature term carries 3.13 times the cohesion's
 // share, with the cubic spline at 2 spacings (DFSPH) 0.91 times. Nothing is fitted: the oscillating
 // drop (Testing/SPH/Validation/Drop.cxx, in ctest and ParaFluidSPHValidation) checks the sum
 // against Rayleigh's period: within 0.2-1.9 % with δ-SPH at 8-14 particles over the radius.
