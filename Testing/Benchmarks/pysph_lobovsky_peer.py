@@ -14,12 +14,10 @@ Usage: /usr/bin/python3 Testing/Benchmarks/pysph_lobovsky_peer.py [across=30] [t
   across: particles across the column's height H (dx = H / across); t_end*: end time in t sqrt(g/H).
 Prints one summary line and writes pysph_lobovsky_<across>.csv (t*, p / (rho g H)) here.
 """
-import importlib.util
 import os
 import shutil
 import sys
 import tempfile
-import time
 
 import numpy as np
 
@@ -28,7 +26,7 @@ end_star = float(sys.argv[2]) if len(sys.argv) > 2 else 3.2
 threads = sys.argv[3] if len(sys.argv) > 3 else "2"
 os.environ["OMP_NUM_THREADS"] = threads
 
-import pysph  # noqa: E402  (after OMP_NUM_THREADS)
+from pysph_peer_common import StepClock, load_example  # noqa: E402  (after OMP_NUM_THREADS)
 from pysph.examples import db_exp_data  # noqa: E402
 
 H = 0.3  # [m] Lobovsky et al.'s column height (the tank: 1.61 m long, the column 0.6 m)
@@ -36,24 +34,17 @@ G = 9.81
 RHO0 = 1000.0
 SAMPLE = 0.0005  # [s] between the curve's rows, as ParaFluid's scene writes them (0.0029 in t*)
 
-example_path = os.path.join(os.path.dirname(pysph.__file__), "examples", "dam_break", "dam_break_3d_lobovsky.py")
-spec = importlib.util.spec_from_file_location("dam_break_3d_lobovsky", example_path)
-example = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(example)
+example = load_example("dam_break/dam_break_3d_lobovsky.py", "dam_break_3d_lobovsky")
 example.H = H
 example.c0 = 10.0 * np.sqrt(2.0 * G * H)
 
 
-class Peer(example.DamBreak3D):
+class Peer(StepClock, example.DamBreak3D):
     """The example, with ParaFluid's sensor read after every step (scored, as ParaFluid's scene scores
     its readings) and kept every SAMPLE seconds for the curve."""
 
     def post_step(self, solver):
-        if self.first_step_clock is None:
-            self.first_step_clock = time.perf_counter()
-            self.fluid = [pa for pa in solver.particles if pa.name == "fluid"][0]
-        self.steps = solver.count
-        self.last_step_clock = time.perf_counter()
+        self.clock_step(solver)
         fluid = self.fluid
         # ParaFluid's read-out: the kernel-weighted (poly6, radius 2 dx) mean of the fluid particles'
         # pressures around the sensor, by distance in x and z (the flow is uniform across the tank).
@@ -84,9 +75,6 @@ def score(t, p):
 
 out = tempfile.mkdtemp(prefix="pysph_lobovsky_")
 app = Peer(fname="dam_break_3d_lobovsky")
-app.first_step_clock = None
-app.last_step_clock = None
-app.steps = 0
 app.next_sample = SAMPLE
 app.curve = []
 app.readings = []
@@ -97,7 +85,7 @@ shutil.rmtree(out, ignore_errors=True)  # the run's log and info files: nothing 
 
 fluid = app.fluid.get_number_of_particles()
 boundary = sum(pa.get_number_of_particles() for pa in app.particles if pa.name != "fluid")
-wall_seconds = app.last_step_clock - app.first_step_clock
+wall_seconds = app.wall_seconds()
 simulated = app.solver.t
 t_exp, _, _, p_exp, _, _ = db_exp_data.get_lobovsky_data()
 arrival_exp, peak_time_exp, peak_exp = score(t_exp, p_exp)
