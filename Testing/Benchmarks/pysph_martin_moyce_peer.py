@@ -67,12 +67,13 @@ class Peer(StepClock, example.DamBreak2D):
 
     def post_step(self, solver):
         self.clock_step(solver)
+        if self.broke is not None:
+            return
         x = self.fluid.x
-        finite = np.isfinite(x)
-        if self.broke is None and not finite.all():
+        if not np.isfinite(x).all():
             self.broke = solver.t * T_SCALE  # scored only up to here
-        if self.broke is None:
-            self.front.append((solver.t * T_SCALE, float(x.max()) / A))
+            return
+        self.front.append((solver.t * T_SCALE, float(x.max()) / A))
 
 
 out = tempfile.mkdtemp(prefix="pysph_martin_moyce_")
