@@ -10,6 +10,8 @@
 //        lobovsky|taylorgreen|poiseuille|standingwave|drop|lattice] [--solver WCSPH|DFSPH|DeltaSPH]
 //        [--resolutions 10,20,40] [--kernel-ratio r] (h / spacing of the chosen solvers)
 //        [--no-push-high-pass] (δ-SPH's SPHParameters::pushHighPass off)
+//        [--density-tolerance x] [--max-time-step s] (DFSPH's densityTolerance, any solver's
+//        maxTimeStep [s]: probes of the solvers' limits, not the defaults the tables report)
 #include "SPHScenes.h"
 
 #include <cstdio>
@@ -30,7 +32,8 @@ namespace
 const char* const kUsage =
   "usage: ParaFluidSPHValidation <output-directory> [--scene all|hydrostatic|stillwater|dambreak|lobovsky|\n"
   "         taylorgreen|poiseuille|standingwave|drop|lattice] [--solver WCSPH|DFSPH|DeltaSPH]\n"
-  "         [--resolutions 10,20,40] [--kernel-ratio r] [--no-push-high-pass]\n";
+  "         [--resolutions 10,20,40] [--kernel-ratio r] [--no-push-high-pass]\n"
+  "         [--density-tolerance x] [--max-time-step s]\n";
 
 /// One scene: its default resolutions, its CSV header, and a run that prints and returns a CSV row.
 struct Scene
@@ -172,13 +175,23 @@ int main(int argc, char** argv)
   std::vector<PressureSolverType> solvers = { PressureSolverType::WCSPH, PressureSolverType::DFSPH,
                                               PressureSolverType::DeltaSPH };
   std::vector<int> resolutions;
-  float ratio = 0.0f;
+  float ratio = 0.0f, densityTolerance = 0.0f, maxTimeStep = 0.0f;
   for (int k = 2; k < argc; ++k)
   {
     const std::string option = argv[k];
     if (option == "--kernel-ratio" && k + 1 < argc)
     {
       ratio = std::stof(argv[++k]);
+    }
+    else if ((option == "--density-tolerance" || option == "--max-time-step") && k + 1 < argc)
+    {
+      const float value = std::strtof(argv[++k], nullptr);
+      if (!(value > 0.0f))
+      {
+        std::cerr << option << " takes a positive number\n";
+        return 2;
+      }
+      (option == "--density-tolerance" ? densityTolerance : maxTimeStep) = value;
     }
     else if (option == "--no-push-high-pass")
     {
@@ -215,6 +228,7 @@ int main(int argc, char** argv)
       return 2;
     }
   }
+  setSolveLimits(densityTolerance, maxTimeStep);
   if (ratio > 0.0f)
   {
     for (PressureSolverType solver : solvers)

@@ -137,4 +137,22 @@ TEST(SPHValidation, DFSPHPoiseuilleProfile)
   EXPECT_LT(r.profileError, 0.08);
   EXPECT_GT(r.viscosityIterations, 0);
 }
+
+TEST(SPHValidation, SolveLimitProbesReachTheScenesAndReset)
+{
+  // ParaFluidSPHValidation's --density-tolerance and --max-time-step: the scenes' water carries
+  // them, and 0 gives the solver's defaults back.
+  const std::array<float, 6> box = { 0.0f, 0.2f, 0.0f, 0.02f, 0.0f, 0.4f };
+  const sph::SPHParameters defaults = water(PressureSolverType::DFSPH, 0.01f, box);
+  setSolveLimits(1e-5f, 2e-3f);
+  const sph::SPHParameters probed = water(PressureSolverType::DFSPH, 0.01f, box);
+  setSolveLimits(0.0f, 0.0f);
+  const sph::SPHParameters restored = water(PressureSolverType::DFSPH, 0.01f, box);
+  EXPECT_FLOAT_EQ(probed.densityTolerance, 1e-5f);
+  EXPECT_FLOAT_EQ(probed.maxTimeStep, 2e-3f);
+  EXPECT_NE(defaults.densityTolerance, probed.densityTolerance);
+  EXPECT_NE(defaults.maxTimeStep, probed.maxTimeStep);
+  EXPECT_EQ(restored.densityTolerance, defaults.densityTolerance);
+  EXPECT_EQ(restored.maxTimeStep, defaults.maxTimeStep);
+}
 } // namespace

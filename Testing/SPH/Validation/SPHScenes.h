@@ -26,6 +26,9 @@ void setKernelRatio(sph::PressureSolverType solver, float ratio);
 float kernelRatio(sph::PressureSolverType solver);
 /// δ-SPH's SPHParameters::pushHighPass in the scenes (on unless set).
 void setPushHighPass(bool on);
+/// For probes of the solvers' limits: DFSPH's SPHParameters::densityTolerance and every solver's
+/// maxTimeStep in the scenes (0 keeps the solver's default).
+void setSolveLimits(float densityTolerance, float maxTimeStep);
 
 /// Water of the given solver at h = kernelRatio spacings in `domain`. Müller's WCSPH (the seed method) keeps
 /// its paper's 3.5 Pa s, without which it rings; the others have water's viscosity only.

@@ -13,6 +13,14 @@ namespace
 // lattice shears apart; see the README).
 float gKernelRatio[3] = { 2.0f, 2.0f, sph::kDeltaSPHSupport };
 bool gPushHighPass = true;
+float gDensityTolerance = 0.0f; // 0: the solver's default
+float gMaxTimeStep = 0.0f;      // 0: the solver's default
+}
+
+void setSolveLimits(float densityTolerance, float maxTimeStep)
+{
+  gDensityTolerance = densityTolerance;
+  gMaxTimeStep = maxTimeStep;
 }
 
 void setPushHighPass(bool on)
@@ -54,6 +62,14 @@ sph::SPHParameters water(PressureSolverType solver, float spacing, const std::ar
   p.domainBounds = domain;
   p.particleMass = sph::latticeParticleMass(spacing, p.smoothingLength, kRho0, p.densityKernel());
   p.pushHighPass = gPushHighPass;
+  if (gDensityTolerance > 0.0f)
+  {
+    p.densityTolerance = gDensityTolerance;
+  }
+  if (gMaxTimeStep > 0.0f)
+  {
+    p.maxTimeStep = gMaxTimeStep;
+  }
   return p;
 }
 
