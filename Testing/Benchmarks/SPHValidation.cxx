@@ -14,6 +14,7 @@
 //        maxTimeStep [s]: probes of the solvers' limits, not the defaults the tables report)
 #include "SPHScenes.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -186,9 +187,9 @@ int main(int argc, char** argv)
     else if ((option == "--density-tolerance" || option == "--max-time-step") && k + 1 < argc)
     {
       const float value = std::strtof(argv[++k], nullptr);
-      if (!(value > 0.0f))
+      if (!(value > 0.0f) || !std::isfinite(value))
       {
-        std::cerr << option << " takes a positive number\n";
+        std::cerr << option << " takes a positive finite number\n";
         return 2;
       }
       (option == "--density-tolerance" ? densityTolerance : maxTimeStep) = value;
