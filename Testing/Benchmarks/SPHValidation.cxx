@@ -53,13 +53,16 @@ std::map<std::string, Scene> scenes()
 {
   std::map<std::string, Scene> all;
   all["hydrostatic"] = { { 10, 20, 40 },
-                         "relative_l2_error,mean_compression",
+                         "relative_l2_error,mean_compression,layer_mean_error,within_layer_error",
                          [](PressureSolverType s, int n, std::ostream& curves)
                          {
                            const Hydrostatic r = hydrostatic(s, n, &curves);
-                           std::printf("hydrostatic  %-8s %3d: %7lld particles %7lld steps %8.1f s  L2 error %.4f\n",
-                                       solverName(s), n, r.cost.particles, r.cost.steps, r.cost.seconds, r.error);
-                           return cost(r.cost) + "," + std::to_string(r.error) + "," + std::to_string(r.compression);
+                           std::printf("hydrostatic  %-8s %3d: %7lld particles %7lld steps %8.1f s  L2 error %.4f "
+                                       "(layers' means %.4f, scatter within layers %.4f)\n",
+                                       solverName(s), n, r.cost.particles, r.cost.steps, r.cost.seconds, r.error,
+                                       r.layerMeanError, r.withinLayerError);
+                           return cost(r.cost) + "," + std::to_string(r.error) + "," + std::to_string(r.compression) +
+                                  "," + std::to_string(r.layerMeanError) + "," + std::to_string(r.withinLayerError);
                          } };
   all["stillwater"] = { { 10, 20, 40 },
                         "largest_speed_over_sqrt_gH,pressure_l2_error,closest_to_wall_spacings,"

@@ -213,6 +213,52 @@ TEST(SPHSolver, KeepsIdsAndOriginalIndicesAsAPermutation)
   }
 }
 
+TEST(SPHSolver, AGivenStartingDensityStaysWithItsParticle)
+{
+  // δ-SPH keeps a given starting density (a prepared initial condition, such as a vortex's
+  // pressure). The constructor sorts the particles by grid cell before the pressure solver exists;
+  // the density has to move with them, or each particle starts with another's (until 2026-11-29 it
+  // did not: the Taylor-Green scene's starting pressure was scrambled).
+  SPHParameters p;
+  p.pressureSolver = PressureSolverType::DeltaSPH;
+  p.smoothingLength = kDeltaSPHSupport * kSpacing;
+  p.particleMass = latticeParticleMass(kSpacing, p.smoothingLength, p.restDensity, p.densityKernel());
+  p.domainBounds = { 0, 0.3, 0, 0.1, 0, 0.3 };
+  p.gravity = { 0, 0, 0 };
+  ParticleState initial = block({ 0, 0.3, 0, 0.1, 0, 0.3 });
+  // Shuffled, so that the input's order is not the grid's.
+  std::mt19937 random(7);
+  std::vector<std::size_t> order(initial.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    order[i] = i;
+  }
+  std::shuffle(order.begin(), order.end(), random);
+  std::vector<float> x, y, z;
+  for (std::size_t k : order)
+  {
+    x.push_back(initial.x[k]);
+    y.push_back(initial.y[k]);
+    z.push_back(initial.z[k]);
+  }
+  ParticleState shuffled = ParticleState::atRest(std::move(x), std::move(y), std::move(z));
+  const auto densityAt = [](float x, float z) { return 1000.0f + 10.0f * x + 20.0f * z; };
+  shuffled.density.resize(shuffled.size());
+  for (std::size_t i = 0; i < shuffled.size(); ++i)
+  {
+    shuffled.density[i] = densityAt(shuffled.x[i], shuffled.z[i]);
+  }
+  const SPHSolver solver(p, shuffled);
+  const auto& s = solver.state();
+  ASSERT_EQ(s.size(), shuffled.size());
+  float worst = 0.0f;
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    worst = std::max(worst, std::fabs(s.density[i] - densityAt(s.x[i], s.z[i])));
+  }
+  EXPECT_LT(worst, 1e-3f) << "kg/m^3 between a particle's density and the one given at its position";
+}
+
 TEST(SPHSolver, AdvanceOutputsEachParticlesTimeWeightedMeanPressure)
 {
   // The same dam break, once by advance() and once step by step with the same steps, summing

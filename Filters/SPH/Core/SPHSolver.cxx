@@ -1,7 +1,6 @@
 #include "parafluid/sph/SPHSolver.h"
 
 #include "parafluid/common/TriangleBoundary.h"
-#include "parafluid/sph/WallMirrors.h"
 #include "private/MeshWall.h"
 #include "private/NeighbourCandidates.h"
 
@@ -516,9 +515,15 @@ void SPHSolver::sortByCell()
   {
     permute(this->PressureImpulse, this->ScratchFloat, order, threads);
   }
-  if (this->Pressure) // not yet while the constructor sorts the initial state
+  if (this->Pressure)
   {
     this->Pressure->permute(*this, order, this->ScratchFloat, threads);
+  }
+  else if (s.density.size() == s.size())
+  {
+    // The constructor's sort of the initial state, before there is a pressure solver: a given
+    // starting density (which δ-SPH keeps as its initial condition) moves with its particle.
+    permute(s.density, this->ScratchFloat, order, threads);
   }
   permute(s.id, this->ScratchId, order, threads);
   permute(s.originalIndex, this->ScratchIndex, order, threads);
@@ -528,7 +533,7 @@ void SPHSolver::sortByCell()
     permute(this->Wall->contacts.triangle, this->ScratchIndex, order, threads);
   }
   this->findMeshWalls();
-  // Densities and pressures are recomputed from the sorted positions next.
+  // Summed densities and every pressure are recomputed from the sorted positions next.
 }
 
 void SPHSolver::findMeshWalls()
@@ -678,51 +683,6 @@ std::vector<std::uint32_t> SPHSolver::neighbourCounts() const
                                   counts[i] = candidates.findHits(q, h2) - 1; // the particle itself is a candidate
                                 });
   return counts;
-}
-
-std::vector<float> SPHSolver::smoothedPressure() const
-{
-  const ParticleState& s = this->State;
-  const SPHParameters& p = this->Parameters;
-  std::vector<float> volume(s.size()), smoothed(s.size());
-  for (std::size_t i = 0; i < s.size(); ++i)
-  {
-    volume[i] = p.particleMass / s.density[i];
-  }
-  const float h2 = p.smoothingLength * p.smoothingLength;
-  detail::forEachParticleByCell(this->Grid, s, p.smoothingLength, threadCount(p), { volume.data(), s.pressure.data() },
-                                [&](detail::CandidateBuffer& c, std::uint32_t i)
-                                {
-                                  const float position[3] = { s.x[i], s.y[i], s.z[i] };
-                                  float weighted = 0.0f, weights = 0.0f;
-                                  auto accumulate = [&](const float q[3])
-                                  {
-                                    const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data();
-                                    const float *v = c.channel[0].data(), *pj = c.channel[1].data();
-                                    float a = 0.0f, b = 0.0f;
-#pragma omp simd reduction(+ : a, b)
-                                    for (std::uint32_t j = 0; j < c.size; ++j)
-                                    {
-                                      const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
-                                      const float d = std::max(h2 - (dx * dx + dy * dy + dz * dz), 0.0f);
-                                      const float w = v[j] * d * d * d; // poly6 without its constant, which cancels
-                                      a += w * pj[j];
-                                      b += w;
-                                    }
-                                    weighted += a;
-                                    weights += b;
-                                  };
-                                  accumulate(position);
-                                  const WallMirrors mirrors = WallMirrors::around(position, p);
-                                  for (int m = 0; m < mirrors.count; ++m)
-                                  {
-                                    float image[3];
-                                    mirrors.image(m, position, image);
-                                    accumulate(image);
-                                  }
-                                  smoothed[i] = weights > 0.0f ? weighted / weights : s.pressure[i];
-                                });
-  return smoothed;
 }
 
 double SPHSolver::kineticEnergy() const

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <vector>
 
 namespace parafluid::validation
@@ -15,26 +17,69 @@ using sph::SPHSolver;
 
 namespace
 {
-/// Relative L2 error of the given per-id pressures against rho0 g (surface - z).
-double hydrostaticError(const SPHSolver& s, const std::vector<double>& pressureById, double surface,
-                        std::ostream* profile, const char* solver, int across)
+/// Relative L2 error of the given per-id pressures against rho0 g (surface - z), split by depth
+/// layers one spacing thick (splitErrorByDepth).
+ErrorByDepth hydrostaticError(const SPHSolver& s, const std::vector<double>& pressureById, double surface,
+                              double spacing, std::ostream* profile, const char* solver, int across)
 {
-  double num = 0.0, den = 0.0;
-  for (std::size_t i = 0; i < s.state().size(); ++i)
+  const std::size_t n = s.state().size();
+  std::vector<double> z(n), value(n), reference(n);
+  for (std::size_t i = 0; i < n; ++i)
   {
     const auto id = static_cast<std::size_t>(s.state().id[i]);
-    const double reference = kRho0 * kGravity * (surface - s.state().z[i]);
-    num += (pressureById[id] - reference) * (pressureById[id] - reference);
-    den += reference * reference;
+    z[i] = s.state().z[i];
+    value[i] = pressureById[id];
+    reference[i] = kRho0 * kGravity * (surface - z[i]);
     if (profile)
     {
-      *profile << solver << "," << across << "," << s.state().z[i] << "," << pressureById[id] << "," << reference
-               << "\n";
+      *profile << solver << "," << across << "," << z[i] << "," << value[i] << "," << reference[i] << "\n";
     }
   }
-  return den > 0.0 ? std::sqrt(num / den) : 0.0;
+  return splitErrorByDepth(z, value, reference, spacing);
 }
 } // namespace
+
+ErrorByDepth splitErrorByDepth(const std::vector<double>& z, const std::vector<double>& value,
+                               const std::vector<double>& reference, double spacing)
+{
+  // Each particle's layer key; a position that is not finite (a particle gone astray) is a layer of
+  // its own, and far positions are clamped so that the index cannot overflow.
+  std::vector<long long> key(z.size());
+  std::map<long long, std::pair<double, double>> layers; // key -> (count, sum of departures)
+  double squares = 0.0, referenceSquares = 0.0;
+  for (std::size_t i = 0; i < z.size(); ++i)
+  {
+    const double e = value[i] - reference[i];
+    const double index = std::floor(z[i] / spacing);
+    key[i] = std::isfinite(index) ? static_cast<long long>(std::clamp(index, -1e15, 1e15))
+                                  : std::numeric_limits<long long>::min();
+    auto& layer = layers[key[i]];
+    layer.first += 1.0;
+    layer.second += e;
+    squares += e * e;
+    referenceSquares += reference[i] * reference[i];
+  }
+  double meanPart = 0.0, withinPart = 0.0;
+  for (const auto& entry : layers)
+  {
+    const double mean = entry.second.second / entry.second.first;
+    meanPart += entry.second.first * mean * mean;
+  }
+  for (std::size_t i = 0; i < z.size(); ++i)
+  {
+    const auto& layer = layers[key[i]];
+    const double scatter = value[i] - reference[i] - layer.second / layer.first;
+    withinPart += scatter * scatter;
+  }
+  ErrorByDepth r;
+  if (referenceSquares > 0.0)
+  {
+    r.total = std::sqrt(squares / referenceSquares);
+    r.layerMean = std::sqrt(meanPart / referenceSquares);
+    r.withinLayer = std::sqrt(withinPart / referenceSquares);
+  }
+  return r;
+}
 
 Hydrostatic hydrostatic(PressureSolverType solver, int across, std::ostream* profile)
 {
@@ -59,7 +104,10 @@ Hydrostatic hydrostatic(PressureSolverType solver, int across, std::ostream* pro
     }
   }
   r.cost.seconds = timer.seconds();
-  r.error = hydrostaticError(s, sum, height, profile, solverName(solver), across);
+  const ErrorByDepth error = hydrostaticError(s, sum, height, d, profile, solverName(solver), across);
+  r.error = error.total;
+  r.layerMeanError = error.layerMean;
+  r.withinLayerError = error.withinLayer;
   return r;
 }
 
@@ -112,7 +160,7 @@ StillWater stillWater(PressureSolverType solver, int across, double duration)
   {
     byId[static_cast<std::size_t>(st.id[i])] = pressure[i];
   }
-  r.pressureError = hydrostaticError(s, byId, depth, nullptr, solverName(solver), across);
+  r.pressureError = hydrostaticError(s, byId, depth, d, nullptr, solverName(solver), across).total;
   return r;
 }
 } // namespace parafluid::validation

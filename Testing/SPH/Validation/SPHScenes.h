@@ -11,6 +11,7 @@
 #include <array>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace parafluid::validation
 {
@@ -50,7 +51,23 @@ struct Hydrostatic
   RunCost cost;
   double error = 0.0;       // relative L2 over particles
   double compression = 0.0; // mean (rho - rho0) / rho0
+  // The error split by depth (see ErrorByDepth): error^2 = layerMean^2 + withinLayer^2.
+  double layerMeanError = 0.0, withinLayerError = 0.0;
 };
+
+/// A relative L2 error of values against references, split over depth layers one particle spacing
+/// thick: the part that the layers' mean departures carry (an offset or a wrong slope, such as a
+/// surface layer's missing pressure) and the part of the particles' scatter about their layer's
+/// mean (noise from a disordered packing). The two add in squares to the whole:
+/// sum_i e_i^2 = sum_L [n_L mean_L(e)^2 + sum_(i in L) (e_i - mean_L(e))^2], e_i = value_i - reference_i,
+/// each divided by sum_i reference_i^2.
+struct ErrorByDepth
+{
+  double total = 0.0, layerMean = 0.0, withinLayer = 0.0;
+};
+/// Layers are z / spacing rounded down; z, value and reference are per particle, of one length.
+ErrorByDepth splitErrorByDepth(const std::vector<double>& z, const std::vector<double>& value,
+                               const std::vector<double>& reference, double spacing);
 Hydrostatic hydrostatic(sph::PressureSolverType solver, int across, std::ostream* profile = nullptr);
 
 /// A tank 0.5 m deep (and as long) left at rest for `duration` seconds.

@@ -86,11 +86,13 @@ public:
   /// Neighbours of each particle within h (itself excluded), in state order. A separate pass:
   /// computed only when called.
   std::vector<std::uint32_t> neighbourCounts() const;
-  /// The pressure field at each particle, in state order [Pa]: the SPH (Shepard) interpolation of
-  /// the particles' pressures over each neighbourhood. It drops the layer-by-layer alternating
-  /// pattern that a collocated SPH pressure gradient cannot see (it exerts no force, so neither
-  /// solver removes it) and that makes single-particle pressures noisy. A separate pass: computed
-  /// only when called.
+  /// The pressure field at each particle, in state order [Pa]: a linear field fitted by weighted
+  /// least squares over each neighbourhood (poly6 weights; wall images carry their particles'
+  /// pressures lifted hydrostatically), read at the particle (SmoothedPressure.cxx). It drops the
+  /// layer-by-layer alternating pattern that a collocated SPH pressure gradient cannot see (it
+  /// exerts no force, so no solver removes it) and that makes single-particle pressures noisy, and
+  /// it reproduces a linear field exactly where free surfaces and walls cut the neighbourhood. A
+  /// separate pass: computed only when called.
   std::vector<float> smoothedPressure() const;
   /// Kinetic energy [J].
   double kineticEnergy() const;
