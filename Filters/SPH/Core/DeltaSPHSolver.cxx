@@ -233,7 +233,7 @@ __attribute__((always_inline)) inline void forceTermsBody(const PairInput& in, c
     const float rr = dx * dx + dy * dy + dz * dz; // computed: a gather of the search's r^2 costs more
     const WendlandPair w(k.w, __builtin_sqrtf(rr));
     // A wall image's pressure, extrapolated hydrostatically from its particle's (lift: 0 for real
-    // neighbours and without the gradient correction; see wallImageLift).
+    // neighbours and without the gradient correction; see detail::hydrostaticImageLift).
     const float pJ =
       Lift ? pressure[j] + rho[j] * (lift[0] * px[j] + lift[1] * py[j] + lift[2] * pz[j] + lift[3]) : pressure[j];
     float laminar = 0.0f, inverseRhoJ;
@@ -307,22 +307,6 @@ Sums forceTerms(CandidateBuffer& c, const float q[3], const float vq[3], float r
   else
     inviscidForceTerms(in, q, vq, rhoI, pI, t, lift, k, &sums);
   return sums;
-}
-
-/// The hydrostatic extrapolation of a wall image's pressure (Adami, Hu & Adams 2012, for a wall at
-/// rest): the image R x_j of particle j carries p_j + rho_j g . (R x_j - x_j). With R x = s x + o
-/// (s the mirror's scale, o = q - s x_i for the query q = R x_i), g . (R x_j - x_j) is linear in
-/// x_j: lift[0..2] . x_j + lift[3]. Without it the image of every neighbour has that neighbour's
-/// pressure, so the pressure field is even across a floor and a floor layer's neighbours and their
-/// images push it equally up and down: at rest it was held up by its own image's pair alone.
-void wallImageLift(const float* q, const float* x, const float* scale, const Constants& k, float lift[4])
-{
-  lift[3] = 0.0f;
-  for (int a = 0; a < 3; ++a)
-  {
-    lift[a] = k.gravity[a] * (scale[a] - 1.0f);
-    lift[3] += k.gravity[a] * (q[a] - scale[a] * x[a]);
-  }
 }
 
 /// rho_i - rho^H(x_i), up to a constant: rho^H = rho0 (1 + g . x / c0^2), the linearised hydrostatic
@@ -546,7 +530,11 @@ void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters&
                          float lift[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
                          if (image && k.correctGradient)
                          {
-                           wallImageLift(q, position, scale, k, lift);
+                           // Without the lift the image of every neighbour has that neighbour's
+                           // pressure, so the pressure field is even across a floor and a floor
+                           // layer's neighbours and their images push it equally up and down: at
+                           // rest it was held up by its own image's pair alone.
+                           detail::hydrostaticImageLift(q, position, scale, k.gravity, lift);
                          }
                          Sums g = forceTerms<Laminar>(c, q, v, s.density[i], s.pressure[i], t, lift, image, k);
                          if (image)

@@ -161,13 +161,11 @@ std::vector<float> SPHSolver::smoothedPressure() const
         // particle's, found first), padded to whole vectors.
         in.hits = image ? c.imageHits.data() : c.hits.data();
         in.count = image ? c.findImageHits(q, h2) : c.padHits(c.findHits(q, h2, false));
-        in.lift[3] = 0.0f; // rho_j g . (R x_j - x_j) = rho_j (lift . x_j + lift[3])
+        detail::hydrostaticImageLift(q, x, scale, g, in.lift); // rho_j (lift . x_j + lift[3])
         for (int a = 0; a < 3; ++a)
         {
           in.q[a] = q[a];
           in.scaleOverH[a] = scale[a] * inverseH;
-          in.lift[a] = g[a] * (scale[a] - 1.0f);
-          in.lift[3] += g[a] * (x[a] - scale[a] * q[a]);
         }
         in.h2 = h2;
         in.pi = pi;

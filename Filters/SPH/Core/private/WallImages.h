@@ -28,4 +28,19 @@ void forEachWallImage(const float position[3], const float velocity[3], const SP
   }
 }
 
+/// The hydrostatic extrapolation of a wall image's pressure (Adami, Hu & Adams 2012, for a wall at
+/// rest): the image R x_j of particle j carries p_j + rho_j g . (R x_j - x_j). With R x = s x + o
+/// (s the mirror's scale, o = q - s x_i for the query q = R x_i), g . (R x_j - x_j) is linear in
+/// x_j: lift[0..2] . x_j + lift[3].
+inline void hydrostaticImageLift(const float* q, const float* x, const float* scale, const float* gravity,
+                                 float lift[4])
+{
+  lift[3] = 0.0f;
+  for (int a = 0; a < 3; ++a)
+  {
+    lift[a] = gravity[a] * (scale[a] - 1.0f);
+    lift[3] += gravity[a] * (q[a] - scale[a] * x[a]);
+  }
+}
+
 } // namespace parafluid::sph::detail
