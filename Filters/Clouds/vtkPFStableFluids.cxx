@@ -3,6 +3,7 @@
 #include "GuardedRequest.h"
 #include "OutputTimes.h"
 #include "ParameterCheck.h"
+#include "TimeSteppedCache.h"
 
 #include "parafluid/clouds/CloudShapes.h"
 #include "parafluid/clouds/GridSolvers.h"
@@ -28,12 +29,16 @@ using parafluid::clouds::StableFluids;
 using parafluid::clouds::StableFluidsParameters;
 using parafluid::clouds::StaggeredGrid;
 
-struct vtkPFStableFluids::Cache
+// What an output kept by the cache reports again when it is asked for a second time.
+struct KeptCloudInfo
 {
-  std::optional<StableFluids> Simulation;
-  long long OutputIndex = 0;
-  long long Steps = 0;
-  vtkMTimeType InputTime = 0, FilterTime = 0;
+  long long steps = 0;
+  int iterations = 0;
+};
+
+struct vtkPFStableFluids::Cache : parafluid::vtk::TimeSteppedCache<StableFluids, KeptCloudInfo>
+{
+  long long Steps = 0; // steps since the run started
 };
 
 vtkStandardNewMacro(vtkPFStableFluids);
@@ -201,12 +206,17 @@ int vtkPFStableFluids::RequestData(vtkInformation*, vtkInformationVector** input
 
       vtkDataSet* sources = vtkDataSet::GetData(inputVector[1]);
       Cache& cache = *this->Cached;
-      const vtkMTimeType inputTime = sources ? sources->GetMTime() : 0;
-      const bool reusable = cache.Simulation && cache.InputTime == inputTime && cache.FilterTime == this->GetMTime() &&
-                            cache.OutputIndex <= target;
-      if (!reusable)
+      cache.follow({ sources ? sources->GetMTime() : 0, this->GetMTime() });
+      if (const KeptCloudInfo* kept = cache.restore(target, { output }))
       {
-        cache.Simulation.reset();
+        this->LastSteps = kept->steps;
+        this->LastIterations = kept->iterations;
+        output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), target * interval);
+        return 1;
+      }
+      if (!cache.canContinueTo(target))
+      {
+        cache.dropRun();
         StableFluidsParameters p;
         std::copy(cells, cells + 3, p.resolution);
         p.cellSize = h;
@@ -233,14 +243,14 @@ int vtkPFStableFluids::RequestData(vtkInformation*, vtkInformationVector** input
         p.projectionTolerance = this->ProjectionTolerance;
         p.preconditioner = this->Preconditioner == 1 ? parafluid::clouds::Preconditioner::Jacobi
                                                      : parafluid::clouds::Preconditioner::Multigrid;
-        cache.Simulation.emplace(p);
+        cache.start(std::make_unique<StableFluids>(p));
         if (this->ProceduralClouds)
         {
           parafluid::clouds::CloudShapeParameters shapes;
           shapes.coverage = this->CloudCoverage;
           shapes.featureSize = this->CloudFeatureSize;
           shapes.seed = static_cast<std::uint64_t>(this->CloudSeed);
-          parafluid::clouds::fillCloudShapes(cache.Simulation->grid(), shapes);
+          parafluid::clouds::fillCloudShapes(cache.simulation()->grid(), shapes);
         }
         if (sources && sources->GetNumberOfPoints() > 0)
         {
@@ -258,36 +268,33 @@ int vtkPFStableFluids::RequestData(vtkInformation*, vtkInformationVector** input
             sources->GetPoint(n, p);
             xyz.insert(xyz.end(), p, p + 3);
           }
-          cache.Simulation->setPointSources(std::move(xyz));
+          cache.simulation()->setPointSources(std::move(xyz));
         }
-        cache.OutputIndex = 0;
         cache.Steps = 0;
-        cache.InputTime = inputTime;
-        cache.FilterTime = this->GetMTime();
       }
       // Every output interval in equal steps no longer than TimeStep.
       const int substeps = std::max(1, static_cast<int>(std::ceil(interval / this->TimeStep - 1e-9)));
       const double dt = interval / substeps;
-      const long long total = (target - cache.OutputIndex) * substeps;
+      const long long total = (target - cache.outputIndex()) * substeps;
       for (long long s = 0; s < total; ++s)
       {
-        cache.Simulation->step(dt);
+        cache.simulation()->step(dt);
         ++cache.Steps;
         if (s % 4 == 0)
         {
           this->UpdateProgress(static_cast<double>(s) / static_cast<double>(total));
           if (this->CheckAbort())
           {
-            cache.Simulation.reset();
+            cache.dropRun();
             return 1;
           }
         }
       }
-      cache.OutputIndex = target;
+      cache.reached(target);
       this->LastSteps = cache.Steps;
-      this->LastIterations = cache.Simulation->lastProjection().iterations;
+      this->LastIterations = cache.simulation()->lastProjection().iterations;
 
-      const StaggeredGrid& g = cache.Simulation->grid();
+      const StaggeredGrid& g = cache.simulation()->grid();
       output->SetExtent(0, g.nx - 1, 0, g.ny - 1, 0, g.nz - 1);
       output->SetOrigin(g.origin[0] + 0.5 * g.h, g.origin[1] + 0.5 * g.h, g.origin[2] + 0.5 * g.h);
       output->SetSpacing(g.h, g.h, g.h);
@@ -328,6 +335,7 @@ int vtkPFStableFluids::RequestData(vtkInformation*, vtkInformationVector** input
         divergence->Delete();
       }
       output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), target * interval);
+      cache.keep(target, { output }, { this->LastSteps, this->LastIterations });
       return 1;
     });
 }

@@ -7,9 +7,11 @@
 #include "ParticleContract.h"
 #include "ParticleStateArrays.h"
 
+#include "TimeSteppedCache.h"
 #include "parafluid/common/MemoryBudget.h"
 #include "parafluid/rain/RainField.h"
-#include "parafluid/sph/SPHSolver.h"
+#include "parafluid/sph/Simulation.h"
+#include "parafluid/sph/SolverRegistry.h"
 
 #include "vtkCellArray.h"
 #include "vtkFieldData.h"
@@ -36,11 +38,15 @@ using parafluid::rain::Impact;
 using parafluid::rain::RainField;
 using parafluid::rain::Runoff;
 
-struct vtkPFRain::Cache
+// What an output kept by the cache reports again when it is asked for a second time.
+struct KeptRainInfo
 {
-  std::optional<Runoff> Simulation;
-  long long OutputIndex = 0;
-  vtkMTimeType InputTime = 0, FilterTime = 0;
+  vtkIdType drops = 0;
+  double fallen = 0.0, water = 0.0, infiltrated = 0.0;
+};
+
+struct vtkPFRain::Cache : parafluid::vtk::TimeSteppedCache<Runoff, KeptRainInfo>
+{
 };
 
 vtkStandardNewMacro(vtkPFRain);
@@ -83,7 +89,14 @@ void vtkPFRain::SetWindVelocity(double x, double y)
 
 void vtkPFRain::SetPressureSolver(int solver)
 {
-  this->Set(this->Water.sph.pressureSolver, static_cast<parafluid::sph::PressureSolverType>(std::clamp(solver, 0, 2)));
+  const parafluid::sph::SolverEntry* entry = parafluid::sph::solverForPropertyValue(solver);
+  if (!entry)
+  {
+    vtkErrorMacro(<< "PressureSolver = " << solver << " is not a solver; kept "
+                  << parafluid::sph::solverEntry(this->Water.sph.pressureSolver).label);
+    return;
+  }
+  this->Set(this->Water.sph.pressureSolver, entry->type);
 }
 
 void vtkPFRain::SetWallFriction(int friction)
@@ -275,6 +288,21 @@ int vtkPFRain::RequestData(vtkInformation*, vtkInformationVector** inputVector, 
   const double t = static_cast<double>(target) * interval;
 
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0]);
+  Cache& cache = *this->Cached;
+  const std::vector<vtkDataObject*> outputs = { drops, water, splashes };
+  cache.follow({ input ? input->GetMTime() : 0, this->GetMTime() });
+  if (const KeptRainInfo* kept = this->SimulateRunoff ? cache.restore(target, outputs) : nullptr)
+  {
+    this->DropCount = kept->drops;
+    this->FallenVolume = kept->fallen;
+    this->WaterVolume = kept->water;
+    this->InfiltratedVolume = kept->infiltrated;
+    for (vtkPolyData* output : { drops, water, splashes })
+    {
+      output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), t);
+    }
+    return 1;
+  }
   const std::shared_ptr<const HeightField> ground = this->ReadGround(input);
   if (!ground)
   {
@@ -285,47 +313,42 @@ int vtkPFRain::RequestData(vtkInformation*, vtkInformationVector** inputVector, 
   {
     return 0;
   }
-  Cache& cache = *this->Cached;
   try
   {
     const RainField* field = nullptr;
     std::optional<RainField> stateless;
     if (this->SimulateRunoff)
     {
-      const bool reusable = cache.Simulation && cache.InputTime == input->GetMTime() &&
-                            cache.FilterTime == this->GetMTime() && cache.OutputIndex <= target;
-      if (!reusable)
+      if (!cache.canContinueTo(target))
       {
-        cache.Simulation.reset();
-        cache.Simulation.emplace(rain, this->Water, ground);
-        cache.OutputIndex = 0;
-        cache.InputTime = input->GetMTime();
-        cache.FilterTime = this->GetMTime();
+        cache.dropRun();
+        cache.start(std::make_unique<Runoff>(rain, this->Water, ground));
       }
       bool aborted = false;
-      const double span = t - cache.Simulation->time();
-      cache.Simulation->advance(span,
-                                [this, &aborted](double fraction)
-                                {
-                                  this->UpdateProgress(fraction);
-                                  aborted = this->CheckAbort() != 0;
-                                  return !aborted;
-                                });
+      Runoff& runoff = *cache.simulation();
+      runoff.advance(t - runoff.time(),
+                     [this, &aborted](double fraction)
+                     {
+                       this->UpdateProgress(fraction);
+                       aborted = this->CheckAbort() != 0;
+                       return !aborted;
+                     });
       if (aborted)
       {
-        cache.Simulation.reset();
+        cache.dropRun();
         return 1;
       }
-      cache.OutputIndex = target;
-      field = &cache.Simulation->rain();
+      cache.reached(target);
+      field = &runoff.rain();
     }
     else
     {
-      cache.Simulation.reset();
+      cache.reset();
       stateless.emplace(rain, ground);
       field = &*stateless;
     }
-    const std::vector<float>* levels = this->SimulateRunoff ? &cache.Simulation->waterLevels() : nullptr;
+    const Runoff* runoff = this->SimulateRunoff ? cache.simulation() : nullptr;
+    const std::vector<float>* levels = runoff ? &runoff->waterLevels() : nullptr;
     const std::string memory = parafluid::checkMemoryBudget(60.0 * static_cast<double>(field->dropCount()),
                                                             "drawing " + std::to_string(field->dropCount()) + " drops");
     if (!memory.empty())
@@ -336,21 +359,23 @@ int vtkPFRain::RequestData(vtkInformation*, vtkInformationVector** inputVector, 
     this->WriteDrops(*field, levels, t, drops);
     this->WriteWater(t, water);
     this->WriteSplashes(*field, levels, t, splashes);
-    this->FallenVolume = this->SimulateRunoff ? cache.Simulation->fallenVolume() : 0.0;
-    this->WaterVolume = this->SimulateRunoff
-                          ? static_cast<double>(cache.Simulation->particleCount()) * cache.Simulation->particleVolume()
-                          : 0.0;
-    this->InfiltratedVolume = this->SimulateRunoff ? cache.Simulation->infiltratedVolume() : 0.0;
+    this->FallenVolume = runoff ? runoff->fallenVolume() : 0.0;
+    this->WaterVolume = runoff ? static_cast<double>(runoff->particleCount()) * runoff->particleVolume() : 0.0;
+    this->InfiltratedVolume = runoff ? runoff->infiltratedVolume() : 0.0;
   }
   catch (const std::exception& e)
   {
-    cache.Simulation.reset();
+    cache.dropRun();
     this->ReportError(e.what());
     return 0;
   }
   for (vtkPolyData* output : { drops, water, splashes })
   {
     output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), t);
+  }
+  if (this->SimulateRunoff)
+  {
+    cache.keep(target, outputs, { this->DropCount, this->FallenVolume, this->WaterVolume, this->InfiltratedVolume });
   }
   return 1;
 }
@@ -409,13 +434,13 @@ void vtkPFRain::WriteDrops(const RainField& rain, const std::vector<float>* wate
 
 void vtkPFRain::WriteWater(double t, vtkPolyData* output)
 {
-  const Runoff* runoff = this->SimulateRunoff && this->Cached->Simulation ? &*this->Cached->Simulation : nullptr;
-  const parafluid::sph::SPHSolver* sph = runoff ? runoff->water() : nullptr;
+  const Runoff* runoff = this->SimulateRunoff ? this->Cached->simulation() : nullptr;
+  const parafluid::sph::Simulation* sph = runoff ? runoff->water() : nullptr;
   vtkFieldData* fd = output->GetFieldData();
   if (sph)
   {
     parafluid::vtk::ParticleOutputArrays extra;
-    parafluid::vtk::writeParticleState(sph->state(), extra, output);
+    parafluid::vtk::writeParticleState(sph->hostState(), extra, output);
     const auto& p = sph->parameters();
     const double d = runoff->parameters().particleSpacing, h = p.smoothingLength, rho0 = p.restDensity,
                  mass = p.particleMass;

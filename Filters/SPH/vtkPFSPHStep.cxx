@@ -3,13 +3,15 @@
 #include "OutputTimes.h"
 #include "ParticleArrays.h"
 #include "ParticleStateArrays.h"
+#include "TimeSteppedCache.h"
 #include "TriangleBoundaryFromSurface.h"
 
 #include "HeightImage.h"
 #include "parafluid/common/MemoryBudget.h"
 #include "vtkImageData.h"
 
-#include "parafluid/sph/SPHSolver.h"
+#include "parafluid/sph/Simulation.h"
+#include "parafluid/sph/SolverRegistry.h"
 
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -24,21 +26,21 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
-#include <optional>
+#include <memory>
 
 namespace contract = parafluid::contract;
-using parafluid::sph::PressureSolverType;
+using parafluid::sph::Simulation;
 using parafluid::sph::SPHParameters;
-using parafluid::sph::SPHSolver;
 using parafluid::sph::WallFriction;
 
-struct vtkPFSPHStep::Cache
+// What an output kept by the cache reports again when it is asked for a second time.
+struct KeptOutputInfo
 {
-  std::optional<SPHSolver> Solver;
-  long long OutputIndex = 0;     // the output time the solver's state belongs to
-  vtkMTimeType InputTime = 0;    // the input data object's MTime it started from
-  vtkMTimeType BoundaryTime = 0; // the boundary surface's MTime (0 without one)
-  vtkMTimeType FilterTime = 0;   // this filter's MTime (its properties) it started with
+  double meanDensityError = 0.0;
+};
+
+struct vtkPFSPHStep::Cache : parafluid::vtk::TimeSteppedCache<Simulation, KeptOutputInfo>
+{
 };
 
 vtkStandardNewMacro(vtkPFSPHStep);
@@ -58,8 +60,19 @@ vtkPFSPHStep::vtkPFSPHStep()
 
 void vtkPFSPHStep::SetPressureSolver(int solver)
 {
-  const int clamped = std::clamp(solver, 0, 2);
-  this->SetParameter(this->Parameters.pressureSolver, static_cast<PressureSolverType>(clamped));
+  const parafluid::sph::SolverEntry* entry = parafluid::sph::solverForPropertyValue(solver);
+  if (!entry)
+  {
+    vtkErrorMacro(<< "PressureSolver = " << solver << " is not a solver; kept "
+                  << parafluid::sph::solverEntry(this->Parameters.pressureSolver).label);
+    return;
+  }
+  this->SetParameter(this->Parameters.pressureSolver, entry->type);
+}
+
+int vtkPFSPHStep::GetPressureSolver() const
+{
+  return parafluid::sph::solverEntry(this->Parameters.pressureSolver).propertyValue;
 }
 
 void vtkPFSPHStep::SetSurfaceTensionModel(int model)
@@ -182,45 +195,26 @@ int vtkPFSPHStep::RequestParticles(const Particles& particles, vtkInformationVec
     return 0;
   }
   const long long target = this->RequestedOutputIndex(outInfo);
-  // The Boundary: a surface, or a terrain's 2-D height image (made into its warped surface).
-  vtkDataObject* boundaryData = vtkDataObject::GetData(inputVector[1]);
-  vtkSmartPointer<vtkPolyData> boundary = vtkPolyData::SafeDownCast(boundaryData);
-  if (auto* image = vtkImageData::SafeDownCast(boundaryData))
-  {
-    parafluid::vtk::HeightImage heights;
-    std::string problem;
-    if (!parafluid::vtk::readHeightImage(image, "", heights, problem))
-    {
-      this->ReportError("Boundary: " + problem);
-      return 0;
-    }
-    const auto bad =
-      std::find_if(heights.heights.begin(), heights.heights.end(), [](float h) { return !std::isfinite(h); });
-    if (bad != heights.heights.end())
-    {
-      this->ReportError("Boundary: the height image's '" + heights.arrayName + "' is not finite at sample " +
-                        std::to_string(bad - heights.heights.begin()) +
-                        " (fill no-data with Terrain From Image first)");
-      return 0;
-    }
-    boundary = parafluid::vtk::heightSurface(heights.heights, heights.nx, heights.ny, heights.origin, heights.spacing);
-  }
-
-  // Moving forward under the same inputs and properties continues the cached simulation. The
-  // gathered copy is new on every update; the local input's own MTime says whether it changed.
+  // Moving forward under the same inputs and properties continues the cached simulation, and an
+  // output already made is copied. The gathered copy is new on every update; the local input's
+  // own MTime says whether it changed.
   Cache& cache = *this->Cached;
-  const vtkMTimeType inputTime = particles.Local->GetMTime();
-  const vtkMTimeType boundaryTime = boundaryData ? boundaryData->GetMTime() : 0;
-  const bool reusable = cache.Solver && cache.InputTime == inputTime && cache.BoundaryTime == boundaryTime &&
-                        cache.FilterTime == this->GetMTime() && cache.OutputIndex <= target;
-  if (!reusable)
+  vtkDataObject* boundaryData = vtkDataObject::GetData(inputVector[1]);
+  cache.follow({ particles.Local->GetMTime(), boundaryData ? boundaryData->GetMTime() : 0, this->GetMTime() });
+  if (const KeptOutputInfo* kept = cache.restore(target, { output }))
   {
-    if (!this->StartSimulation(particles.Gathered, boundary))
+    this->MeanDensityError = kept->meanDensityError;
+    output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(),
+                                  this->StartTime + static_cast<double>(target) * this->OutputInterval);
+    return 1;
+  }
+  if (!cache.canContinueTo(target))
+  {
+    vtkSmartPointer<vtkPolyData> boundary;
+    if (!this->ReadBoundary(boundaryData, boundary) || !this->StartSimulation(particles.Gathered, boundary))
     {
       return 0;
     }
-    cache.InputTime = inputTime;
-    cache.BoundaryTime = boundaryTime;
   }
   this->WarnAboutLongRun(target);
   const int advanced = this->AdvanceTo(target);
@@ -229,7 +223,35 @@ int vtkPFSPHStep::RequestParticles(const Particles& particles, vtkInformationVec
     return advanced < 0 ? 1 : 0; // an abort is no error, and leaves the output empty
   }
   this->WriteOutput(particles.Gathered, target, output);
+  cache.keep(target, { output }, { this->MeanDensityError });
   return 1;
+}
+
+bool vtkPFSPHStep::ReadBoundary(vtkDataObject* boundaryData, vtkSmartPointer<vtkPolyData>& boundary)
+{
+  // The Boundary: a surface, or a terrain's 2-D height image (made into its warped surface).
+  boundary = vtkPolyData::SafeDownCast(boundaryData);
+  if (auto* image = vtkImageData::SafeDownCast(boundaryData))
+  {
+    parafluid::vtk::HeightImage heights;
+    std::string problem;
+    if (!parafluid::vtk::readHeightImage(image, "", heights, problem))
+    {
+      this->ReportError("Boundary: " + problem);
+      return false;
+    }
+    const auto bad =
+      std::find_if(heights.heights.begin(), heights.heights.end(), [](float h) { return !std::isfinite(h); });
+    if (bad != heights.heights.end())
+    {
+      this->ReportError("Boundary: the height image's '" + heights.arrayName + "' is not finite at sample " +
+                        std::to_string(bad - heights.heights.begin()) +
+                        " (fill no-data with Terrain From Image first)");
+      return false;
+    }
+    boundary = parafluid::vtk::heightSurface(heights.heights, heights.nx, heights.ny, heights.origin, heights.spacing);
+  }
+  return true;
 }
 
 void vtkPFSPHStep::WarnAboutLongRun(long long target)
@@ -238,10 +260,10 @@ void vtkPFSPHStep::WarnAboutLongRun(long long target)
   // millions of steps (a huge Viscosity, a tiny SmoothingLength, a very stiff fluid) is announced
   // before the progress bar starts crawling, with what makes the steps short.
   const Cache& cache = *this->Cached;
-  const double span = static_cast<double>(target - cache.OutputIndex) * this->OutputInterval;
-  const double dt = cache.Solver->proposedTimeStep();
+  const double span = static_cast<double>(target - cache.outputIndex()) * this->OutputInterval;
+  const double dt = cache.simulation()->proposedTimeStep();
   const double steps = dt > 0.0 ? span / dt : 0.0;
-  const double particles = static_cast<double>(cache.Solver->state().size());
+  const double particles = static_cast<double>(cache.simulation()->particleCount());
   if (steps * std::max(particles, 1.0) > 1e10 || steps > 1e6)
   {
     vtkWarningMacro(<< "SPH Step: reaching t = " << this->StartTime + target * this->OutputInterval << " s needs about "
@@ -289,14 +311,9 @@ bool vtkPFSPHStep::ResolveParameters(vtkFieldData* fd, SPHParameters& p)
   const double spacing = parafluid::vtk::fieldValue(fd, contract::ParticleSpacing, 0.0);
   if (!(p.smoothingLength > 0.0f))
   {
-    p.smoothingLength = static_cast<float>(parafluid::vtk::fieldValue(fd, contract::SmoothingLength, 2.0 * spacing));
-    if (p.pressureSolver == parafluid::sph::PressureSolverType::DeltaSPH)
-    {
-      // δ-SPH's Wendland kernel wants kDeltaSPHSupport spacings (at 2, waves run 14 % fast; at 3
-      // the lattice under pressure shears apart: the Benchmarks README); an input's wider
-      // smoothing_length is kept.
-      p.smoothingLength = std::max(p.smoothingLength, static_cast<float>(parafluid::sph::kDeltaSPHSupport * spacing));
-    }
+    p.smoothingLength =
+      parafluid::sph::defaultSmoothingLength(parafluid::sph::solverEntry(p.pressureSolver), spacing,
+                                             parafluid::vtk::fieldValue(fd, contract::SmoothingLength, 0.0));
   }
   const bool domainGiven = std::any_of(p.domainBounds.begin(), p.domainBounds.end(), [](float v) { return v != 0.0f; });
   vtkDataArray* domain = vtkArrayDownCast<vtkDataArray>(fd ? fd->GetAbstractArray(contract::DomainBounds) : nullptr);
@@ -343,8 +360,9 @@ void vtkPFSPHStep::WarnOfUnvalidatedSurfaceTension(const SPHParameters& p)
   // layer that Akinci's forces pull in; where those forces outweigh gravity at the particle scale
   // a resting millimetre drop boils (Testing/Benchmarks/README.md, "Akinci's curvature term,
   // landed"). δ-SPH holds it.
+  const parafluid::sph::SolverEntry& solver = parafluid::sph::solverEntry(p.pressureSolver);
   const bool akinci = p.surfaceTensionModel != parafluid::sph::SurfaceTensionModel::ColourField;
-  if (p.pressureSolver != PressureSolverType::DFSPH || !akinci || !(p.surfaceTension > 0.0f))
+  if (solver.holdsStrongCohesion || !akinci || !(p.surfaceTension > 0.0f))
   {
     return;
   }
@@ -353,7 +371,8 @@ void vtkPFSPHStep::WarnOfUnvalidatedSurfaceTension(const SPHParameters& p)
     std::sqrt(p.gravity[0] * p.gravity[0] + p.gravity[1] * p.gravity[1] + p.gravity[2] * p.gravity[2]);
   if (capillary > gravity)
   {
-    vtkWarningMacro(<< "SPH Step: with DFSPH, Akinci surface tension that outweighs gravity at the particle scale "
+    vtkWarningMacro(<< "SPH Step: with " << solver.label
+                    << ", Akinci surface tension that outweighs gravity at the particle scale "
                        "(SurfaceTension / (RestDensity SmoothingLength^2) = "
                     << capillary << " m/s^2, gravity " << gravity
                     << " m/s^2) is not validated: a resting drop boils. Choose δ-SPH as PressureSolver for surface "
@@ -364,7 +383,7 @@ void vtkPFSPHStep::WarnOfUnvalidatedSurfaceTension(const SPHParameters& p)
 bool vtkPFSPHStep::StartSimulation(vtkPointSet* input, vtkPolyData* surface)
 {
   Cache& cache = *this->Cached;
-  cache.Solver.reset();
+  cache.dropRun();
   SPHParameters p;
   if (!this->ResolveParameters(input->GetFieldData(), p))
   {
@@ -394,15 +413,13 @@ bool vtkPFSPHStep::StartSimulation(vtkPointSet* input, vtkPolyData* surface)
   }
   try
   {
-    cache.Solver.emplace(p, parafluid::vtk::readParticleState(input), std::move(boundary));
+    cache.start(parafluid::sph::makeSimulation(p, parafluid::vtk::readParticleState(input), std::move(boundary)));
   }
   catch (const std::exception& e)
   {
     this->ReportError(e.what());
     return false;
   }
-  cache.OutputIndex = 0;
-  cache.FilterTime = this->GetMTime();
   return true;
 }
 
@@ -411,42 +428,43 @@ int vtkPFSPHStep::AdvanceTo(long long target)
   // One output interval at a time, so that the steps taken (and so the result) do not depend on
   // which times were asked for before.
   Cache& cache = *this->Cached;
-  const long long intervals = target - cache.OutputIndex;
+  Simulation& simulation = *cache.simulation();
+  const long long intervals = target - cache.outputIndex();
   bool aborted = false;
   try
   {
     for (long long k = 0; k < intervals && !aborted; ++k)
     {
-      this->StepsTakenLastUpdate += cache.Solver->advance(this->OutputInterval,
-                                                          [this, &aborted, k, intervals](double fraction)
-                                                          {
-                                                            this->UpdateProgress((static_cast<double>(k) + fraction) /
-                                                                                 static_cast<double>(intervals));
-                                                            aborted = this->CheckAbort() != 0;
-                                                            return !aborted;
-                                                          });
+      this->StepsTakenLastUpdate +=
+        simulation.advance(this->OutputInterval,
+                           [this, &aborted, k, intervals](double fraction)
+                           {
+                             this->UpdateProgress((static_cast<double>(k) + fraction) / static_cast<double>(intervals));
+                             aborted = this->CheckAbort() != 0;
+                             return !aborted;
+                           });
     }
   }
   catch (const std::exception& e)
   {
-    cache.Solver.reset();
+    cache.dropRun();
     this->ReportError(e.what());
     return 0;
   }
   if (aborted)
   {
-    cache.Solver.reset(); // it is between output times now
+    cache.dropRun(); // it is between output times now
     return -1;
   }
-  this->MeanDensityError = cache.Solver->lastStep().meanCompression;
-  cache.OutputIndex = target;
+  this->MeanDensityError = simulation.lastStep().meanCompression;
+  cache.reached(target);
   return 1;
 }
 
 void vtkPFSPHStep::WriteOutput(vtkPointSet* input, long long target, vtkPolyData* output)
 {
   // Output in the input's order and with the input's other arrays.
-  const SPHSolver& solver = *this->Cached->Solver;
+  const Simulation& solver = *this->Cached->simulation();
   output->GetPointData()->ShallowCopy(input->GetPointData());
   output->GetFieldData()->ShallowCopy(input->GetFieldData());
   std::vector<float> pressure;
@@ -463,7 +481,7 @@ void vtkPFSPHStep::WriteOutput(vtkPointSet* input, long long target, vtkPolyData
     neighbours = solver.neighbourCounts();
     extra.neighbourCount = &neighbours;
   }
-  parafluid::vtk::writeParticleState(solver.state(), extra, output);
+  parafluid::vtk::writeParticleState(solver.hostState(), extra, output);
 
   const double time = this->StartTime + static_cast<double>(target) * this->OutputInterval;
   const SPHParameters& p = solver.parameters();
@@ -483,7 +501,7 @@ void vtkPFSPHStep::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SmoothingLength: " << this->Parameters.smoothingLength << "\n";
-  os << indent << "PressureSolver: " << (this->GetPressureSolver() == 1 ? "DFSPH" : "WCSPH") << "\n";
+  os << indent << "PressureSolver: " << parafluid::sph::solverEntry(this->Parameters.pressureSolver).label << "\n";
   os << indent << "AdaptiveTimeStep: " << this->Parameters.adaptiveTimeStep << "\n";
   os << indent << "TimeStep: " << this->Parameters.timeStep << "\n";
   os << indent << "OutputInterval: " << this->OutputInterval << "\n";

@@ -24,6 +24,7 @@
 #include "parafluid/sph/SPHParameters.h"
 
 #include "AssignIfChanged.h"
+#include "vtkSmartPointer.h"
 
 #include <memory>
 
@@ -56,7 +57,7 @@ public:
   double GetViscosity() const { return this->Parameters.viscosity; }
   /// 0 = WCSPH (Müller's equation of state), 1 = DFSPH (divergence-free, incompressible).
   void SetPressureSolver(int solver);
-  int GetPressureSolver() const { return static_cast<int>(this->Parameters.pressureSolver); }
+  int GetPressureSolver() const;
   /// Surface tension sigma [N/m] (colour-field model); 0 skips the colour-field pass.
   void SetSurfaceTension(double value) { this->SetParameter(this->Parameters.surfaceTension, value); }
   double GetSurfaceTension() const { return this->Parameters.surfaceTension; }
@@ -188,6 +189,9 @@ private:
   /// A new simulation from the input particles and the optional boundary surface.
   /// Warns where the parameters ask for what the validation found unsound (Benchmarks README).
   void WarnOfUnvalidatedSurfaceTension(const parafluid::sph::SPHParameters& p);
+  /// The Boundary input as a surface (a height image becomes its warped surface); false after an
+  /// error. Null without one.
+  bool ReadBoundary(vtkDataObject* boundaryData, vtkSmartPointer<vtkPolyData>& boundary);
   bool StartSimulation(vtkPointSet* input, vtkPolyData* boundary);
   /// Steps the cached simulation to output `target`, one output interval at a time: 1 when there,
   /// 0 after an error, -1 when the user aborted (the simulation is dropped either way).

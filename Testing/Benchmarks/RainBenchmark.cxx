@@ -232,7 +232,7 @@ int main(int argc, char** argv)
     }
     const double drops = seconds(b, Clock::now()) / frames;
     sph::SPHSolver solver =
-      sph::SPHSolver(runoff.water()->parameters(), runoff.water()->state(), rain::groundBoundary(*ground));
+      sph::SPHSolver(runoff.water()->parameters(), runoff.water()->hostState(), rain::groundBoundary(*ground));
     const auto c = Clock::now();
     for (int f = 0; f < frames; ++f)
     {

@@ -4,6 +4,7 @@
 // the solver's bytes per particle; then the implicit viscosity's two conjugate-gradient solvers,
 // and simulated seconds per second of the three solvers with adaptive steps.
 #include "parafluid/common/ParticleLattice.h"
+#include "parafluid/sph/DeltaSPHSolver.h"
 #include "parafluid/sph/SPHSolver.h"
 
 #include <benchmark/benchmark.h>

@@ -14,6 +14,8 @@
 //        maxTimeStep [s]: probes of the solvers' limits, not the defaults the tables report)
 #include "SPHScenes.h"
 
+#include "parafluid/sph/SolverRegistry.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -176,8 +178,11 @@ int main(int argc, char** argv)
   }
   const std::string dir = argv[1];
   std::string chosen = "all";
-  std::vector<PressureSolverType> solvers = { PressureSolverType::WCSPH, PressureSolverType::DFSPH,
-                                              PressureSolverType::DeltaSPH };
+  std::vector<PressureSolverType> solvers;
+  for (const sph::SolverEntry& entry : sph::solverRegistry())
+  {
+    solvers.push_back(entry.type);
+  }
   std::vector<int> resolutions;
   float ratio = 0.0f, densityTolerance = 0.0f, maxTimeStep = 0.0f;
   for (int k = 2; k < argc; ++k)
@@ -207,15 +212,18 @@ int main(int argc, char** argv)
     }
     else if (option == "--solver" && k + 1 < argc)
     {
-      const std::string v = argv[++k];
-      if (v != "WCSPH" && v != "DFSPH" && v != "DeltaSPH")
+      const sph::SolverEntry* entry = sph::findSolver(argv[++k]);
+      if (!entry)
       {
-        std::cerr << "--solver takes WCSPH, DFSPH or DeltaSPH\n";
+        std::cerr << "--solver takes one of:";
+        for (const sph::SolverEntry& e : sph::solverRegistry())
+        {
+          std::cerr << " " << e.key;
+        }
+        std::cerr << "\n";
         return 2;
       }
-      solvers = { v == "DFSPH"      ? PressureSolverType::DFSPH
-                  : v == "DeltaSPH" ? PressureSolverType::DeltaSPH
-                                    : PressureSolverType::WCSPH };
+      solvers = { entry->type };
     }
     else if (option == "--resolutions" && k + 1 < argc)
     {

@@ -6,6 +6,7 @@
 // Usage: ParaFluidSphericDamBreak [spacing=0.02] [simulated seconds=0.01]
 #include "parafluid/common/ParticleLattice.h"
 #include "parafluid/common/TriangleBoundary.h"
+#include "parafluid/sph/DeltaSPHSolver.h"
 #include "parafluid/sph/SPHSolver.h"
 
 #include <chrono>

@@ -1,5 +1,5 @@
 """The Stable Fluids source in pvpython: its image and arrays, a plume that rises over time, time
-awareness (forward continues, back restarts to the same state), divergence on request, points of
+awareness (forward continues, back gives the output already made), divergence on request, points of
 an input dataset as sources, procedural clouds covering the asked fraction, and errors that name
 the property."""
 import numpy as np
@@ -43,10 +43,10 @@ print("plume: centre of density %.3f m -> %.3f m, updraught %.2f m/s" % (low, hi
 pftest.check(high > low + 0.3, "the plume rises: centre of density %.3f m -> %.3f m" % (low, high))
 pftest.check(w.max() > 0.3, "updraught %.2f m/s" % w.max())
 
-# Back in time restarts from t = 0 and reaches the same state.
+# Back in time: the output already made, the same state.
 again = fetch(smoke, 0.25)
 pftest.check(np.array_equal(pftest.point_array(again, "density"), pftest.point_array(start, "density")),
-             "going back restarts to the same state")
+             "going back gives the same state")
 
 # Divergence on request: the projection leaves it at the solver's tolerance.
 smoke.OutputDivergence = 1

@@ -65,7 +65,7 @@ double lowestClearance(const Runoff& runoff, const HeightField& ground)
   double lowest = 1e30;
   if (const auto* sph = runoff.water())
   {
-    const auto& s = sph->state();
+    const auto& s = sph->hostState();
     for (std::size_t i = 0; i < s.size(); ++i)
     {
       lowest = std::min(lowest, s.z[i] - triangulatedHeight(ground, s.x[i], s.y[i]));
@@ -119,7 +119,7 @@ TEST(Runoff, BasinKeepsTheRainVolume)
   EXPECT_NEAR(particles, fallen, 0.01 * fallen);
   // The surface: the top layer in the middle of the pond (the 90th percentile of the heights there,
   // so a drop's splash above it does not count), plus half a spacing.
-  const auto& s = runoff.water()->state();
+  const auto& s = runoff.water()->hostState();
   std::vector<double> heights;
   for (std::size_t i = 0; i < s.size(); ++i)
   {
@@ -157,7 +157,7 @@ TEST(Runoff, DeltaSPHCloudburstAtTheTerrainsEdgeKeepsRunning)
   Runoff runoff(rain, p, ground);
   EXPECT_NO_THROW(runoff.advance(8.0));
   ASSERT_GT(runoff.particleCount(), 250u);
-  const auto& s = runoff.water()->state();
+  const auto& s = runoff.water()->hostState();
   float fastest = 0.0f;
   for (std::size_t i = 0; i < s.size(); ++i)
   {
@@ -195,7 +195,7 @@ TEST(Runoff, WaterRunsDownATiltedPlaneAndNeverUnderIt)
       lowest = std::min(lowest, lowestClearance(runoff, *ground));
       if (runoff.particleCount() > 0)
       {
-        const auto& s = runoff.water()->state();
+        const auto& s = runoff.water()->hostState();
         double mean = 0.0;
         for (float x : s.x)
         {

@@ -1,5 +1,5 @@
 """The Rain filter in pvpython: its three outputs and their arrays, the water it inserts equal to the
-rain that fell, time awareness (forward continues, back restarts to the same state), a surface as
+rain that fell, time awareness (forward continues, back gives the output already made), a surface as
 the terrain, drops and splashes without runoff, and errors that name the property."""
 import numpy as np
 from paraview.simple import *
@@ -62,11 +62,11 @@ for name in ("age", "normal", "slope", "impact_angle", "on_water"):
 age = pftest.point_array(splashes, "age")
 pftest.check(age.min() >= 0 and age.max() <= 0.1 + 1e-9, "splash ages within SplashLifetime")
 
-# Back in time restarts from t = 0; the same time again gives the same water.
+# Back in time: the output already made; the same time again gives the same water.
 first = pftest.points(fetch(rain, 1, 1.0)).copy()
 fetch(rain, 1, 2.0)
 again = pftest.points(fetch(rain, 1, 1.0))
-pftest.check(first.shape == again.shape and np.array_equal(first, again), "going back restarts to the same state")
+pftest.check(first.shape == again.shape and np.array_equal(first, again), "going back gives the same state")
 
 # A surface as the terrain (the terrain source's warped surface), rasterised.
 on_surface = Rain(Terrain=OutputPort(terrain, 1), RainfallRate=2000, DropsPerRealDrop=0.01, ParticleSpacing=0.03,

@@ -3,6 +3,7 @@
 // part out (SPHParameters::pushHighPass).
 #include "parafluid/common/Kernels.h"
 #include "parafluid/common/ParticleLattice.h"
+#include "parafluid/sph/DeltaSPHSolver.h"
 #include "parafluid/sph/SPHParameters.h"
 #include "parafluid/sph/SPHSolver.h"
 

@@ -2,6 +2,7 @@
 #include "parafluid/sph/SPHSolver.h"
 #include "parafluid/common/Kernels.h"
 #include "parafluid/common/ParticleLattice.h"
+#include "parafluid/sph/DeltaSPHSolver.h"
 
 #include <gtest/gtest.h>
 

@@ -2,6 +2,7 @@
 // error; they never hang, crash or hand on NaN.
 #include "parafluid/common/ParticleLattice.h"
 #include "parafluid/common/TriangleBoundary.h"
+#include "parafluid/sph/DeltaSPHSolver.h"
 #include "parafluid/sph/SPHParameters.h"
 #include "parafluid/sph/SPHSolver.h"
 

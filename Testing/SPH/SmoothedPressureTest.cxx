@@ -5,6 +5,7 @@
 // the layer-by-layer alternating pattern a collocated pressure gradient cannot see.
 #include "parafluid/common/Kernels.h"
 #include "parafluid/common/ParticleLattice.h"
+#include "parafluid/sph/DeltaSPHSolver.h"
 #include "parafluid/sph/SPHParameters.h"
 #include "parafluid/sph/SPHSolver.h"
 

@@ -1,5 +1,5 @@
-"""SPH Step is time-aware: forward steps continue from the cached state, going back restarts,
-and both give exactly what a fresh run gives."""
+"""SPH Step is time-aware: forward steps continue from the cached state, an output already made is
+kept and copied, going back to one not made restarts, and all give exactly what a fresh run gives."""
 import numpy as np
 from paraview.simple import *
 import pftest
@@ -21,8 +21,16 @@ pftest.check(steps_taken(sph) == 20, "t2 from t0 took %d steps" % steps_taken(sp
 at5 = pftest.points(pftest.fetch(sph, times[5]))
 pftest.check(steps_taken(sph) == 30, "t5 after t2 should continue (30 steps), took %d" % steps_taken(sph))
 again2 = pftest.points(pftest.fetch(sph, times[2]))
-pftest.check(steps_taken(sph) == 20, "going back must restart from t0")
-pftest.check(np.array_equal(at2, again2), "restarted run differs from the first")
+pftest.check(steps_taken(sph) == 0, "an output already made is copied, not stepped again (took %d steps)" %
+             steps_taken(sph))
+pftest.check(np.array_equal(at2, again2), "the kept output differs from the first")
+# Back to a time not made yet: the run restarts from t0 and gives what a fresh run gives.
+at1 = pftest.points(pftest.fetch(sph, times[1]))
+pftest.check(steps_taken(sph) == 10, "going back to a time not made must restart from t0 (took %d steps)" %
+             steps_taken(sph))
+fresh1 = SPHStep(Input=block, AdaptiveTimeStep=0, TimeStep=2e-4, OutputInterval=0.002, NumberOfOutputs=6)
+pftest.check(np.array_equal(pftest.points(pftest.fetch(fresh1, times[1])), at1), "restarted run differs from a fresh one")
+Delete(fresh1)
 
 fresh = SPHStep(Input=block, AdaptiveTimeStep=0, TimeStep=2e-4, OutputInterval=0.002, NumberOfOutputs=6)
 pftest.check(np.array_equal(pftest.points(pftest.fetch(fresh, times[5])), at5), "cached stepping differs from a fresh run")

@@ -1,7 +1,7 @@
 #include "parafluid/rain/Runoff.h"
 
 #include "parafluid/rain/GroundSurface.h"
-#include "parafluid/sph/SPHSolver.h"
+#include "parafluid/sph/SolverRegistry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -56,13 +56,9 @@ Runoff::Runoff(const RainParameters& rain, const RunoffParameters& runoff, std::
   const auto& z = ground->elevation();
   const auto [lowest, highest] = std::minmax_element(z.begin(), z.end());
   const double top = std::max(rain.height, static_cast<double>(*highest) + 10.0 * d);
-  const bool delta = s.pressureSolver == sph::PressureSolverType::DeltaSPH;
-  s.smoothingLength = static_cast<float>((delta ? sph::kDeltaSPHSupport : 2.0) * d);
-  // δ-SPH's terrain is not a wall in its sums here (SPH Step's δ-SPH over a mesh has it): under
-  // the cloudburst of Runoff.BasinKeepsTheRainVolume δ-SPH with the wall blew up after 11 s at the
-  // default CFL number on one machine and ran the 30 s on another (rounding decides: marginal);
-  // without it, it ran the 30 s on both. DFSPH keeps it.
-  if (delta)
+  const sph::SolverEntry& solver = sph::solverEntry(s.pressureSolver);
+  s.smoothingLength = sph::defaultSmoothingLength(solver, d, 0.0);
+  if (!solver.meshWallInRunoff)
   {
     s.meshWallDensity = false;
   }
@@ -100,11 +96,16 @@ Runoff::Runoff(const RainParameters& rain, const RunoffParameters& runoff, std::
   this->Soak.assign(cells, 0.0);
 }
 
+float RunoffParameters::automaticCFLNumber(sph::PressureSolverType solver)
+{
+  return sph::solverEntry(solver).runoffCFLNumber;
+}
+
 Runoff::~Runoff() = default;
 Runoff::Runoff(Runoff&&) noexcept = default;
 Runoff& Runoff::operator=(Runoff&&) noexcept = default;
 
-const sph::SPHSolver* Runoff::water() const
+const sph::Simulation* Runoff::water() const
 {
   return this->Water.get();
 }
@@ -117,7 +118,7 @@ double Runoff::particleVolume() const
 
 std::size_t Runoff::particleCount() const
 {
-  return this->Water ? this->Water->state().size() : 0;
+  return this->Water ? this->Water->hostState().size() : 0;
 }
 
 double Runoff::waitingVolume() const
@@ -291,7 +292,7 @@ void Runoff::insert(const std::vector<Impact>& impacts)
     ParticleState state;
     state.x = std::move(x), state.y = std::move(y), state.z = std::move(z);
     state.vx = std::move(vx), state.vy = std::move(vy), state.vz = std::move(vz);
-    this->Water = std::make_unique<sph::SPHSolver>(this->Resolved, std::move(state), this->Boundary);
+    this->Water = sph::makeSimulation(this->Resolved, std::move(state), this->Boundary);
     this->WaterTime = this->Time;
   }
   else
@@ -310,7 +311,7 @@ void Runoff::infiltrate(double dt)
   std::vector<std::vector<std::uint32_t>> resting(this->Gathered.size());
   if (this->Water)
   {
-    const ParticleState& s = this->Water->state();
+    const ParticleState& s = this->Water->hostState();
     for (std::size_t i = 0; i < s.size(); ++i)
     {
       if (s.z[i] - triangulatedHeight(*this->Ground, s.x[i], s.y[i]) < 1.5 * d)
@@ -349,7 +350,7 @@ void Runoff::infiltrate(double dt)
   if (removing > 0)
   {
     this->Water->removeParticles(remove);
-    if (this->Water->state().size() == 0)
+    if (this->Water->hostState().size() == 0)
     {
       this->Water.reset(); // all soaked up
     }
@@ -364,7 +365,7 @@ void Runoff::updateWaterLevels()
   {
     return;
   }
-  const ParticleState& s = this->Water->state();
+  const ParticleState& s = this->Water->hostState();
   const auto half = static_cast<float>(0.5 * this->Parameters.particleSpacing);
   for (std::size_t i = 0; i < s.size(); ++i)
   {

@@ -14,8 +14,8 @@
 // been applied so far; the total is clamped to no tension after each solve.
 #include "parafluid/sph/DFSPHSolver.h"
 
-#include "parafluid/sph/SPHSolver.h"
 #include "private/NeighbourCandidates.h"
+#include "private/SimulationParts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,10 +47,10 @@ double dot(const std::vector<float>& a, const std::vector<float>& b, const std::
 }
 } // namespace
 
-int DFSPHSolver::solveDensityByConjugateGradient(SPHSolver& sim, float dt)
+int DFSPHSolver::solveDensityByConjugateGradient(SimulationParts& sim, float dt)
 {
-  ParticleState& s = sim.State;
-  const SPHParameters& p = sim.Parameters;
+  ParticleState& s = sim.state();
+  const SPHParameters& p = sim.parameters();
   const auto n = static_cast<std::int64_t>(s.size());
   const int threads = detail::threadCount(p);
   const float rho0 = p.restDensity;
@@ -82,7 +82,7 @@ int DFSPHSolver::solveDensityByConjugateGradient(SPHSolver& sim, float dt)
   return iterations;
 }
 
-void DFSPHSolver::removeEnclosedMean(SPHSolver& sim, std::vector<float>& error) const
+void DFSPHSolver::removeEnclosedMean(SimulationParts& sim, std::vector<float>& error) const
 {
   // Fluid with no free surface (walls and periodic sides all round) cannot change its volume: the
   // mean of the density error over the particles solved for is out of any pressure's reach (the
@@ -90,7 +90,7 @@ void DFSPHSolver::removeEnclosedMean(SPHSolver& sim, std::vector<float>& error) 
   // conjugate gradient, asked for it, builds a pressure that grows step after step (a periodic
   // channel's reached 20 Pa in 0.17 s against Jacobi's 8 and wrecked the Poiseuille profile).
   const auto n = static_cast<std::int64_t>(error.size());
-  const int threads = detail::threadCount(sim.Parameters);
+  const int threads = detail::threadCount(sim.parameters());
   std::int64_t surface = 0, active = 0;
   double sum = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : surface, active, sum) num_threads(threads)
@@ -115,10 +115,10 @@ void DFSPHSolver::removeEnclosedMean(SPHSolver& sim, std::vector<float>& error) 
   }
 }
 
-void DFSPHSolver::densityChangeOperator(SPHSolver& sim, float dt, const std::vector<float>& x,
+void DFSPHSolver::densityChangeOperator(SimulationParts& sim, float dt, const std::vector<float>& x,
                                         const std::vector<char>& active, std::vector<float>& out)
 {
-  ParticleState& s = sim.State;
+  ParticleState& s = sim.state();
   const std::size_t n = s.size();
   // The impulse alone, from zero velocities: the real ones wait aside.
   std::vector<float>* velocity[3] = { &s.vx, &s.vy, &s.vz };
@@ -136,17 +136,17 @@ void DFSPHSolver::densityChangeOperator(SPHSolver& sim, float dt, const std::vec
   }
   out.resize(n);
   const auto count = static_cast<std::int64_t>(n);
-#pragma omp parallel for schedule(static) num_threads(detail::threadCount(sim.Parameters))
+#pragma omp parallel for schedule(static) num_threads(detail::threadCount(sim.parameters()))
   for (std::int64_t i = 0; i < count; ++i)
   {
     out[i] = active[i] ? -dt * this->DensityRate[i] : 0.0f;
   }
 }
 
-int DFSPHSolver::solveConjugateGradient(SPHSolver& sim, float dt, int budget)
+int DFSPHSolver::solveConjugateGradient(SimulationParts& sim, float dt, int budget)
 {
-  ParticleState& s = sim.State;
-  const SPHParameters& p = sim.Parameters;
+  ParticleState& s = sim.state();
+  const SPHParameters& p = sim.parameters();
   const std::size_t n = s.size();
   const auto count = static_cast<std::int64_t>(n);
   const int threads = detail::threadCount(p);

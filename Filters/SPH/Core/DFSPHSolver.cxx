@@ -8,7 +8,7 @@
 // use the cubic spline, so what the solver predicts is what the next density pass measures.
 #include "parafluid/sph/DFSPHSolver.h"
 
-#include "parafluid/sph/SPHSolver.h"
+#include "private/SimulationParts.h"
 
 #include "parafluid/common/Kernels.h"
 #include "parafluid/sph/WallMirrors.h"
@@ -69,23 +69,51 @@ void withImages(const float position[3], const SPHParameters& p, F&& f)
 }
 } // namespace
 
-void DFSPHSolver::start(SPHSolver& sim)
+SolverEntry DFSPHSolver::registryEntry()
 {
-  const SPHParameters& p = sim.Parameters;
-  const std::size_t n = sim.State.size();
-  this->GradientCorrection = latticeGradientCorrection(sim.ParticleSpacing, p.smoothingLength, p.densityKernel());
+  SolverEntry e{};
+  e.type = PressureSolverType::DFSPH;
+  e.key = "DFSPH";
+  e.label = "DFSPH";
+  e.propertyValue = 1;
+  e.kernel = DensityKernel::CubicSpline;
+  e.defaultSupport = 2.0f;
+  // Its Jacobi solves' diagonal factor is tight enough at 2 spacings; wider kernels overshoot and
+  // diverge within a step (docs/design-notes.md).
+  e.maximumSupport = 2.25f;
+  e.viscousOperator = ViscousOperator::Monaghan;
+  e.separateExtraViscosity = true;
+  e.meshWallInSums = true;
+  e.meshWallInRunoff = true;
+  e.colourFieldSurfaceTension = true;
+  e.implicitViscosity = true;
+  e.runoffCFLNumber = 0.2f; // every seed of the basin's cloudburst held its pond at it
+  e.create = [] { return std::unique_ptr<PressureSolver>(std::make_unique<DFSPHSolver>()); };
+  e.stabilityAdvice = [](bool adaptive) -> std::string
+  {
+    return adaptive ? "lower CFLNumber or MaxTimeStep, or raise MaxPressureIterations"
+                    : "lower TimeStep or turn on AdaptiveTimeStep, or raise MaxPressureIterations";
+  };
+  return e;
+}
+
+void DFSPHSolver::start(SimulationParts& sim)
+{
+  const SPHParameters& p = sim.parameters();
+  const std::size_t n = sim.state().size();
+  this->GradientCorrection = latticeGradientCorrection(sim.particleSpacing(), p.smoothingLength, p.densityKernel());
   this->DensityStiffness.assign(n, 0.0f);
   this->DivergenceStiffness.assign(n, 0.0f);
   this->computeDensityAndFactor(sim);
   sim.computeAccelerations(false);
 }
 
-void DFSPHSolver::permute(SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
+void DFSPHSolver::permute(SimulationParts& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
                           int threads)
 {
   // DFSPH sorts in the middle of a step: the accelerations summed so far and the warm starts move
   // with their particles.
-  ParticleState& s = sim.State;
+  ParticleState& s = sim.state();
   for (auto* a : { &s.ax, &s.ay, &s.az, &this->DensityStiffness, &this->DivergenceStiffness })
   {
     if (a->size() == s.size())
@@ -103,7 +131,7 @@ void DFSPHSolver::resize(std::size_t n)
   this->DivergenceStiffness.resize(n, 0.0f);
 }
 
-void DFSPHSolver::restart(SPHSolver& sim)
+void DFSPHSolver::restart(SimulationParts& sim)
 {
   this->computeDensityAndFactor(sim);
   sim.computeAccelerations(false);
@@ -123,17 +151,17 @@ std::size_t DFSPHSolver::bytes() const
   return total;
 }
 
-void DFSPHSolver::computeDensityAndFactor(SPHSolver& sim)
+void DFSPHSolver::computeDensityAndFactor(SimulationParts& sim)
 {
-  ParticleState& s = sim.State;
-  const SPHParameters& p = sim.Parameters;
+  ParticleState& s = sim.state();
+  const SPHParameters& p = sim.parameters();
   const std::size_t n = s.size();
   this->Factor.resize(n);
   this->NeighbourCount.resize(n);
   const CubicPair w(p.smoothingLength);
   const float m = p.particleMass;
   forEachParticleByCell(
-    sim.Grid, s, p.smoothingLength, threadCount(p), {},
+    sim.grid(), s, p.smoothingLength, threadCount(p), {},
     [&](CandidateBuffer& c, std::uint32_t i)
     {
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
@@ -169,7 +197,7 @@ void DFSPHSolver::computeDensityAndFactor(SPHSolver& sim)
                  });
       detail::MeshWallTable::Weight wall;
       const float* normal = nullptr;
-      if (sim.Wall && sim.Wall->of(i, wall, normal))
+      if (sim.wall() && sim.wall()->of(i, wall, normal))
       {
         // The lattice beyond the mesh: density and the gradient of the particle's own move (it
         // stays put, so it has no term of its own in the sum of squares: Bender & Koschier 2017).
@@ -190,15 +218,15 @@ void DFSPHSolver::computeDensityAndFactor(SPHSolver& sim)
     });
 }
 
-void DFSPHSolver::computeDensityRate(SPHSolver& sim)
+void DFSPHSolver::computeDensityRate(SimulationParts& sim)
 {
-  ParticleState& s = sim.State;
-  const SPHParameters& p = sim.Parameters;
+  ParticleState& s = sim.state();
+  const SPHParameters& p = sim.parameters();
   this->DensityRate.resize(s.size());
   const CubicPair w(p.smoothingLength);
   const float m = p.particleMass;
   forEachParticleByCell(
-    sim.Grid, s, p.smoothingLength, threadCount(p), { s.vx.data(), s.vy.data(), s.vz.data() },
+    sim.grid(), s, p.smoothingLength, threadCount(p), { s.vx.data(), s.vy.data(), s.vz.data() },
     [&](CandidateBuffer& c, std::uint32_t i)
     {
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
@@ -227,7 +255,7 @@ void DFSPHSolver::computeDensityRate(SPHSolver& sim)
                  });
       detail::MeshWallTable::Weight wall;
       const float* normal = nullptr;
-      if (sim.Wall && sim.Wall->of(i, wall, normal))
+      if (sim.wall() && sim.wall()->of(i, wall, normal))
       {
         // The wall is at rest: v_i . sum_b grad W_ib.
         rate += wall.slope * (velocity[0] * normal[0] + velocity[1] * normal[1] + velocity[2] * normal[2]);
@@ -236,16 +264,16 @@ void DFSPHSolver::computeDensityRate(SPHSolver& sim)
     });
 }
 
-void DFSPHSolver::applyPressureImpulse(SPHSolver& sim, float dt, bool record)
+void DFSPHSolver::applyPressureImpulse(SimulationParts& sim, float dt, bool record)
 {
-  ParticleState& s = sim.State;
-  const SPHParameters& p = sim.Parameters;
+  ParticleState& s = sim.state();
+  const SPHParameters& p = sim.parameters();
   const CubicPair w(p.smoothingLength);
   // The pressure force uses the gradient corrected to be exact for a linear field on the rest
   // lattice; the prediction (density rate) keeps the plain one, which matches the measured density.
   const float m = p.particleMass * this->GradientCorrection;
   // Velocities change in place: the pass reads the stiffnesses only, never the velocities.
-  forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p), { this->Stiffness.data() },
+  forEachParticleByCell(sim.grid(), s, p.smoothingLength, threadCount(p), { this->Stiffness.data() },
                         [&](CandidateBuffer& c, std::uint32_t i)
                         {
                           const float position[3] = { s.x[i], s.y[i], s.z[i] };
@@ -276,7 +304,7 @@ void DFSPHSolver::applyPressureImpulse(SPHSolver& sim, float dt, bool record)
                                      });
                           detail::MeshWallTable::Weight wall;
                           const float* normal = nullptr;
-                          if (sim.Wall && sim.Wall->of(i, wall, normal))
+                          if (sim.wall() && sim.wall()->of(i, wall, normal))
                           {
                             // The wall's particles have no pressure of their own: k_i alone.
                             for (int a = 0; a < 3; ++a)
@@ -298,10 +326,10 @@ void DFSPHSolver::applyPressureImpulse(SPHSolver& sim, float dt, bool record)
                         });
 }
 
-void DFSPHSolver::warmStart(SPHSolver& sim, std::vector<float>& accumulated, float dt, float keep)
+void DFSPHSolver::warmStart(SimulationParts& sim, std::vector<float>& accumulated, float dt, float keep)
 {
   const auto n = static_cast<std::int64_t>(accumulated.size());
-#pragma omp parallel for schedule(static) num_threads(threadCount(sim.Parameters))
+#pragma omp parallel for schedule(static) num_threads(threadCount(sim.parameters()))
   for (std::int64_t i = 0; i < n; ++i)
   {
     accumulated[i] *= keep;
@@ -310,10 +338,10 @@ void DFSPHSolver::warmStart(SPHSolver& sim, std::vector<float>& accumulated, flo
   this->applyPressureImpulse(sim, dt);
 }
 
-int DFSPHSolver::solveDensity(SPHSolver& sim, float dt)
+int DFSPHSolver::solveDensity(SimulationParts& sim, float dt)
 {
-  ParticleState& s = sim.State;
-  const SPHParameters& p = sim.Parameters;
+  ParticleState& s = sim.state();
+  const SPHParameters& p = sim.parameters();
   const auto n = static_cast<std::int64_t>(s.size());
   const int threads = threadCount(p);
   const float rho0 = p.restDensity;
@@ -357,10 +385,10 @@ int DFSPHSolver::solveDensity(SPHSolver& sim, float dt)
   return iterations;
 }
 
-int DFSPHSolver::solveDivergence(SPHSolver& sim, float dt)
+int DFSPHSolver::solveDivergence(SimulationParts& sim, float dt)
 {
-  ParticleState& s = sim.State;
-  const SPHParameters& p = sim.Parameters;
+  ParticleState& s = sim.state();
+  const SPHParameters& p = sim.parameters();
   const auto n = static_cast<std::int64_t>(s.size());
   const int threads = threadCount(p);
   const float rho0 = p.restDensity;
@@ -393,30 +421,30 @@ int DFSPHSolver::solveDivergence(SPHSolver& sim, float dt)
   return iterations;
 }
 
-double DFSPHSolver::step(SPHSolver& sim, double remaining)
+double DFSPHSolver::step(SimulationParts& sim, double remaining)
 {
-  ParticleState& s = sim.State;
+  ParticleState& s = sim.state();
   // Non-pressure accelerations at the current state decide the step and predict the velocities.
   sim.computeAccelerations(false);
   const double dt = sim.chooseTimeStep(remaining);
   const auto h = static_cast<float>(dt);
   sim.kick(h);
-  sim.Last.viscosityIterations = this->solveViscosity(sim, h);
+  sim.statistics().viscosityIterations = this->solveViscosity(sim, h);
   sim.applyWallFriction(h);
-  sim.Last.densityIterations = this->solveDensity(sim, h);
+  sim.statistics().densityIterations = this->solveDensity(sim, h);
   sim.drift(h);
   sim.sortByCell();
   this->computeDensityAndFactor(sim);
-  sim.Last.divergenceIterations = this->solveDivergence(sim, h);
+  sim.statistics().divergenceIterations = this->solveDivergence(sim, h);
   const auto n = static_cast<std::int64_t>(s.size());
-#pragma omp parallel for schedule(static) num_threads(threadCount(sim.Parameters))
+#pragma omp parallel for schedule(static) num_threads(threadCount(sim.parameters()))
   for (std::int64_t i = 0; i < n; ++i)
   {
     // Both solves' impulses over the step amount to the pressure p_i = rho_i^2 k_i.
     s.pressure[i] = s.density[i] * s.density[i] * (this->DensityStiffness[i] + this->DivergenceStiffness[i]);
   }
-  sim.Last.timeStep = dt;
-  sim.Time += dt;
+  sim.statistics().timeStep = dt;
+  sim.advanceTime(dt);
   return dt;
 }
 } // namespace parafluid::sph

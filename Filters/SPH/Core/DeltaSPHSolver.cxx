@@ -3,11 +3,11 @@
 
 #include "parafluid/common/Kernels.h"
 #include "parafluid/common/SimdDispatch.h"
-#include "parafluid/sph/SPHSolver.h"
 #include "parafluid/sph/WallMirrors.h"
 #include "private/GradientCorrection.h"
 #include "private/MeshWall.h"
 #include "private/NeighbourCandidates.h"
+#include "private/SimulationParts.h"
 #include "private/WallImages.h"
 
 #include <algorithm>
@@ -635,19 +635,49 @@ double DeltaSPHSolver::automaticSoundSpeed(const SPHParameters& p, const Particl
   return 10.0 * std::max(speed, 0.1); // at least 1 m/s, for a scene at rest without gravity
 }
 
-void DeltaSPHSolver::start(SPHSolver& sim)
+SolverEntry DeltaSPHSolver::registryEntry()
 {
-  ParticleState& s = sim.State;
-  this->SoundSpeed = automaticSoundSpeed(sim.Parameters, s);
+  SolverEntry e{};
+  e.type = PressureSolverType::DeltaSPH;
+  e.key = "DeltaSPH";
+  e.label = "δ-SPH";
+  e.propertyValue = 2;
+  e.kernel = DensityKernel::WendlandC2;
+  e.defaultSupport = kDeltaSPHSupport;
+  e.minimumSupport = kDeltaSPHSupport; // an input's narrower smoothing_length runs its waves fast
+  e.viscousOperator = ViscousOperator::Morris;
+  e.explicitLaminarViscosity = true;
+  e.meshWallInSums = true;
+  // Under the cloudburst of Runoff.BasinKeepsTheRainVolume, with the terrain in its sums it ran or
+  // blew up by rounding; without it, it ran on every machine tried.
+  e.meshWallInRunoff = false;
+  e.particleShifting = true;
+  e.holdsStrongCohesion = true;
+  e.runoffCFLNumber = 0.1f; // at 0.2 its integrated density drifted up under a cloudburst
+  e.create = [] { return std::unique_ptr<PressureSolver>(std::make_unique<DeltaSPHSolver>()); };
+  e.stabilityAdvice = [](bool adaptive) -> std::string
+  {
+    return adaptive ? "lower CFLNumber or MaxTimeStep, or raise SoundSpeed (a stiffer, less compressible "
+                      "fluid) or ArtificialViscosity"
+                    : "lower TimeStep or turn on AdaptiveTimeStep (the step must stay below the CFL limit of "
+                      "the speed of sound SoundSpeed)";
+  };
+  return e;
+}
+
+void DeltaSPHSolver::start(SimulationParts& sim)
+{
+  ParticleState& s = sim.state();
+  this->SoundSpeed = automaticSoundSpeed(sim.parameters(), s);
   // The slow part of the density's departure follows it over the fluid's free-fall time over its
   // own height: ten sqrt(2) times the time sound crosses that height at the automatic c0, and 3.5
   // times the slowest acoustic period (4 H / c0), so acoustic noise stays in the fast part; a
   // departure held longer than that (a truncated kernel's at a free surface at rest) counts as slow.
   // Without gravity nothing holds the surface off hydrostatic, and the whole departure diffuses.
-  const double g = gravityMagnitude(sim.Parameters);
-  this->SlowDepartureTime = g > 0.0 ? std::sqrt(fluidHeight(sim.Parameters, s) / g) : 0.0;
+  const double g = gravityMagnitude(sim.parameters());
+  this->SlowDepartureTime = g > 0.0 ? std::sqrt(fluidHeight(sim.parameters(), s) / g) : 0.0;
   this->PressureCorrection =
-    latticeGradientCorrection(sim.ParticleSpacing, sim.Parameters.smoothingLength, DensityKernel::WendlandC2);
+    latticeGradientCorrection(sim.particleSpacing(), sim.parameters().smoothingLength, DensityKernel::WendlandC2);
   // Density is state here: a given one (a prepared initial condition) is kept; otherwise the
   // fluid starts in hydrostatic equilibrium, so a resting column does not ring acoustically.
   const bool given = !s.density.empty() && std::all_of(s.density.begin(), s.density.end(),
@@ -660,21 +690,21 @@ void DeltaSPHSolver::start(SPHSolver& sim)
   this->startSlowDeparture(sim);
   // The wall's sum where each particle starts: its density counts from there.
   this->WallSum.assign(s.size(), 0.0f);
-  if (sim.Wall)
+  if (sim.wall())
   {
     for (std::size_t i = 0; i < s.size(); ++i)
     {
-      this->WallSum[i] = sim.Wall->table.at(sim.Wall->contacts.distance[i]).sum;
+      this->WallSum[i] = sim.wall()->table.at(sim.wall()->contacts.distance[i]).sum;
     }
   }
   this->updatePressure(sim);
   this->computeAccelerations(sim);
 }
 
-void DeltaSPHSolver::startHydrostatic(SPHSolver& sim)
+void DeltaSPHSolver::startHydrostatic(SimulationParts& sim)
 {
-  ParticleState& s = sim.State;
-  const SPHParameters& p = sim.Parameters;
+  ParticleState& s = sim.state();
+  const SPHParameters& p = sim.parameters();
   std::fill(s.density.begin(), s.density.end(), p.restDensity);
   // Gravity along one axis only (the usual case); otherwise rest density, which settles acoustically.
   int down = -1;
@@ -695,7 +725,7 @@ void DeltaSPHSolver::startHydrostatic(SPHSolver& sim)
   const int b = (down + 1) % 3, c = (down + 2) % 3;
   const float* position[3] = { s.x.data(), s.y.data(), s.z.data() };
   const float sign = p.gravity[down] < 0.0f ? 1.0f : -1.0f; // height grows against gravity
-  const float d = sim.ParticleSpacing;
+  const float d = sim.particleSpacing();
   std::unordered_map<std::int64_t, float> top;
   auto key = [&](std::size_t i)
   {
@@ -721,11 +751,11 @@ void DeltaSPHSolver::startHydrostatic(SPHSolver& sim)
   }
 }
 
-void DeltaSPHSolver::permute(SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
+void DeltaSPHSolver::permute(SimulationParts& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
                              int threads)
 {
   // Density is state here (it is integrated, not summed), so it moves with its particle.
-  ParticleState& s = sim.State;
+  ParticleState& s = sim.state();
   for (auto* a : { &s.density, &this->DensityRate, &this->WallSum, &this->Fullness, &this->SlowDeparture })
   {
     if (a->size() == s.size())
@@ -736,14 +766,14 @@ void DeltaSPHSolver::permute(SPHSolver& sim, const std::vector<std::uint32_t>& o
   this->CorrectionFresh = false; // summed again where the particles now are
 }
 
-void DeltaSPHSolver::updatePressure(SPHSolver& sim)
+void DeltaSPHSolver::updatePressure(SimulationParts& sim)
 {
-  ParticleState& s = sim.State;
-  const float rho0 = sim.Parameters.restDensity;
+  ParticleState& s = sim.state();
+  const float rho0 = sim.parameters().restDensity;
   const auto b = static_cast<float>(this->SoundSpeed * this->SoundSpeed * rho0 / kGamma);
   const float inverseRho0 = 1.0f / rho0;
   const auto n = static_cast<std::int64_t>(s.size());
-#pragma omp parallel for simd schedule(static) num_threads(threadCount(sim.Parameters))
+#pragma omp parallel for simd schedule(static) num_threads(threadCount(sim.parameters()))
   for (std::int64_t i = 0; i < n; ++i)
   {
     const float ratio = s.density[i] * inverseRho0;
@@ -784,10 +814,10 @@ Constants constants(const SPHParameters& p, double soundSpeed, float spacing, fl
 }
 } // namespace
 
-void DeltaSPHSolver::computeAccelerations(SPHSolver& sim)
+void DeltaSPHSolver::computeAccelerations(SimulationParts& sim)
 {
-  const Constants k =
-    constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing, sim.LaplacianCorrection, this->PressureCorrection);
+  const Constants k = constants(sim.parameters(), this->SoundSpeed, sim.particleSpacing(), sim.laplacianCorrection(),
+                                this->PressureCorrection);
   if (!this->CorrectionFresh)
   {
     // At the start (the step sums these with the density rates). FullPush is summed and gathered
@@ -795,33 +825,33 @@ void DeltaSPHSolver::computeAccelerations(SPHSolver& sim)
     this->sumDensityRates(sim);
   }
   const float* correction = k.correctGradient ? this->Correction.data() : nullptr;
-  if (sim.Parameters.kinematicViscosity > 0.0f || sim.Parameters.viscosity > 0.0f)
+  if (sim.parameters().kinematicViscosity > 0.0f || sim.parameters().viscosity > 0.0f)
   {
-    forcePass<true>(sim.Grid, sim.State, sim.Parameters, k, sim.Wall.get(), correction, this->FullPush.data(),
+    forcePass<true>(sim.grid(), sim.state(), sim.parameters(), k, sim.wall(), correction, this->FullPush.data(),
                     this->Interior.data());
   }
   else
   {
-    forcePass<false>(sim.Grid, sim.State, sim.Parameters, k, sim.Wall.get(), correction, this->FullPush.data(),
+    forcePass<false>(sim.grid(), sim.state(), sim.parameters(), k, sim.wall(), correction, this->FullPush.data(),
                      this->Interior.data());
   }
   this->CorrectionFresh = false;
   sim.addSurfaceTension();
 }
 
-void DeltaSPHSolver::sumDensityRates(SPHSolver& sim)
+void DeltaSPHSolver::sumDensityRates(SimulationParts& sim)
 {
-  ParticleState& s = sim.State;
-  const SPHParameters& p = sim.Parameters;
-  const Constants k =
-    constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing, sim.LaplacianCorrection, this->PressureCorrection);
+  ParticleState& s = sim.state();
+  const SPHParameters& p = sim.parameters();
+  const Constants k = constants(sim.parameters(), this->SoundSpeed, sim.particleSpacing(), sim.laplacianCorrection(),
+                                this->PressureCorrection);
   this->DensityRate.resize(s.size());
   this->Correction.resize(k.correctGradient ? 6 * s.size() : 0);
   this->NextFullness.resize(s.size());
   this->FullPush.resize(3 * s.size());
   this->Interior.resize(s.size());
   forEachParticleByCell(
-    sim.Grid, s, p.smoothingLength, threadCount(p),
+    sim.grid(), s, p.smoothingLength, threadCount(p),
     { s.vx.data(), s.vy.data(), s.vz.data(), s.density.data(), this->Fullness.data(), this->SlowDeparture.data() },
     [&](CandidateBuffer& c, std::uint32_t i)
     {
@@ -866,10 +896,10 @@ void DeltaSPHSolver::sumDensityRates(SPHSolver& sim)
   this->CorrectionFresh = true;
 }
 
-void DeltaSPHSolver::advanceDensity(SPHSolver& sim, float dt)
+void DeltaSPHSolver::advanceDensity(SimulationParts& sim, float dt)
 {
-  ParticleState& s = sim.State;
-  const SPHParameters& p = sim.Parameters;
+  ParticleState& s = sim.state();
+  const SPHParameters& p = sim.parameters();
   this->sumDensityRates(sim);
   // Written after the pass: the pass reads every neighbour's density of this step.
   const auto n = static_cast<std::int64_t>(s.size());
@@ -880,14 +910,14 @@ void DeltaSPHSolver::advanceDensity(SPHSolver& sim, float dt)
   {
     rho[i] += dt * rate[i];
   }
-  if (sim.Wall)
+  if (sim.wall())
   {
     // The mesh's wall moves density with the particle's position, not its velocity: the change of
     // the wall's sum since the last step. Its lattice is the particle's mirror image (moving with
     // the mirrored velocity, p_b = p_i), hence 2 m. Position, not rate: a particle the mesh bounces
     // back gets its compression back, which a rate integrated over the bounce does not give.
     const float twiceMass = 2.0f * p.particleMass;
-    const detail::MeshWall& wall = *sim.Wall;
+    const detail::MeshWall& wall = *sim.wall();
 #pragma omp parallel for schedule(static) num_threads(threadCount(p))
     for (std::int64_t i = 0; i < n; ++i)
     {
@@ -907,19 +937,19 @@ void DeltaSPHSolver::resize(std::size_t n)
   this->SlowDeparture.resize(n, std::numeric_limits<float>::quiet_NaN());
 }
 
-void DeltaSPHSolver::startSlowDeparture(SPHSolver& sim)
+void DeltaSPHSolver::startSlowDeparture(SimulationParts& sim)
 {
   // Kept across a restart (particles added: see resize); otherwise each particle's slow departure
   // starts at its departure, so the fluid as given counts as settled.
-  const ParticleState& s = sim.State;
+  const ParticleState& s = sim.state();
   const std::size_t n = s.size();
   if (this->Fullness.size() != n || this->SlowDeparture.size() != n)
   {
     this->Fullness.assign(n, 1.0f);
     this->SlowDeparture.assign(n, std::numeric_limits<float>::quiet_NaN());
   }
-  const Constants k =
-    constants(sim.Parameters, this->SoundSpeed, sim.ParticleSpacing, sim.LaplacianCorrection, this->PressureCorrection);
+  const Constants k = constants(sim.parameters(), this->SoundSpeed, sim.particleSpacing(), sim.laplacianCorrection(),
+                                this->PressureCorrection);
   for (std::size_t i = 0; i < n; ++i)
   {
     if (!std::isfinite(this->SlowDeparture[i]) || !(this->SlowDepartureTime > 0.0))
@@ -929,17 +959,17 @@ void DeltaSPHSolver::startSlowDeparture(SPHSolver& sim)
   }
 }
 
-void DeltaSPHSolver::followSlowDeparture(SPHSolver& sim, float dt)
+void DeltaSPHSolver::followSlowDeparture(SimulationParts& sim, float dt)
 {
-  const SPHParameters& p = sim.Parameters;
+  const SPHParameters& p = sim.parameters();
   if (!(p.densityDiffusion > 0.0f) || !(this->SlowDepartureTime > 0.0))
   {
     return; // nothing diffuses, or (no gravity) the slow part stays 0
   }
   const Constants k =
-    constants(p, this->SoundSpeed, sim.ParticleSpacing, sim.LaplacianCorrection, this->PressureCorrection);
+    constants(p, this->SoundSpeed, sim.particleSpacing(), sim.laplacianCorrection(), this->PressureCorrection);
   const float follow = static_cast<float>(std::min(1.0, dt / this->SlowDepartureTime));
-  const ParticleState& s = sim.State;
+  const ParticleState& s = sim.state();
   const auto n = static_cast<std::int64_t>(s.size());
   float* slow = this->SlowDeparture.data();
 #pragma omp parallel for schedule(static) num_threads(threadCount(p))
@@ -949,7 +979,7 @@ void DeltaSPHSolver::followSlowDeparture(SPHSolver& sim, float dt)
   }
 }
 
-void DeltaSPHSolver::shiftParticles(SPHSolver& sim, float dt)
+void DeltaSPHSolver::shiftParticles(SimulationParts& sim, float dt)
 {
   // Particle shifting (Lind et al. 2012) with the coefficient of the δ+-SPH scheme (Sun, Colagrossi,
   // Marrone & Zhang 2017): each interior particle moves down the gradient of particle concentration,
@@ -963,14 +993,14 @@ void DeltaSPHSolver::shiftParticles(SPHSolver& sim, float dt)
   // t U / L = 0.15 and lost 61 % more energy than the analytic decay at 25 particles across.)
   // Free-surface particles (kernel sum below 0.9, their neighbourhood cut) are not shifted: their
   // concentration gradient points out of the fluid. Fluid at rest (U_max = 0) is not shifted.
-  ParticleState& s = sim.State;
-  const SPHParameters& p = sim.Parameters;
+  ParticleState& s = sim.state();
+  const SPHParameters& p = sim.parameters();
   const std::size_t n = s.size();
   this->Shift.assign(3 * n, 0.0f);
   const WendlandC2Kernel w(p.smoothingLength);
   const float volume = p.particleMass / p.restDensity;
-  const float inverseWSpacing = 1.0f / w.value(std::min(sim.ParticleSpacing, 0.99f * p.smoothingLength));
-  const float limit = 0.2f * sim.ParticleSpacing;
+  const float inverseWSpacing = 1.0f / w.value(std::min(sim.particleSpacing(), 0.99f * p.smoothingLength));
+  const float limit = 0.2f * sim.particleSpacing();
   const auto count = static_cast<std::int64_t>(n);
   const auto fastest = static_cast<float>(sim.largestLength(s.vx, s.vy, s.vz));
   if (fastest == 0.0f)
@@ -979,7 +1009,7 @@ void DeltaSPHSolver::shiftParticles(SPHSolver& sim, float dt)
   }
   const float diffusion = 2.0f * p.smoothingLength * fastest * dt * volume;
   forEachParticleByCell(
-    sim.Grid, s, p.smoothingLength, threadCount(p), {},
+    sim.grid(), s, p.smoothingLength, threadCount(p), {},
     [&](CandidateBuffer& c, std::uint32_t i)
     {
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
@@ -1024,14 +1054,14 @@ void DeltaSPHSolver::shiftParticles(SPHSolver& sim, float dt)
       }
       else
       {
-        x = std::clamp(x, b[2 * a] + 0.01f * sim.ParticleSpacing, b[2 * a + 1] - 0.01f * sim.ParticleSpacing);
+        x = std::clamp(x, b[2 * a] + 0.01f * sim.particleSpacing(), b[2 * a + 1] - 0.01f * sim.particleSpacing());
       }
       *position[a] = x;
     }
   }
 }
 
-double DeltaSPHSolver::step(SPHSolver& sim, double remaining)
+double DeltaSPHSolver::step(SimulationParts& sim, double remaining)
 {
   // Störmer-Verlet with density as a position-like variable: velocity at the half step moves the
   // particles and then changes the density, and the new density gives the forces of the second
@@ -1042,7 +1072,7 @@ double DeltaSPHSolver::step(SPHSolver& sim, double remaining)
   sim.kick(0.5f * h);
   sim.drift(h);
   sim.sortByCell();
-  if (sim.Parameters.particleShifting)
+  if (sim.parameters().particleShifting)
   {
     this->shiftParticles(sim, h);
     // The shift moved particles by up to 0.2 spacings, some out of their grid cells: sorted again,
@@ -1055,8 +1085,8 @@ double DeltaSPHSolver::step(SPHSolver& sim, double remaining)
   this->computeAccelerations(sim);
   sim.kick(0.5f * h);
   sim.applyWallFriction(h);
-  sim.Last.timeStep = dt;
-  sim.Time += dt;
+  sim.statistics().timeStep = dt;
+  sim.advanceTime(dt);
   return dt;
 }
 } // namespace parafluid::sph

@@ -14,9 +14,9 @@
 #include "parafluid/sph/DFSPHSolver.h"
 
 #include "parafluid/common/Kernels.h"
-#include "parafluid/sph/SPHSolver.h"
 #include "parafluid/sph/WallMirrors.h"
 #include "private/NeighbourCandidates.h"
+#include "private/SimulationParts.h"
 #include "private/WallImages.h"
 
 #include <Eigen/Core>
@@ -296,10 +296,10 @@ struct generic_product_impl<parafluid::sph::detail::ViscousMatrix, Rhs, SparseSh
 
 namespace parafluid::sph
 {
-int DFSPHSolver::solveViscosity(SPHSolver& sim, float dt)
+int DFSPHSolver::solveViscosity(SimulationParts& sim, float dt)
 {
-  const SPHParameters& p = sim.Parameters;
-  ParticleState& s = sim.State;
+  const SPHParameters& p = sim.parameters();
+  ParticleState& s = sim.state();
   const std::size_t n = s.size();
   if (!(p.kinematicViscosity > 0.0f) || n == 0)
   {
@@ -307,12 +307,12 @@ int DFSPHSolver::solveViscosity(SPHSolver& sim, float dt)
   }
   const int threads = detail::threadCount(p);
   detail::ViscousOperator op;
-  op.grid = &sim.Grid;
+  op.grid = &sim.grid();
   op.state = &s;
   op.p = &p;
   op.dt = dt;
   op.n = n;
-  op.laplacianCorrection = sim.LaplacianCorrection;
+  op.laplacianCorrection = sim.laplacianCorrection();
   op.volume.resize(n);
   for (std::size_t i = 0; i < n; ++i)
   {

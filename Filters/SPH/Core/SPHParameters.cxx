@@ -1,9 +1,11 @@
 #include "parafluid/sph/SPHParameters.h"
 
 #include "parafluid/common/Kernels.h"
+#include "parafluid/sph/SolverRegistry.h"
 #include "private/AnyKernel.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace parafluid::sph
@@ -40,8 +42,22 @@ void forEachLatticeNeighbour(float spacing, float smoothingLength, F&& f)
 } // namespace
 using detail::AnyKernel;
 
+DensityKernel SPHParameters::densityKernel() const
+{
+  return solverEntry(pressureSolver).kernel;
+}
+
 std::string SPHParameters::validate() const
 {
+  const SolverEntry* solver = nullptr;
+  for (const SolverEntry& entry : solverRegistry())
+  {
+    solver = entry.type == pressureSolver ? &entry : solver;
+  }
+  if (!solver)
+  {
+    return "PressureSolver " + std::to_string(static_cast<int>(pressureSolver)) + " is not a solver this build has";
+  }
   if (!positiveFinite(smoothingLength))
   {
     return "SmoothingLength must be a positive number of metres, got " + std::to_string(smoothingLength);
@@ -83,10 +99,10 @@ std::string SPHParameters::validate() const
     return "SurfaceTension must be zero or positive (N/m), got " + std::to_string(surfaceTension);
   }
   if (surfaceTension > 0.0f && surfaceTensionModel == SurfaceTensionModel::ColourField &&
-      pressureSolver == PressureSolverType::DeltaSPH)
+      !solver->colourFieldSurfaceTension)
   {
-    return "SurfaceTensionModel: the colour field is part of the WCSPH and DFSPH force pass; with δ-SPH choose "
-           "Akinci 2013";
+    return std::string("SurfaceTensionModel: the colour field is not part of ") + solver->label +
+           "'s force pass; choose Akinci 2013";
   }
   if (!std::isfinite(surfaceThreshold) || surfaceThreshold < 0.0f)
   {
@@ -163,17 +179,17 @@ std::string SPHParameters::validate() const
   {
     return "threads must be 0 (default) or positive";
   }
-  if (pressureSolver == PressureSolverType::DFSPH)
+  if (solver->maximumSupport > 0.0f)
   {
-    // The Jacobi pressure solves use a diagonal factor that is tight enough at h = 2 spacings; with
-    // wider kernels they overshoot and diverge within a step (h = 3 spacings blows up at once, and
-    // 2.5 already leaves a resting column 20 % off hydrostatic).
     const float ratio =
       smoothingLength / latticeSpacingForMass(particleMass, smoothingLength, restDensity, densityKernel());
-    if (!(ratio <= 2.25f))
+    if (!(ratio <= solver->maximumSupport))
     {
-      return "DFSPH needs SmoothingLength of at most 2.25 particle spacings (2 is the default), got " +
-             std::to_string(ratio) + "; lower it or use WCSPH";
+      char limits[96];
+      std::snprintf(limits, sizeof(limits), "at most %g particle spacings (%g is the default), got %g",
+                    solver->maximumSupport, solver->defaultSupport, ratio);
+      return std::string(solver->label) + " needs SmoothingLength of " + limits +
+             "; lower it or choose another PressureSolver";
     }
   }
   return {};

@@ -1,8 +1,10 @@
 #include "parafluid/sph/SPHSolver.h"
 
 #include "parafluid/common/TriangleBoundary.h"
+#include "parafluid/sph/SolverRegistry.h"
 #include "private/MeshWall.h"
 #include "private/NeighbourCandidates.h"
+#include "private/SimulationParts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,23 +96,34 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial,
   this->sortByCell();
   const SPHParameters& p = this->Parameters;
   this->ParticleSpacing = latticeSpacingForMass(p.particleMass, p.smoothingLength, p.restDensity, p.densityKernel());
-  const bool spiky = p.pressureSolver == PressureSolverType::WCSPH; // Müller's viscous term uses spiky's gradient
-  // δ-SPH's laminar term is Morris's operator, the others' Monaghan's (see SPHParameters.h).
-  this->LaplacianCorrection =
-    p.pressureSolver == PressureSolverType::DeltaSPH
-      ? latticeMorrisLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, p.densityKernel())
-      : latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength,
-                                   spiky ? DensityKernel::Poly6 : p.densityKernel(), spiky);
+  const SolverEntry& solver = solverEntry(p.pressureSolver);
+  switch (solver.viscousOperator)
+  {
+    case ViscousOperator::Morris:
+      this->LaplacianCorrection =
+        latticeMorrisLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, p.densityKernel());
+      break;
+    case ViscousOperator::MonaghanSpiky:
+      this->LaplacianCorrection =
+        latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, DensityKernel::Poly6, true);
+      break;
+    case ViscousOperator::Monaghan:
+      this->LaplacianCorrection =
+        latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, p.densityKernel(), false);
+      break;
+  }
   this->SpikyGradientCorrection = latticeSpikyGradientCorrection(this->ParticleSpacing, p.smoothingLength);
-  if (this->Boundary && this->Boundary->triangleCount() > 0 && p.meshWallDensity &&
-      p.pressureSolver != PressureSolverType::WCSPH)
+  if (this->Boundary && this->Boundary->triangleCount() > 0 && p.meshWallDensity && solver.meshWallInSums)
   {
     this->Wall = std::make_unique<detail::MeshWall>();
     this->Wall->table = detail::MeshWallTable(p.densityKernel(), p.smoothingLength, this->ParticleSpacing);
     this->findMeshWalls();
   }
-  this->Pressure = makePressureSolver(p.pressureSolver);
-  this->Pressure->start(*this);
+  this->Pressure = solver.create();
+  {
+    SimulationParts parts(*this);
+    this->Pressure->start(parts);
+  }
   this->measureCompression();
 }
 
@@ -177,7 +190,8 @@ double SPHSolver::step(double maxStep)
 {
   try
   {
-    this->Pressure->step(*this, maxStep);
+    SimulationParts parts(*this);
+    this->Pressure->step(parts, maxStep);
   }
   catch (const std::invalid_argument&)
   {
@@ -244,7 +258,10 @@ void SPHSolver::addParticles(const std::vector<float>& x, const std::vector<floa
   this->Pressure->resize(n + added);
   this->drift(0.0f); // inside the walls
   this->sortByCell();
-  this->Pressure->restart(*this);
+  {
+    SimulationParts parts(*this);
+    this->Pressure->restart(parts);
+  }
 }
 
 std::size_t SPHSolver::removeParticles(const std::vector<std::uint8_t>& remove)
@@ -292,7 +309,10 @@ std::size_t SPHSolver::removeParticles(const std::vector<std::uint8_t>& remove)
     this->PressureImpulse.resize(kept);
   }
   this->sortByCell();
-  this->Pressure->start(*this);
+  {
+    SimulationParts parts(*this);
+    this->Pressure->start(parts);
+  }
   return n - kept;
 }
 
@@ -333,20 +353,20 @@ double SPHSolver::proposedTimeStep() const
   {
     dt = std::min(dt, p.cflNumber * h / speed);
   }
-  if (p.viscosity > 0.0f && p.pressureSolver != PressureSolverType::DeltaSPH)
+  const SolverEntry& solver = solverEntry(p.pressureSolver);
+  if (p.viscosity > 0.0f && solver.separateExtraViscosity)
   {
     // Explicit diffusion is stable for dt nu S < 1, S the sum of Müller's Laplacian weights over a
     // neighbourhood: about 15 / h^2, up to twice that beside a wall's mirror images. Kept at 0.75.
     dt = std::min(dt, h * h * p.restDensity / (40.0 * p.viscosity));
   }
-  // δ-SPH folds Müller's extra viscosity into its laminar term.
-  const double nu =
-    p.kinematicViscosity + (p.pressureSolver == PressureSolverType::DeltaSPH ? p.viscosity / p.restDensity : 0.0);
-  if (nu > 0.0 && p.pressureSolver != PressureSolverType::DFSPH)
+  // A solver without a term of its own for Müller's extra viscosity folds it into its laminar term.
+  const double nu = p.kinematicViscosity + (solver.separateExtraViscosity ? 0.0 : p.viscosity / p.restDensity);
+  if (nu > 0.0 && solver.explicitLaminarViscosity)
   {
     // The explicit laminar term: nu dt / (h/2)^2 <= 0.125 (Morris et al. 1997), with nu scaled by
     // the operator's lattice correction and halved again beside no-slip walls, whose images double
-    // the term. DFSPH solves it implicitly and has no such limit.
+    // the term; an implicit one has no such limit.
     dt = std::min(dt, 0.015 * h * h / (nu * this->LaplacianCorrection));
   }
   const double a = this->maxAcceleration();
@@ -423,23 +443,7 @@ void SPHSolver::measureCompression()
 
 std::string SPHSolver::stabilityAdvice() const
 {
-  const SPHParameters& p = this->Parameters;
-  if (p.pressureSolver == PressureSolverType::DFSPH)
-  {
-    return p.adaptiveTimeStep ? "lower CFLNumber or MaxTimeStep, or raise MaxPressureIterations"
-                              : "lower TimeStep or turn on AdaptiveTimeStep, or raise MaxPressureIterations";
-  }
-  if (p.pressureSolver == PressureSolverType::DeltaSPH)
-  {
-    return p.adaptiveTimeStep ? "lower CFLNumber or MaxTimeStep, or raise SoundSpeed (a stiffer, less compressible "
-                                "fluid) or ArtificialViscosity"
-                              : "lower TimeStep or turn on AdaptiveTimeStep (the step must stay below the CFL limit of "
-                                "the speed of sound SoundSpeed)";
-  }
-  return p.adaptiveTimeStep ? "lower CFLNumber or MaxTimeStep, or raise GasStiffness (a stiffer, less compressible "
-                              "fluid) or Viscosity"
-                            : "lower TimeStep or turn on AdaptiveTimeStep (the step must stay below the CFL limit of "
-                              "the speed of sound sqrt(GasStiffness))";
+  return solverEntry(this->Parameters.pressureSolver).stabilityAdvice(this->Parameters.adaptiveTimeStep);
 }
 
 void SPHSolver::checkPhysical() const
@@ -517,7 +521,8 @@ void SPHSolver::sortByCell()
   }
   if (this->Pressure)
   {
-    this->Pressure->permute(*this, order, this->ScratchFloat, threads);
+    SimulationParts parts(*this);
+    this->Pressure->permute(parts, order, this->ScratchFloat, threads);
   }
   else if (s.density.size() == s.size())
   {

@@ -4,9 +4,9 @@
 #include "parafluid/sph/WCSPHSolver.h"
 
 #include "parafluid/common/Kernels.h"
-#include "parafluid/sph/SPHSolver.h"
 #include "parafluid/sph/WallMirrors.h"
 #include "private/NeighbourCandidates.h"
+#include "private/SimulationParts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +17,33 @@ using detail::CandidateBuffer;
 using detail::forEachParticleByCell;
 using detail::threadCount;
 
-void WCSPHSolver::start(SPHSolver& sim)
+SolverEntry WCSPHSolver::registryEntry()
+{
+  SolverEntry e{};
+  e.type = PressureSolverType::WCSPH;
+  e.key = "WCSPH";
+  e.label = "WCSPH (Müller)";
+  e.propertyValue = 0;
+  e.kernel = DensityKernel::Poly6;
+  e.defaultSupport = 2.0f;
+  e.viscousOperator = ViscousOperator::MonaghanSpiky; // its viscous term uses the spiky kernel's gradient
+  e.explicitLaminarViscosity = true;
+  e.separateExtraViscosity = true;
+  e.colourFieldSurfaceTension = true;
+  e.holdsStrongCohesion = true;
+  e.runoffCFLNumber = 0.1f;
+  e.create = [] { return std::unique_ptr<PressureSolver>(std::make_unique<WCSPHSolver>()); };
+  e.stabilityAdvice = [](bool adaptive) -> std::string
+  {
+    return adaptive ? "lower CFLNumber or MaxTimeStep, or raise GasStiffness (a stiffer, less compressible "
+                      "fluid) or Viscosity"
+                    : "lower TimeStep or turn on AdaptiveTimeStep (the step must stay below the CFL limit of "
+                      "the speed of sound sqrt(GasStiffness))";
+  };
+  return e;
+}
+
+void WCSPHSolver::start(SimulationParts& sim)
 {
   this->computeDensityAndPressure(sim);
   sim.computeAccelerations(true);
@@ -28,7 +54,7 @@ double WCSPHSolver::signalSpeed(const SPHParameters& p) const
   return std::sqrt(static_cast<double>(p.gasStiffness));
 }
 
-double WCSPHSolver::step(SPHSolver& sim, double remaining)
+double WCSPHSolver::step(SimulationParts& sim, double remaining)
 {
   const double dt = sim.chooseTimeStep(remaining);
   const auto h = static_cast<float>(dt);
@@ -39,21 +65,21 @@ double WCSPHSolver::step(SPHSolver& sim, double remaining)
   sim.computeAccelerations(true);
   sim.kick(0.5f * h);
   sim.applyWallFriction(h);
-  sim.Last.timeStep = dt;
-  sim.Time += dt;
+  sim.statistics().timeStep = dt;
+  sim.advanceTime(dt);
   return dt;
 }
 
-void WCSPHSolver::computeDensityAndPressure(SPHSolver& sim)
+void WCSPHSolver::computeDensityAndPressure(SimulationParts& sim)
 {
-  ParticleState& s = sim.State;
-  const SPHParameters& p = sim.Parameters;
+  ParticleState& s = sim.state();
+  const SPHParameters& p = sim.parameters();
   const Poly6Kernel w(p.smoothingLength);
   const float densityScale = p.particleMass * w.coefficient;
   const float k = p.gasStiffness;
   const float rho0 = p.restDensity;
   const bool clamp = p.clampNegativePressure;
-  forEachParticleByCell(sim.Grid, s, p.smoothingLength, threadCount(p), {},
+  forEachParticleByCell(sim.grid(), s, p.smoothingLength, threadCount(p), {},
                         [&](const CandidateBuffer& candidates, std::uint32_t i)
                         {
                           const float position[3] = { s.x[i], s.y[i], s.z[i] };

@@ -6,6 +6,7 @@
 // (water: rho0 1000 kg/m^3, nu 1e-6 m^2/s) unless the flow itself sets a parameter (the Reynolds
 // number of an analytic flow).
 #include "parafluid/common/ParticleState.h"
+#include "parafluid/sph/DeltaSPHSolver.h"
 #include "parafluid/sph/SPHParameters.h"
 
 #include <array>

@@ -1,5 +1,7 @@
 #include "SPHScenes.h"
 
+#include "parafluid/sph/SolverRegistry.h"
+
 #include "parafluid/common/ParticleLattice.h"
 
 namespace parafluid::validation
@@ -40,15 +42,7 @@ float kernelRatio(PressureSolverType solver)
 
 const char* solverName(PressureSolverType solver)
 {
-  switch (solver)
-  {
-    case PressureSolverType::DFSPH:
-      return "DFSPH";
-    case PressureSolverType::DeltaSPH:
-      return "DeltaSPH";
-    default:
-      return "WCSPH";
-  }
+  return sph::solverEntry(solver).key;
 }
 
 sph::SPHParameters water(PressureSolverType solver, float spacing, const std::array<float, 6>& domain)

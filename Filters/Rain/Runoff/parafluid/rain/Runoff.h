@@ -15,6 +15,7 @@
 #include "parafluid/common/HeightField.h"
 #include "parafluid/rain/RainField.h"
 #include "parafluid/sph/SPHParameters.h"
+#include "parafluid/sph/Simulation.h"
 
 #include <cstdint>
 #include <functional>
@@ -25,10 +26,6 @@
 namespace parafluid
 {
 class TriangleBoundary;
-}
-namespace parafluid::sph
-{
-class SPHSolver;
 }
 
 namespace parafluid::rain
@@ -53,14 +50,8 @@ struct RunoffParameters
     p.cflNumber = 0.0f; // automaticCFLNumber(pressureSolver)
     return p;
   }
-  /// The CFL number a cflNumber of 0 stands for: SPH Step's 0.2 for DFSPH (every seed of the
-  /// basin's cloudburst held its pond at it), half that for the weakly compressible solvers (under
-  /// the same cloudburst δ-SPH's integrated density drifted up at 0.2 and six runs of seven blew up;
-  /// at 0.1 all ran: Testing/Benchmarks/README.md, Rain).
-  static float automaticCFLNumber(sph::PressureSolverType solver)
-  {
-    return solver == sph::PressureSolverType::DFSPH ? 0.2f : 0.1f;
-  }
+  /// The CFL number a cflNumber of 0 stands for: the solver's registry entry's runoffCFLNumber.
+  static float automaticCFLNumber(sph::PressureSolverType solver);
   double particleSpacing = 0.05; // d [m]
   bool conserveVolume = true;
   int rainScale = 10;           // impacts per particle without ConserveVolume
@@ -80,7 +71,7 @@ public:
   Runoff& operator=(Runoff&&) noexcept;
 
   /// Advances `duration` seconds in drop steps (the last shortened to land on the end); progress
-  /// as SPHSolver::advance. Throws std::runtime_error when the SPH becomes unstable, or when the
+  /// as sph::Simulation::advance. Throws std::runtime_error when the SPH becomes unstable, or when the
   /// water would exceed maxParticles.
   void advance(double duration, const std::function<bool(double)>& progress = {});
 
@@ -88,7 +79,7 @@ public:
   const RainField& rain() const { return this->Rain; }
   const RunoffParameters& parameters() const { return this->Parameters; }
   /// The SPH water, or null before the first particle.
-  const sph::SPHSolver* water() const;
+  const sph::Simulation* water() const;
   /// The solver's settings as resolved from the parameters (what the water is stepped with).
   const sph::SPHParameters& sphParameters() const { return this->Resolved; }
   /// Per precipitation cell: the water surface [m] (lowest float when dry), and its impacts so far.
@@ -118,7 +109,7 @@ private:
   RainField Rain;
   sph::SPHParameters Resolved;
   std::shared_ptr<const TriangleBoundary> Boundary;
-  std::unique_ptr<sph::SPHSolver> Water;
+  std::unique_ptr<sph::Simulation> Water;
   double Time = 0.0, WaterTime = 0.0;
   std::int64_t DropSteps = 0, SPHSteps = 0;
   std::vector<std::int64_t> Counted;

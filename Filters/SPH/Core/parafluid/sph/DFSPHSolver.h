@@ -6,20 +6,23 @@
 // the last step. The fluid's viscosity is solved implicitly before the density solve (Weiler et
 // al. 2018), so it does not limit the step.
 #include "parafluid/sph/PressureSolver.h"
+#include "parafluid/sph/SolverRegistry.h"
 
 namespace parafluid::sph
 {
 class DFSPHSolver final : public PressureSolver
 {
 public:
-  void start(SPHSolver& sim) override;
-  double step(SPHSolver& sim, double remaining) override;
+  /// This solver's entry of the registry (SolverRegistry.h).
+  static SolverEntry registryEntry();
+  void start(SimulationParts& sim) override;
+  double step(SimulationParts& sim, double remaining) override;
   double signalSpeed(const SPHParameters&) const override { return 0.0; }
-  void permute(SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
+  void permute(SimulationParts& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
                int threads) override;
   std::size_t bytes() const override;
   void resize(std::size_t n) override;
-  void restart(SPHSolver& sim) override;
+  void restart(SimulationParts& sim) override;
 
 private:
   /// A particle with fewer neighbours than this (itself and wall images included) is at the free
@@ -27,33 +30,33 @@ private:
   /// solve leaves surface particles free to separate, as Bender & Koschier's implementation does.
   static constexpr std::uint16_t kSurfaceNeighbours = 20;
 
-  void computeDensityAndFactor(SPHSolver& sim);
+  void computeDensityAndFactor(SimulationParts& sim);
   /// Scales the last step's stiffnesses by `keep` and applies their impulse.
-  void warmStart(SPHSolver& sim, std::vector<float>& accumulated, float dt, float keep);
-  int solveDensity(SPHSolver& sim, float dt);
-  int solveDivergence(SPHSolver& sim, float dt);
+  void warmStart(SimulationParts& sim, std::vector<float>& accumulated, float dt, float keep);
+  int solveDensity(SimulationParts& sim, float dt);
+  int solveDivergence(SimulationParts& sim, float dt);
   /// Sum over neighbours j of m (v_i - v_j) . grad W_ij into DensityRate (D rho / D t).
-  void computeDensityRate(SPHSolver& sim);
+  void computeDensityRate(SimulationParts& sim);
   /// Replaces the predicted velocities by the implicit viscous solve (ImplicitViscosity.cxx);
   /// returns the conjugate-gradient iterations.
-  int solveViscosity(SPHSolver& sim, float dt);
+  int solveViscosity(SimulationParts& sim, float dt);
   /// v_i -= dt sum_j m (k_i + k_j) grad W_ij with k = Stiffness; `record` adds it to the
   /// accelerations output too.
-  void applyPressureImpulse(SPHSolver& sim, float dt, bool record = true);
+  void applyPressureImpulse(SimulationParts& sim, float dt, bool record = true);
   /// The density solve as a conjugate gradient (DFSPHConjugateGradient.cxx); returns iterations.
-  int solveDensityByConjugateGradient(SPHSolver& sim, float dt);
+  int solveDensityByConjugateGradient(SimulationParts& sim, float dt);
   /// From the warm start DensityStiffness (already applied), finds the stiffness increments on the
   /// particles in Active that make the predicted density error in Residual (kg/m^3, one per
   /// particle) vanish within at most `budget` iterations, adds them to DensityStiffness (clamped to
   /// no tension) and applies their impulse. Returns iterations.
-  int solveConjugateGradient(SPHSolver& sim, float dt, int budget);
+  int solveConjugateGradient(SimulationParts& sim, float dt, int budget);
   /// Where no particle is at a free surface, takes the mean over the particles in Active out of
   /// `error` (no pressure can change an enclosed fluid's volume).
-  void removeEnclosedMean(SPHSolver& sim, std::vector<float>& error) const;
+  void removeEnclosedMean(SimulationParts& sim, std::vector<float>& error) const;
   /// B x = -dt D(dv(x)): the density change the impulse of stiffnesses x takes away, rows outside
   /// `active` zero (velocities and accelerations left as they were).
-  void densityChangeOperator(SPHSolver& sim, float dt, const std::vector<float>& x, const std::vector<char>& active,
-                             std::vector<float>& out);
+  void densityChangeOperator(SimulationParts& sim, float dt, const std::vector<float>& x,
+                             const std::vector<char>& active, std::vector<float>& out);
 
   // alpha factor, D rho / D t, the stiffness of the current iteration, and the accumulated
   // stiffness of both solves (the warm start of the next step; p = rho^2 k).

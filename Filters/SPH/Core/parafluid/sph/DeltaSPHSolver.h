@@ -32,16 +32,24 @@
 //  - a boundary mesh as a wall in the density and pressure sums (private/MeshWall.h).
 #include "parafluid/common/ParticleState.h"
 #include "parafluid/sph/PressureSolver.h"
+#include "parafluid/sph/SolverRegistry.h"
 
 namespace parafluid::sph
 {
+/// δ-SPH's kernel support [particle spacings] when none is given. Wendland C2's lattice under
+/// pressure is stable only at 2.8-2.9 spacings (Testing/Benchmarks/lattice_stability.py); at 2
+/// waves ran 14 % fast, at 3 the lattice sheared apart in still water 40 particles across.
+constexpr float kDeltaSPHSupport = 2.9f;
+
 class DeltaSPHSolver final : public PressureSolver
 {
 public:
-  void start(SPHSolver& sim) override;
-  double step(SPHSolver& sim, double remaining) override;
+  /// This solver's entry of the registry (SolverRegistry.h).
+  static SolverEntry registryEntry();
+  void start(SimulationParts& sim) override;
+  double step(SimulationParts& sim, double remaining) override;
   double signalSpeed(const SPHParameters&) const override { return this->SoundSpeed; }
-  void permute(SPHSolver& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
+  void permute(SimulationParts& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
                int threads) override;
   void resize(std::size_t n) override;
   std::size_t bytes() const override
@@ -59,22 +67,22 @@ public:
 
 private:
   /// Density of hydrostatic equilibrium under gravity along an axis (rest density otherwise).
-  void startHydrostatic(SPHSolver& sim);
+  void startHydrostatic(SimulationParts& sim);
   /// Pressure from density by the equation of state.
-  void updatePressure(SPHSolver& sim);
+  void updatePressure(SimulationParts& sim);
   /// Accelerations into State.a*: pressure, viscosities, gravity, surface tension.
-  void computeAccelerations(SPHSolver& sim);
+  void computeAccelerations(SimulationParts& sim);
   /// Moves interior particles down their concentration gradient (DeltaSPHSolver.cxx).
-  void shiftParticles(SPHSolver& sim, float dt);
+  void shiftParticles(SimulationParts& sim, float dt);
   /// rho += dt D rho / D t, with the rate from the current positions and velocities.
-  void advanceDensity(SPHSolver& sim, float dt);
+  void advanceDensity(SimulationParts& sim, float dt);
   /// D rho / D t into DensityRate, each particle's Correction (with the gradient correction) and
   /// FullPush; each particle's Fullness for the next step.
-  void sumDensityRates(SPHSolver& sim);
+  void sumDensityRates(SimulationParts& sim);
   /// SlowDeparture for the particles that have none (all at a start, the added ones at a restart).
-  void startSlowDeparture(SPHSolver& sim);
+  void startSlowDeparture(SimulationParts& sim);
   /// SlowDeparture moves towards each particle's departure over SlowDepartureTime.
-  void followSlowDeparture(SPHSolver& sim, float dt);
+  void followSlowDeparture(SimulationParts& sim, float dt);
 
   std::vector<float> DensityRate;
   std::vector<float> Shift;      // 3 per particle

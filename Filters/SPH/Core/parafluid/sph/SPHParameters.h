@@ -38,11 +38,6 @@ enum class WallFriction
   LogLaw
 };
 
-/// δ-SPH's kernel support [particle spacings] when none is given. Wendland C2's lattice under
-/// pressure is stable only at 2.8-2.9 spacings (Testing/Benchmarks/lattice_stability.py); at 2
-/// waves ran 14 % fast, at 3 the lattice sheared apart in still water 40 particles across.
-constexpr float kDeltaSPHSupport = 2.9f;
-
 struct SPHParameters
 {
   PressureSolverType pressureSolver = PressureSolverType::DeltaSPH;
@@ -152,19 +147,8 @@ struct SPHParameters
   bool clampNegativePressure = true;
   int threads = 0; // OpenMP threads; 0 = the OpenMP default
 
-  /// The kernel that measures density for the chosen pressure solver.
-  DensityKernel densityKernel() const
-  {
-    switch (pressureSolver)
-    {
-      case PressureSolverType::DFSPH:
-        return DensityKernel::CubicSpline;
-      case PressureSolverType::DeltaSPH:
-        return DensityKernel::WendlandC2;
-      default:
-        return DensityKernel::Poly6;
-    }
-  }
+  /// The kernel that measures density for the chosen pressure solver (its registry entry's).
+  DensityKernel densityKernel() const;
   bool anyPeriodic() const { return periodic[0] || periodic[1] || periodic[2]; }
   /// The walls whose images carry the no-slip velocity (all false unless wallFriction is NoSlip).
   std::array<bool, 6> noSlipWalls() const

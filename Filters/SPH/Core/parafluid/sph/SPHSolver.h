@@ -13,6 +13,7 @@
 #include "parafluid/common/ParticleState.h"
 #include "parafluid/sph/PressureSolver.h"
 #include "parafluid/sph/SPHParameters.h"
+#include "parafluid/sph/Simulation.h"
 
 #include <cstdint>
 #include <functional>
@@ -31,7 +32,8 @@ namespace detail
 struct MeshWall;
 }
 
-class SPHSolver
+/// The CPU implementation of Simulation (OpenMP, SIMD pair loops).
+class SPHSolver final : public Simulation
 {
 public:
   /// Takes the initial state (positions, velocities, ids; the rest is computed) and an optional
@@ -49,7 +51,7 @@ public:
   /// is its time-weighted mean over the steps taken: DFSPH's per-step pressure is an impulse that
   /// also removes the last step's density error in one step (so it swings from step to step, the
   /// more the shorter the step), and WCSPH's rings acoustically; the mean is what moved the fluid.
-  std::int64_t advance(double duration, const std::function<bool(double)>& progress = {});
+  std::int64_t advance(double duration, const std::function<bool(double)>& progress = {}) override;
   /// One step of at most maxStep seconds; returns the step taken [s]. Pressure is that step's.
   double step(double maxStep = 1e30);
   /// Adds particles to the running simulation (a source: rain, an inflow) at the given positions
@@ -58,34 +60,26 @@ public:
   /// DFSPH warm start is lost). Throws std::invalid_argument for mismatched sizes or non-finite
   /// values.
   void addParticles(const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z,
-                    const std::vector<float>& vx, const std::vector<float>& vy, const std::vector<float>& vz);
+                    const std::vector<float>& vx, const std::vector<float>& vy, const std::vector<float>& vz) override;
   /// Removes the particles whose flag is non-zero (a sink: infiltration, an outflow), flags in state
   /// order; returns how many were removed.
-  std::size_t removeParticles(const std::vector<std::uint8_t>& remove);
+  std::size_t removeParticles(const std::vector<std::uint8_t>& remove) override;
   /// The step the time-step control would take now [s] (WCSPH; DFSPH adds non-pressure forces first).
-  double proposedTimeStep() const;
+  double proposedTimeStep() const override;
 
   const ParticleState& state() const { return this->State; }
-  const SPHParameters& parameters() const { return this->Parameters; }
-  std::int64_t stepCount() const { return this->Steps; }
-  double time() const { return this->Time; }
+  const ParticleState& hostState() const override { return this->State; }
+  const SPHParameters& parameters() const override { return this->Parameters; }
+  std::int64_t stepCount() const override { return this->Steps; }
+  double time() const override { return this->Time; }
+  const char* backendName() const override { return "CPU"; }
 
-  struct StepStatistics
-  {
-    double timeStep = 0.0;
-    int densityIterations = 0;    // DFSPH only
-    int divergenceIterations = 0; // DFSPH only
-    int viscosityIterations = 0;  // DFSPH only: conjugate-gradient iterations of the implicit viscosity
-    /// Mean over all particles of max(rho - rho0, 0) / rho0 after the step (measured, not predicted).
-    double meanCompression = 0.0;
-    /// Largest density over rho0 after the step.
-    double maxDensityRatio = 0.0;
-  };
-  const StepStatistics& lastStep() const { return this->Last; }
+  using StepStatistics = sph::StepStatistics;
+  const StepStatistics& lastStep() const override { return this->Last; }
 
   /// Neighbours of each particle within h (itself excluded), in state order. A separate pass:
   /// computed only when called.
-  std::vector<std::uint32_t> neighbourCounts() const;
+  std::vector<std::uint32_t> neighbourCounts() const override;
   /// The pressure field at each particle, in state order [Pa]: a linear field fitted by weighted
   /// least squares over each neighbourhood (poly6 weights; wall images carry their particles'
   /// pressures lifted hydrostatically), read at the particle (SmoothedPressure.cxx). It drops the
@@ -93,16 +87,16 @@ public:
   /// exerts no force, so no solver removes it) and that makes single-particle pressures noisy, and
   /// it reproduces a linear field exactly where free surfaces and walls cut the neighbourhood. A
   /// separate pass: computed only when called.
-  std::vector<float> smoothedPressure() const;
+  std::vector<float> smoothedPressure() const override;
   /// Kinetic energy [J].
-  double kineticEnergy() const;
+  double kineticEnergy() const override;
   /// Bytes held per particle by the state, scratch and the neighbour grid.
-  double bytesPerParticle() const;
+  double bytesPerParticle() const override;
   /// The fastest a particle may move in this scene before the run counts as blown up [m/s]: ten
   /// times the free-fall speed over the domain's largest extent plus the fastest initial speed.
   double speedLimit() const { return this->SpeedLimit; }
   /// What to change when the run blows up, in the properties of the chosen solver.
-  std::string stabilityAdvice() const;
+  std::string stabilityAdvice() const override;
 
 private:
   void sortByCell();
@@ -136,10 +130,8 @@ private:
   void computeSurfaceNormals();
 
   // The pressure solvers advance the simulation through its shared parts (grid, walls, forces,
-  // time-step control) and keep their own per-particle arrays.
-  friend class WCSPHSolver;
-  friend class DFSPHSolver;
-  friend class DeltaSPHSolver;
+  // time-step control), which they reach only through SimulationParts, and keep their own arrays.
+  friend class SimulationParts;
 
   SPHParameters Parameters;
   ParticleState State;
