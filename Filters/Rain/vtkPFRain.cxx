@@ -10,6 +10,8 @@
 #include "TimeSteppedCache.h"
 #include "parafluid/common/MemoryBudget.h"
 #include "parafluid/rain/RainField.h"
+#include "parafluid/rain/RunoffParameterTable.h"
+#include "parafluid/sph/SPHParameterTable.h"
 #include "parafluid/sph/Simulation.h"
 #include "parafluid/sph/SolverRegistry.h"
 
@@ -229,6 +231,13 @@ bool vtkPFRain::Resolve(const HeightField& ground, parafluid::rain::RainParamete
   const auto [lowest, highest] = std::minmax_element(z.begin(), z.end());
   const double relief = *highest - *lowest;
   rain.height = this->PrecipitationHeight != 0.0 ? this->PrecipitationHeight : *highest + std::max(relief, 5.0);
+  // The water's SPH parameters' ranges are their declarations' (SPHParameterTable.h); CFLNumber 0
+  // is the automatic choice for the solver.
+  const std::string water = parafluid::sph::checkParameters(
+    this->Water.sph,
+    { "KinematicViscosity", "SurfaceTension", "BoundaryDamping", "CFLNumber", "SoundSpeed", "DensityTolerance" },
+    { "CFLNumber" });
+  const std::string runoff = parafluid::checkDeclared(parafluid::rain::runoffParameterTable(), this->Water);
   parafluid::vtk::ParameterCheck check;
   check.inRange("Seed", this->SeedValue, 0, 2147483647)
     .inRange("MaxParticles", this->MaxParticlesValue, 1, 2147483647)
@@ -238,15 +247,8 @@ bool vtkPFRain::Resolve(const HeightField& ground, parafluid::rain::RainParamete
     .inRange("ExposureTime", this->ExposureTime, 0.0, 10.0, "s")
     .inRange("SplashLifetime", this->SplashLifetime, 0.0, 10.0, "s")
     .inRange("OutputInterval", this->OutputInterval, 1e-6, 1e5, "s")
-    .inRange("ParticleSpacing", this->Water.particleSpacing, 1e-5, 1e5, "m")
-    .inRange("KinematicViscosity", this->Water.sph.kinematicViscosity, 0.0, 1e3, "m^2/s")
-    .inRange("SurfaceTension", this->Water.sph.surfaceTension, 0.0, 1e3, "N/m")
-    .inRange("BoundaryDamping", this->Water.sph.boundaryDamping, 0.0, 1.0)
-    .require(this->Water.sph.cflNumber == 0.0f ||
-               (this->Water.sph.cflNumber >= 0.001f && this->Water.sph.cflNumber <= 2.0f),
-             "CFLNumber must be 0 (automatic) or from 0.001 to 2, got " + std::to_string(this->Water.sph.cflNumber))
-    .inRange("SoundSpeed", this->Water.sph.soundSpeed, 0.0, 1e5, "m/s")
-    .inRange("DensityTolerance", this->Water.sph.densityTolerance, 1e-6, 0.5);
+    .require(runoff.empty(), runoff)
+    .require(water.empty(), water);
   if (!check.ok())
   {
     this->ReportError(check.problem());

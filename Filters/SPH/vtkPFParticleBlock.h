@@ -11,6 +11,11 @@
 #include "ParaFluidSPHFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
+namespace parafluid
+{
+struct ParticleLattice;
+}
+
 class PARAFLUIDSPHFILTERS_EXPORT vtkPFParticleBlock : public vtkPolyDataAlgorithm
 {
 public:
@@ -37,6 +42,12 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
 private:
+  /// Checks the properties and the memory the block takes; false after reporting an error.
+  /// `count`: the particles it will hold.
+  bool CheckProperties(double& count);
+  /// The lattice as the particle contract's points, arrays and field data.
+  void WriteBlock(const parafluid::ParticleLattice& lattice, float mass, double h, vtkPolyData* output);
+
   vtkPFParticleBlock(const vtkPFParticleBlock&) = delete;
   void operator=(const vtkPFParticleBlock&) = delete;
 

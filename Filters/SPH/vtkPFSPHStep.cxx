@@ -10,6 +10,7 @@
 #include "parafluid/common/MemoryBudget.h"
 #include "vtkImageData.h"
 
+#include "parafluid/sph/SPHParameterTable.h"
 #include "parafluid/sph/Simulation.h"
 #include "parafluid/sph/SolverRegistry.h"
 
@@ -282,18 +283,13 @@ bool vtkPFSPHStep::ResolveParameters(vtkFieldData* fd, SPHParameters& p)
                                      p.domainBounds[3], p.domainBounds[4], p.domainBounds[5] };
   const bool automaticDomain = std::all_of(domainProperty, domainProperty + 6, [](double v) { return v == 0.0; });
   const double gravity[3] = { p.gravity[0], p.gravity[1], p.gravity[2] };
+  // The SPH parameters' ranges are their declarations' (SPHParameterTable.h); 0 asks for the
+  // smoothing length and the mass from the input.
   parafluid::vtk::ParameterCheck check;
-  check.inRange("SmoothingLength", p.smoothingLength, 0.0, 1e3, "m (0: from the input)")
-    .inRange("ParticleMass", p.particleMass, 0.0, 1e6, "kg (0: from the input's spacing)")
-    .inRange("RestDensity", p.restDensity, 1e-6, 1e6, "kg/m^3")
-    .inRange("GasStiffness", p.gasStiffness, 0.0, 1e12, "m^2/s^2")
-    .inRange("Viscosity", p.viscosity, 0.0, 1e9, "Pa s")
-    .inRange("SurfaceTension", p.surfaceTension, 0.0, 1e3, "N/m")
-    .inRange("WallRestitution", p.wallRestitution, 0.0, 1.0)
+  const std::string range = parafluid::sph::checkParameterRanges(p, { "SmoothingLength", "ParticleMass" });
+  check.require(range.empty(), range)
     .allInRange("Gravity", gravity, 3, -1e6, 1e6, "m/s^2")
-    .inRange("OutputInterval", this->OutputInterval, 1e-9, 1e6, "s")
-    .inRange("TimeStep", p.timeStep, 1e-9, 1e3, "s")
-    .inRange("MaxTimeStep", p.maxTimeStep, 1e-9, 1e3, "s");
+    .inRange("OutputInterval", this->OutputInterval, 1e-9, 1e6, "s");
   if (!automaticDomain)
   {
     check.box("DomainBounds", domainProperty, true);

@@ -458,6 +458,10 @@ void vtkPFScreenSpaceFluidRepresentation::SetSpecularStrength(double strength)
 {
   this->Mapper->SetSpecularStrength(strength);
 }
+void vtkPFScreenSpaceFluidRepresentation::SetAmbient(double ambient)
+{
+  this->Mapper->SetAmbient(ambient);
+}
 void vtkPFScreenSpaceFluidRepresentation::SetColorMix(double mix)
 {
   this->Mapper->SetColorMix(mix);

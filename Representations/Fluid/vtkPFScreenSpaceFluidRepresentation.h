@@ -70,6 +70,7 @@ public:
   void SetRefractionStrength(double strength);
   void SetShininess(double shininess);
   void SetSpecularStrength(double strength);
+  void SetAmbient(double ambient);
   void SetColorMix(double mix);
   /// Six cube map faces (+X, -X, +Y, -Y, +Z, -Z; +Y of the images is world +Z), all or none.
   void SetEnvironmentImage(int face, const char* file);

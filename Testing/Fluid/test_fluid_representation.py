@@ -94,6 +94,13 @@ coloured = pixels()
 pftest.check(np.abs(coloured - plain).mean() > 1.0, "colouring by 'height' changes the picture")
 display.ColorArrayName = [None, ""]
 
+# Ambient (the light without a direct source) reaches the shading: more of it brightens the ball.
+display.FluidAmbient = 0.8
+brighter = pixels()
+display.FluidAmbient = 0.2
+pftest.check(brighter.mean() > plain.mean() + 1.0, "FluidAmbient 0.8 brightens the ball (%.1f -> %.1f)" %
+             (plain.mean(), brighter.mean()))
+
 # An opaque box in front of the ball hides it where it stands; the fluid hides a box behind it.
 def red_box(center, lengths):
     box = Box(Center=center, XLength=lengths[0], YLength=lengths[1], ZLength=lengths[2])

@@ -1,5 +1,7 @@
 #include "parafluid/ocean/SeaSettings.h"
 
+#include "parafluid/ocean/SeaParameterTable.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -45,38 +47,16 @@ namespace
 /// Empty when v is finite and in [lo, hi]; else why not, naming the property.
 std::string outside(const char* name, double v, double lo, double hi)
 {
-  if (std::isfinite(v) && v >= lo && v <= hi)
-  {
-    return {};
-  }
-  std::ostringstream text;
-  text << name << " = " << v << " is not allowed: it must be a finite number from " << lo << " to " << hi;
-  return text.str();
+  return checkNumber(name, "", lo, hi, v);
 }
 } // namespace
 
 std::string SeaSettings::validate() const
 {
-  // Distances up to 1e7 m (a sea 10000 km across) and angles up to 1e6 degrees: beyond them float
-  // phases lose every digit and the output would be noise.
-  const std::string checks[] = {
-    outside("WindDirection", this->windDirection, -1e6, 1e6),
-    outside("WindLean", this->windLean, 0.0, 0.5),
-    outside("WaterDepth", this->waterDepth, 0.0, 1e5),
-    outside("MaxSteepness", this->maxSteepness, 0.01, 1.0),
-    outside("BreakingDepthRatio", this->breakingDepthRatio, 0.01, 10.0),
-    outside("BreakingStretch", this->breakingStretch, 0.0, 10.0),
-    outside("BreakingLean", this->breakingLean, 0.0, 1.4),
-    outside("BreakingShift", this->breakingShift, 0.0, 10.0),
-    outside("SeaLevel", this->seaLevel, -1e7, 1e7),
-    outside("BathymetryResolution", this->bathymetryResolution, 2, 8192),
-  };
-  for (const std::string& problem : checks)
+  const std::string declared = checkDeclared(seaParameterTable(), *this);
+  if (!declared.empty())
   {
-    if (!problem.empty())
-    {
-      return problem;
-    }
+    return declared;
   }
   for (std::size_t w = 0; w + 4 < this->waves.size(); w += 5)
   {

@@ -1,6 +1,7 @@
 #include "parafluid/rain/Runoff.h"
 
 #include "parafluid/rain/GroundSurface.h"
+#include "parafluid/rain/RunoffParameterTable.h"
 #include "parafluid/sph/SolverRegistry.h"
 
 #include <algorithm>
@@ -32,22 +33,10 @@ Runoff::Runoff(const RainParameters& rain, const RunoffParameters& runoff, std::
                                 "(got " +
                                 std::to_string(d) + " m)");
   }
-  if (p.rainScale < 1 || p.rainScale > 1000000)
+  const std::string declared = checkDeclared(runoffParameterTable(), p);
+  if (!declared.empty())
   {
-    throw std::invalid_argument("Rain: RainScale must be from 1 to 1000000 impacts per particle");
-  }
-  if (p.sphEvery < 1 || p.sphEvery > 1000)
-  {
-    throw std::invalid_argument("Rain: SPHEvery must be from 1 to 1000 drop steps");
-  }
-  if (!(p.rainStep > 0.0) || !(p.rainStep <= 1.0))
-  {
-    throw std::invalid_argument("Rain: RainTimeStep must be in (0, 1] s (got " + std::to_string(p.rainStep) + ")");
-  }
-  if (!(p.infiltration >= 0.0) || !(p.infiltration <= 1e4))
-  {
-    throw std::invalid_argument("Rain: Infiltration must be from 0 to 10000 mm/h (got " +
-                                std::to_string(p.infiltration) + ")");
+    throw std::invalid_argument("Rain: " + declared);
   }
   // The SPH: the ground's box up to the precipitation plane, gravity down, the kernel of SPH Step
   // for this spacing, and a sound speed from the fastest runoff the relief allows.

@@ -11,9 +11,9 @@
 #include "private/SimulationParts.h"
 
 #include "parafluid/common/Kernels.h"
-#include "parafluid/sph/WallMirrors.h"
 #include "private/MeshWall.h"
 #include "private/NeighbourCandidates.h"
+#include "private/WallImages.h"
 
 #include <algorithm>
 #include <cmath>
@@ -52,21 +52,6 @@ struct CubicPair
   }
 };
 
-/// Runs f(query position, velocity scale S, mirror index or -1) for the particle and each of its
-/// wall images; f returns a vector result that is mapped back with S.
-template<class F>
-void withImages(const float position[3], const SPHParameters& p, F&& f)
-{
-  static const float identity[3] = { 1.0f, 1.0f, 1.0f };
-  f(position, identity);
-  const WallMirrors mirrors = WallMirrors::around(position, p);
-  for (int m = 0; m < mirrors.count; ++m)
-  {
-    float image[3];
-    mirrors.image(m, position, image);
-    f(image, mirrors.scale[m]);
-  }
-}
 } // namespace
 
 SolverEntry DFSPHSolver::registryEntry()
@@ -160,62 +145,64 @@ void DFSPHSolver::computeDensityAndFactor(SimulationParts& sim)
   this->NeighbourCount.resize(n);
   const CubicPair w(p.smoothingLength);
   const float m = p.particleMass;
-  forEachParticleByCell(
-    sim.grid(), s, p.smoothingLength, threadCount(p), {},
-    [&](CandidateBuffer& c, std::uint32_t i)
-    {
-      const float position[3] = { s.x[i], s.y[i], s.z[i] };
-      float rho = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f, squares = 0.0f;
-      unsigned neighbours = 0;
-      withImages(position, p,
-                 [&](const float q[3], const float scale[3])
-                 {
-                   const std::uint32_t count = c.findHits(q, w.h2);
-                   neighbours += count;
-                   const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
-                   const std::uint32_t* hits = c.hits.data();
-                   float sr = 0.0f, sx = 0.0f, sy = 0.0f, sz = 0.0f, ss = 0.0f;
+  forEachParticleByCell(sim.grid(), s, p.smoothingLength, threadCount(p), {},
+                        [&](CandidateBuffer& c, std::uint32_t i)
+                        {
+                          const float position[3] = { s.x[i], s.y[i], s.z[i] };
+                          float rho = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f, squares = 0.0f;
+                          unsigned neighbours = 0;
+                          detail::forEachWallImage(
+                            position, position, p,
+                            [&](const float* q, const float*, const float*, const float* scale, bool)
+                            {
+                              const std::uint32_t count = c.findHits(q, w.h2);
+                              neighbours += count;
+                              const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(),
+                                          *r2 = c.distanceSquared.data();
+                              const std::uint32_t* hits = c.hits.data();
+                              float sr = 0.0f, sx = 0.0f, sy = 0.0f, sz = 0.0f, ss = 0.0f;
 #pragma omp simd reduction(+ : sr, sx, sy, sz, ss)
-                   for (std::uint32_t k = 0; k < count; ++k)
-                   {
-                     const std::uint32_t j = hits[k];
-                     const float r = std::sqrt(r2[j]);
-                     const float q01 = r * w.inverseH;
-                     sr += w.value(r, q01);
-                     const float g = w.gradientFactor(r, q01);
-                     const float dx = g * (q[0] - px[j]), dy = g * (q[1] - py[j]), dz = g * (q[2] - pz[j]);
-                     sx += dx;
-                     sy += dy;
-                     sz += dz;
-                     ss += dx * dx + dy * dy + dz * dz;
-                   }
-                   rho += sr;
-                   gx += scale[0] * sx;
-                   gy += scale[1] * sy;
-                   gz += scale[2] * sz;
-                   squares += ss;
-                 });
-      detail::MeshWallTable::Weight wall;
-      const float* normal = nullptr;
-      if (sim.wall() && sim.wall()->of(i, wall, normal))
-      {
-        // The lattice beyond the mesh: density and the gradient of the particle's own move (it
-        // stays put, so it has no term of its own in the sum of squares: Bender & Koschier 2017).
-        rho += wall.sum;
-        gx += wall.slope * normal[0];
-        gy += wall.slope * normal[1];
-        gz += wall.slope * normal[2];
-        neighbours += static_cast<unsigned>(wall.neighbours + 0.5f);
-      }
-      rho *= m;
-      s.density[i] = rho;
-      // alpha_i = rho_i / (|sum_j m grad W_ij|^2 + sum_j |m grad W_ij|^2); an isolated particle has
-      // no gradient to correct with and gets 0.
-      const float denominator = m * m * (gx * gx + gy * gy + gz * gz + squares);
-      this->Factor[i] =
-        denominator > 1e-12f * rho * rho / (p.smoothingLength * p.smoothingLength) ? rho / denominator : 0.0f;
-      this->NeighbourCount[i] = static_cast<std::uint16_t>(std::min(neighbours, 65535u));
-    });
+                              for (std::uint32_t k = 0; k < count; ++k)
+                              {
+                                const std::uint32_t j = hits[k];
+                                const float r = std::sqrt(r2[j]);
+                                const float q01 = r * w.inverseH;
+                                sr += w.value(r, q01);
+                                const float g = w.gradientFactor(r, q01);
+                                const float dx = g * (q[0] - px[j]), dy = g * (q[1] - py[j]), dz = g * (q[2] - pz[j]);
+                                sx += dx;
+                                sy += dy;
+                                sz += dz;
+                                ss += dx * dx + dy * dy + dz * dz;
+                              }
+                              rho += sr;
+                              gx += scale[0] * sx;
+                              gy += scale[1] * sy;
+                              gz += scale[2] * sz;
+                              squares += ss;
+                            });
+                          detail::MeshWallTable::Weight wall;
+                          const float* normal = nullptr;
+                          if (sim.wall() && sim.wall()->of(i, wall, normal))
+                          {
+                            // The lattice beyond the mesh: density and the gradient of the particle's own move (it
+                            // stays put, so it has no term of its own in the sum of squares: Bender & Koschier 2017).
+                            rho += wall.sum;
+                            gx += wall.slope * normal[0];
+                            gy += wall.slope * normal[1];
+                            gz += wall.slope * normal[2];
+                            neighbours += static_cast<unsigned>(wall.neighbours + 0.5f);
+                          }
+                          rho *= m;
+                          s.density[i] = rho;
+                          // alpha_i = rho_i / (|sum_j m grad W_ij|^2 + sum_j |m grad W_ij|^2); an isolated particle has
+                          // no gradient to correct with and gets 0.
+                          const float denominator = m * m * (gx * gx + gy * gy + gz * gz + squares);
+                          this->Factor[i] = denominator > 1e-12f * rho * rho / (p.smoothingLength * p.smoothingLength)
+                                              ? rho / denominator
+                                              : 0.0f;
+                          this->NeighbourCount[i] = static_cast<std::uint16_t>(std::min(neighbours, 65535u));
+                        });
 }
 
 void DFSPHSolver::computeDensityRate(SimulationParts& sim)
@@ -232,27 +219,27 @@ void DFSPHSolver::computeDensityRate(SimulationParts& sim)
       const float position[3] = { s.x[i], s.y[i], s.z[i] };
       const float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
       float rate = 0.0f;
-      withImages(position, p,
-                 [&](const float q[3], const float scale[3])
-                 {
-                   // An image moves with the mirrored velocity; the scalar sum needs no mapping back.
-                   const float v[3] = { scale[0] * velocity[0], scale[1] * velocity[1], scale[2] * velocity[2] };
-                   const std::uint32_t count = c.findHits(q, w.h2);
-                   const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
-                   const float *vx = c.channel[0].data(), *vy = c.channel[1].data(), *vz = c.channel[2].data();
-                   const std::uint32_t* hits = c.hits.data();
-                   float sum = 0.0f;
+      detail::forEachWallImage(
+        position, velocity, p,
+        [&](const float* q, const float* v, const float*, const float*, bool)
+        {
+          // An image moves with the mirrored velocity; the scalar sum needs no mapping back.
+          const std::uint32_t count = c.findHits(q, w.h2);
+          const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(), *r2 = c.distanceSquared.data();
+          const float *vx = c.channel[0].data(), *vy = c.channel[1].data(), *vz = c.channel[2].data();
+          const std::uint32_t* hits = c.hits.data();
+          float sum = 0.0f;
 #pragma omp simd reduction(+ : sum)
-                   for (std::uint32_t k = 0; k < count; ++k)
-                   {
-                     const std::uint32_t j = hits[k];
-                     const float r = std::sqrt(r2[j]);
-                     const float g = w.gradientFactor(r, r * w.inverseH);
-                     sum += g * ((q[0] - px[j]) * (v[0] - vx[j]) + (q[1] - py[j]) * (v[1] - vy[j]) +
-                                 (q[2] - pz[j]) * (v[2] - vz[j]));
-                   }
-                   rate += sum;
-                 });
+          for (std::uint32_t k = 0; k < count; ++k)
+          {
+            const std::uint32_t j = hits[k];
+            const float r = std::sqrt(r2[j]);
+            const float g = w.gradientFactor(r, r * w.inverseH);
+            sum +=
+              g * ((q[0] - px[j]) * (v[0] - vx[j]) + (q[1] - py[j]) * (v[1] - vy[j]) + (q[2] - pz[j]) * (v[2] - vz[j]));
+          }
+          rate += sum;
+        });
       detail::MeshWallTable::Weight wall;
       const float* normal = nullptr;
       if (sim.wall() && sim.wall()->of(i, wall, normal))
@@ -279,29 +266,30 @@ void DFSPHSolver::applyPressureImpulse(SimulationParts& sim, float dt, bool reco
                           const float position[3] = { s.x[i], s.y[i], s.z[i] };
                           const float ki = this->Stiffness[i];
                           float f[3] = { 0.0f, 0.0f, 0.0f };
-                          withImages(position, p,
-                                     [&](const float q[3], const float scale[3])
-                                     {
-                                       const std::uint32_t count = c.findHits(q, w.h2);
-                                       const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(),
-                                                   *r2 = c.distanceSquared.data();
-                                       const float* kj = c.channel[0].data();
-                                       const std::uint32_t* hits = c.hits.data();
-                                       float fx = 0.0f, fy = 0.0f, fz = 0.0f;
+                          detail::forEachWallImage(
+                            position, position, p,
+                            [&](const float* q, const float*, const float*, const float* scale, bool)
+                            {
+                              const std::uint32_t count = c.findHits(q, w.h2);
+                              const float *px = c.x.data(), *py = c.y.data(), *pz = c.z.data(),
+                                          *r2 = c.distanceSquared.data();
+                              const float* kj = c.channel[0].data();
+                              const std::uint32_t* hits = c.hits.data();
+                              float fx = 0.0f, fy = 0.0f, fz = 0.0f;
 #pragma omp simd reduction(+ : fx, fy, fz)
-                                       for (std::uint32_t k = 0; k < count; ++k)
-                                       {
-                                         const std::uint32_t j = hits[k];
-                                         const float r = std::sqrt(r2[j]);
-                                         const float g = (ki + kj[j]) * w.gradientFactor(r, r * w.inverseH);
-                                         fx += g * (q[0] - px[j]);
-                                         fy += g * (q[1] - py[j]);
-                                         fz += g * (q[2] - pz[j]);
-                                       }
-                                       f[0] += scale[0] * fx;
-                                       f[1] += scale[1] * fy;
-                                       f[2] += scale[2] * fz;
-                                     });
+                              for (std::uint32_t k = 0; k < count; ++k)
+                              {
+                                const std::uint32_t j = hits[k];
+                                const float r = std::sqrt(r2[j]);
+                                const float g = (ki + kj[j]) * w.gradientFactor(r, r * w.inverseH);
+                                fx += g * (q[0] - px[j]);
+                                fy += g * (q[1] - py[j]);
+                                fz += g * (q[2] - pz[j]);
+                              }
+                              f[0] += scale[0] * fx;
+                              f[1] += scale[1] * fy;
+                              f[2] += scale[2] * fz;
+                            });
                           detail::MeshWallTable::Weight wall;
                           const float* normal = nullptr;
                           if (sim.wall() && sim.wall()->of(i, wall, normal))

@@ -1,6 +1,7 @@
 #include "parafluid/sph/SPHParameters.h"
 
 #include "parafluid/common/Kernels.h"
+#include "parafluid/sph/SPHParameterTable.h"
 #include "parafluid/sph/SolverRegistry.h"
 #include "private/AnyKernel.h"
 
@@ -58,83 +59,16 @@ std::string SPHParameters::validate() const
   {
     return "PressureSolver " + std::to_string(static_cast<int>(pressureSolver)) + " is not a solver this build has";
   }
-  if (!positiveFinite(smoothingLength))
+  const std::string range = checkParameterRanges(*this);
+  if (!range.empty())
   {
-    return "SmoothingLength must be a positive number of metres, got " + std::to_string(smoothingLength);
-  }
-  if (!positiveFinite(restDensity))
-  {
-    return "RestDensity must be positive (kg/m^3), got " + std::to_string(restDensity);
-  }
-  if (!std::isfinite(gasStiffness) || gasStiffness < 0.0f)
-  {
-    return "GasStiffness must be zero or positive (m^2/s^2), got " + std::to_string(gasStiffness);
-  }
-  if (!std::isfinite(viscosity) || viscosity < 0.0f)
-  {
-    return "Viscosity must be zero or positive (Pa s), got " + std::to_string(viscosity);
-  }
-  if (!std::isfinite(kinematicViscosity) || kinematicViscosity < 0.0f || kinematicViscosity > 1.0e3f)
-  {
-    return "KinematicViscosity must lie in [0, 1000] m^2/s (water: 1e-6), got " + std::to_string(kinematicViscosity);
-  }
-  if (!std::isfinite(artificialViscosity) || artificialViscosity < 0.0f || artificialViscosity > 10.0f)
-  {
-    return "ArtificialViscosity must lie in [0, 10] (0.01-0.02 is usual), got " + std::to_string(artificialViscosity);
-  }
-  if (!std::isfinite(densityDiffusion) || densityDiffusion < 0.0f || densityDiffusion > 1.0f)
-  {
-    return "DensityDiffusion must lie in [0, 1] (0.1 is usual), got " + std::to_string(densityDiffusion);
-  }
-  if (!std::isfinite(soundSpeed) || soundSpeed < 0.0f || soundSpeed > 1.0e5f)
-  {
-    return "SoundSpeed must lie in [0, 1e5] m/s (0: automatic), got " + std::to_string(soundSpeed);
-  }
-  if (!positiveFinite(viscosityTolerance) || viscosityTolerance >= 1.0f)
-  {
-    return "ViscosityTolerance must lie in (0, 1), got " + std::to_string(viscosityTolerance);
-  }
-  if (!std::isfinite(surfaceTension) || surfaceTension < 0.0f)
-  {
-    return "SurfaceTension must be zero or positive (N/m), got " + std::to_string(surfaceTension);
+    return range;
   }
   if (surfaceTension > 0.0f && surfaceTensionModel == SurfaceTensionModel::ColourField &&
       !solver->colourFieldSurfaceTension)
   {
     return std::string("SurfaceTensionModel: the colour field is not part of ") + solver->label +
            "'s force pass; choose Akinci 2013";
-  }
-  if (!std::isfinite(surfaceThreshold) || surfaceThreshold < 0.0f)
-  {
-    return "SurfaceThreshold must be zero or positive, got " + std::to_string(surfaceThreshold);
-  }
-  if (!positiveFinite(timeStep))
-  {
-    return "TimeStep must be a positive number of seconds, got " + std::to_string(timeStep);
-  }
-  if (!positiveFinite(maxTimeStep))
-  {
-    return "MaxTimeStep must be a positive number of seconds, got " + std::to_string(maxTimeStep);
-  }
-  if (!positiveFinite(cflNumber) || cflNumber > 2.0f)
-  {
-    return "CFLNumber must lie in (0, 2], got " + std::to_string(cflNumber);
-  }
-  if (!positiveFinite(densityTolerance) || densityTolerance >= 1.0f)
-  {
-    return "DensityTolerance must lie in (0, 1) (a fraction of rest density), got " + std::to_string(densityTolerance);
-  }
-  if (!positiveFinite(divergenceTolerance) || divergenceTolerance >= 1.0f)
-  {
-    return "DivergenceTolerance must lie in (0, 1), got " + std::to_string(divergenceTolerance);
-  }
-  if (maxPressureIterations < 1 || maxPressureIterations > 100000)
-  {
-    return "MaxPressureIterations must lie in [1, 100000], got " + std::to_string(maxPressureIterations);
-  }
-  if (!positiveFinite(particleMass))
-  {
-    return "ParticleMass must be positive (kg), got " + std::to_string(particleMass);
   }
   for (float g : gravity)
   {
@@ -152,19 +86,6 @@ std::string SPHParameters::validate() const
       return "DomainBounds must give min < max on every axis (axis " + std::to_string(a) + ": " + std::to_string(lo) +
              " .. " + std::to_string(hi) + ")";
     }
-  }
-  if (!std::isfinite(wallRestitution) || wallRestitution < 0.0f || wallRestitution > 1.0f)
-  {
-    return "WallRestitution must lie in [0, 1], got " + std::to_string(wallRestitution);
-  }
-  if (!positiveFinite(wallKinematicViscosity) || wallKinematicViscosity > 1.0f)
-  {
-    return "WallKinematicViscosity must lie in (0, 1] m^2/s (water: 1e-6), got " +
-           std::to_string(wallKinematicViscosity);
-  }
-  if (!std::isfinite(boundaryDamping) || boundaryDamping < 0.0f || boundaryDamping > 1.0f)
-  {
-    return "BoundaryDamping must lie in [0, 1], got " + std::to_string(boundaryDamping);
   }
   for (int a = 0; a < 3; ++a)
   {

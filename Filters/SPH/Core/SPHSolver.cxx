@@ -30,6 +30,47 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial,
   {
     throw std::invalid_argument("SPH: " + problem);
   }
+  this->completeInitialState();
+  this->checkCoincident();
+  this->SpeedLimit = this->sceneSpeedLimit();
+  // Particles that start outside the domain are reflected inside, as the walls would do.
+  this->drift(0.0f);
+  this->sortByCell();
+  const SPHParameters& p = this->Parameters;
+  this->ParticleSpacing = latticeSpacingForMass(p.particleMass, p.smoothingLength, p.restDensity, p.densityKernel());
+  const SolverEntry& solver = solverEntry(p.pressureSolver);
+  switch (solver.viscousOperator)
+  {
+    case ViscousOperator::Morris:
+      this->LaplacianCorrection =
+        latticeMorrisLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, p.densityKernel());
+      break;
+    case ViscousOperator::MonaghanSpiky:
+      this->LaplacianCorrection =
+        latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, DensityKernel::Poly6, true);
+      break;
+    case ViscousOperator::Monaghan:
+      this->LaplacianCorrection =
+        latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, p.densityKernel(), false);
+      break;
+  }
+  this->SpikyGradientCorrection = latticeSpikyGradientCorrection(this->ParticleSpacing, p.smoothingLength);
+  if (this->Boundary && this->Boundary->triangleCount() > 0 && p.meshWallDensity && solver.meshWallInSums)
+  {
+    this->Wall = std::make_unique<detail::MeshWall>();
+    this->Wall->table = detail::MeshWallTable(p.densityKernel(), p.smoothingLength, this->ParticleSpacing);
+    this->findMeshWalls();
+  }
+  this->Pressure = solver.create();
+  {
+    SimulationParts parts(*this);
+    this->Pressure->start(parts);
+  }
+  this->measureCompression();
+}
+
+void SPHSolver::completeInitialState()
+{
   const std::size_t n = this->State.x.size();
   if (this->State.y.size() != n || this->State.z.size() != n)
   {
@@ -71,60 +112,27 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial,
                                   ") has a NaN or infinite position or velocity");
     }
   }
-  this->checkCoincident();
-  {
-    // The scene's own speed scale: free fall over the domain's largest extent, and the fastest
-    // particle at the start.
-    const SPHParameters& p = this->Parameters;
-    double extent = 0.0, g = 0.0, v0 = 0.0;
-    for (int a = 0; a < 3; ++a)
-    {
-      extent = std::max(extent, static_cast<double>(p.domainBounds[2 * a + 1] - p.domainBounds[2 * a]));
-      g += static_cast<double>(p.gravity[a]) * p.gravity[a];
-    }
-    const ParticleState& s = this->State;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      v0 = std::max(v0, std::sqrt(static_cast<double>(s.vx[i]) * s.vx[i] + static_cast<double>(s.vy[i]) * s.vy[i] +
-                                  static_cast<double>(s.vz[i]) * s.vz[i]));
-    }
-    // 1 m/s floor: a weightless scene at rest may still start to move (surface tension).
-    this->SpeedLimit = 10.0 * (std::sqrt(2.0 * std::sqrt(g) * extent) + v0) + 1.0;
-  }
-  // Particles that start outside the domain are reflected inside, as the walls would do.
-  this->drift(0.0f);
-  this->sortByCell();
+}
+
+double SPHSolver::sceneSpeedLimit() const
+{
+  // The scene's own speed scale: free fall over the domain's largest extent, and the fastest
+  // particle at the start.
   const SPHParameters& p = this->Parameters;
-  this->ParticleSpacing = latticeSpacingForMass(p.particleMass, p.smoothingLength, p.restDensity, p.densityKernel());
-  const SolverEntry& solver = solverEntry(p.pressureSolver);
-  switch (solver.viscousOperator)
+  double extent = 0.0, g = 0.0, v0 = 0.0;
+  for (int a = 0; a < 3; ++a)
   {
-    case ViscousOperator::Morris:
-      this->LaplacianCorrection =
-        latticeMorrisLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, p.densityKernel());
-      break;
-    case ViscousOperator::MonaghanSpiky:
-      this->LaplacianCorrection =
-        latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, DensityKernel::Poly6, true);
-      break;
-    case ViscousOperator::Monaghan:
-      this->LaplacianCorrection =
-        latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, p.densityKernel(), false);
-      break;
+    extent = std::max(extent, static_cast<double>(p.domainBounds[2 * a + 1] - p.domainBounds[2 * a]));
+    g += static_cast<double>(p.gravity[a]) * p.gravity[a];
   }
-  this->SpikyGradientCorrection = latticeSpikyGradientCorrection(this->ParticleSpacing, p.smoothingLength);
-  if (this->Boundary && this->Boundary->triangleCount() > 0 && p.meshWallDensity && solver.meshWallInSums)
+  const ParticleState& s = this->State;
+  for (std::size_t i = 0; i < s.size(); ++i)
   {
-    this->Wall = std::make_unique<detail::MeshWall>();
-    this->Wall->table = detail::MeshWallTable(p.densityKernel(), p.smoothingLength, this->ParticleSpacing);
-    this->findMeshWalls();
+    v0 = std::max(v0, std::sqrt(static_cast<double>(s.vx[i]) * s.vx[i] + static_cast<double>(s.vy[i]) * s.vy[i] +
+                                static_cast<double>(s.vz[i]) * s.vz[i]));
   }
-  this->Pressure = solver.create();
-  {
-    SimulationParts parts(*this);
-    this->Pressure->start(parts);
-  }
-  this->measureCompression();
+  // 1 m/s floor: a weightless scene at rest may still start to move (surface tension).
+  return 10.0 * (std::sqrt(2.0 * std::sqrt(g) * extent) + v0) + 1.0;
 }
 
 SPHSolver::~SPHSolver() = default;

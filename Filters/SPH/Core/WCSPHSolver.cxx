@@ -4,9 +4,9 @@
 #include "parafluid/sph/WCSPHSolver.h"
 
 #include "parafluid/common/Kernels.h"
-#include "parafluid/sph/WallMirrors.h"
 #include "private/NeighbourCandidates.h"
 #include "private/SimulationParts.h"
+#include "private/WallImages.h"
 
 #include <algorithm>
 #include <cmath>
@@ -83,16 +83,12 @@ void WCSPHSolver::computeDensityAndPressure(SimulationParts& sim)
                         [&](const CandidateBuffer& candidates, std::uint32_t i)
                         {
                           const float position[3] = { s.x[i], s.y[i], s.z[i] };
-                          float sum = candidates.poly6Sum(position, w.h2); // includes the particle itself (r = 0)
-                          // Near walls the mirrored fluid fills the cut-off neighbourhood: |x_i - R x_j| = |R x_i -
-                          // x_j|.
-                          const WallMirrors mirrors = WallMirrors::around(position, p);
-                          for (int m = 0; m < mirrors.count; ++m)
-                          {
-                            float image[3];
-                            mirrors.image(m, position, image);
-                            sum += candidates.poly6Sum(image, w.h2);
-                          }
+                          // The particle itself (r = 0) and, near walls, its images: the mirrored fluid fills
+                          // the cut-off neighbourhood, |x_i - R x_j| = |R x_i - x_j|.
+                          float sum = 0.0f;
+                          detail::forEachWallImage(position, position, p,
+                                                   [&](const float* q, const float*, const float*, const float*, bool)
+                                                   { sum += candidates.poly6Sum(q, w.h2); });
                           const float rho = densityScale * sum;
                           s.density[i] = rho;
                           const float pressure = k * (rho - rho0);

@@ -35,8 +35,6 @@ public:
   /// Sorts the state by grid cell (the solver's own arrays through its permute()) and finds the
   /// mesh walls of the sorted particles.
   void sortByCell() { this->Sim.sortByCell(); }
-  /// Each particle's nearest point of the boundary mesh, after a move that did not sort.
-  void findMeshWalls() { this->Sim.findMeshWalls(); }
   /// The step to take with `remaining` seconds left (SPHSolver.cxx).
   double chooseTimeStep(double remaining) const { return this->Sim.chooseTimeStep(remaining); }
   void applyWallFriction(float dt) { this->Sim.applyWallFriction(dt); }

@@ -41,8 +41,8 @@ struct RunoffParameters
   {
     sph::SPHParameters p;
     // DFSPH, not SPH Step's δ-SPH: with the terrain a wall in its sums its water pools at the level
-    // its volume gives (a bowl's pond 0.21-0.26 spacings below it for 10 s after the rain, every seed
-    // tried), where δ-SPH's integrated density let the pond drain into a film over the bowl. Its
+    // its volume gives (a bowl's pond within a quarter of a spacing of it), where δ-SPH's integrated
+    // density lets the pond drain into a film over the bowl (docs/design-notes.md). Its
     // step costs about six of δ-SPH's (14k runoff particles: 30 against 5 ms on 2 cores), within
     // the frame rate asked of rain with runoff (Testing/Benchmarks/README.md, Rain).
     p.pressureSolver = sph::PressureSolverType::DFSPH;

@@ -5,22 +5,20 @@
 //    surface has no density deficit and needs no pressure clamp;
 //  - density diffusion (Molteni & Colagrossi 2009) with the hydrostatic part removed (Fourtakas
 //    et al. 2019), so a resting column stays hydrostatic instead of diffusing towards uniform
-//    density; near a free surface (a cut neighbourhood) only the departure's fast part diffuses:
-//    the truncated kernel holds the top layers at rest slightly off hydrostatic, and diffusing
-//    that steady departure pumped density between them, a creep that set still water moving;
+//    density; near a free surface (a cut neighbourhood) only the departure's fast part diffuses,
+//    because the truncated kernel holds the top layers at rest slightly off hydrostatic and that
+//    steady departure must not be pumped between them;
 //  - Tait's equation of state p = B ((rho / rho0)^7 - 1), B = c0^2 rho0 / 7;
 //  - the momentum-conserving pressure gradient -sum_j m (p_i / rho_i^2 + p_j / rho_j^2) grad W_ij,
 //    whose difference part sum_j m (p_j - p_i) / (rho_i rho_j) grad W_ij is, for particles with a
 //    full neighbourhood, corrected by the inverse of the neighbours' first moment (Bonet & Lok
-//    1999; SPHParameters::gradientCorrection). The plain gradient's gain depends on the lattice's
-//    shear, so on a sheared lattice under gravity it pushed back like an elastic solid: a standing
-//    wave ran 2 % fast at H = 3 spacings, 14 % at 2 (Testing/Benchmarks/README.md, "Standing
-//    wave"). Wall images then carry hydrostatically extrapolated pressure (Adami et al. 2012);
+//    1999; SPHParameters::gradientCorrection), because the plain gradient's gain depends on the
+//    lattice's shear, so a sheared lattice under gravity would push back like an elastic solid.
+//    Wall images then carry hydrostatically extrapolated pressure (Adami et al. 2012);
 //  - the rest of that gradient, about 2 p_i / rho_i^2 sum_j m grad W_ij, is what holds particles
 //    apart and a free surface together, but under pressure it is also a pair potential that gives
-//    the particle lattice shear moduli: negative at 3 spacings (the lattice shears apart: still
-//    water 40 particles across moved), positive at 2.8-2.9 (a spurious elasticity: a standing wave
-//    2 % fast). In full neighbourhoods its smooth part is taken out (SPHParameters::pushHighPass):
+//    the particle lattice shear moduli (negative at 3 spacings, positive at 2.8-2.9: see
+//    docs/design-notes.md). In full neighbourhoods its smooth part is taken out (SPHParameters::pushHighPass):
 //    with the default support of 2.9 spacings (kDeltaSPHSupport) the lattice is then stable and has
 //    no long-wave shear modulus (Testing/Benchmarks/lattice_stability.py --high-pass);
 //  - Monaghan's (1992) artificial viscosity with a small alpha as the only numerical viscosity, and
@@ -36,9 +34,8 @@
 
 namespace parafluid::sph
 {
-/// δ-SPH's kernel support [particle spacings] when none is given. Wendland C2's lattice under
-/// pressure is stable only at 2.8-2.9 spacings (Testing/Benchmarks/lattice_stability.py); at 2
-/// waves ran 14 % fast, at 3 the lattice sheared apart in still water 40 particles across.
+/// δ-SPH's kernel support [particle spacings] when none is given: Wendland C2's lattice under
+/// pressure is stable only at 2.8-2.9 spacings (Testing/Benchmarks/lattice_stability.py).
 constexpr float kDeltaSPHSupport = 2.9f;
 
 class DeltaSPHSolver final : public PressureSolver

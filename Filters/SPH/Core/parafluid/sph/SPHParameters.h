@@ -60,15 +60,13 @@ struct SPHParameters
   float densityDiffusion = 0.1f;
   float soundSpeed = 0.0f;
   // δ-SPH: shift interior particles towards uniform spacing (Lind et al. 2012, with δ+-SPH's
-  // coefficient, Sun et al. 2017). Off by default: it corrects neither density nor velocity for
-  // the move, and was measured (with a weaker coefficient) to set still water moving; on, it keeps
-  // the Taylor-Green vortex from breaking down (energy error 61 -> 14 % at 25 particles across).
+  // coefficient, Sun et al. 2017). Off by default because it corrects neither density nor velocity
+  // for the move; on, it keeps stretched flow (a vortex) evenly sampled.
   bool particleShifting = false;
   // δ-SPH: correct the pressure gradient of every particle with a full neighbourhood (its wall
   // images included) by the inverse of its neighbours' first moment (Bonet & Lok 1999), with the
-  // wall images' pressure extrapolated hydrostatically (Adami et al. 2012). The plain gradient's
-  // gain changes as the particle lattice shears, which ran a standing wave 2 % fast (see
-  // DeltaSPHSolver.h); free-surface particles keep the plain gradient.
+  // wall images' pressure extrapolated hydrostatically (Adami et al. 2012), because the plain
+  // gradient's gain changes as the particle lattice shears; free-surface particles keep it plain.
   bool gradientCorrection = true;
   // δ-SPH: inside the fluid (no free surface within a kernel of a particle or of its neighbours),
   // take the smooth part out of the rest of the symmetric pressure force, 2 p_i / rho_i^2 G_i with
@@ -76,9 +74,8 @@ struct SPHParameters
   // the same kernel. G is zero on a regular lattice and large only particle by particle, so what
   // this removes is the lattice's long-wave shear stiffness under pressure, a spurious elasticity,
   // while the push that keeps particles apart (and a wall's own image's) stays. Near a surface the
-  // force is the plain one: there G is the surface's push. With it the lattice under pressure is stable
-  // at 2.8-2.9 spacings with no long-wave shear modulus: still water and a standing wave both
-  // right at kDeltaSPHSupport (Testing/Benchmarks/README.md, "The pressure push's high pass").
+  // force is the plain one: there G is the surface's push. With it the lattice under pressure is
+  // stable at 2.8-2.9 spacings with no long-wave shear modulus (Testing/Benchmarks/README.md).
   bool pushHighPass = true;
   // sigma [N/m]: surface tension (water-air: 0.0728); 0 skips it. surfaceTensionModel picks the force.
   float surfaceTension = 0.0f;
@@ -93,7 +90,7 @@ struct SPHParameters
   //  - FreeSlip: none; the fluid slides along the walls;
   //  - NoSlip: the fluid sticks, through the viscous term with reversed-velocity wall images (see
   //    WallMirrors.h). Right for a fluid whose viscosity is resolved (honey, lava, slow flow); with
-  //    the default artificial 3.5 Pa s it brakes water about as much as a 3500 times thicker liquid;
+  //    Müller's extra Viscosity of 3.5 Pa s it brakes water as a 3500 times thicker liquid would;
   //  - LogLaw: the turbulent law of the wall (TurbulentWallLaw.h) with the fluid's molecular
   //    kinematic viscosity wallKinematicViscosity, applied to the layer of particles within one
   //    spacing of a wall: the unresolved boundary layer of real water.

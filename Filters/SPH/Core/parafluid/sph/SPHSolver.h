@@ -99,6 +99,11 @@ public:
   std::string stabilityAdvice() const override;
 
 private:
+  /// Checks the initial arrays' sizes and values and gives particles without velocities, ids or
+  /// original indices zero velocity and their index.
+  void completeInitialState();
+  /// See speedLimit().
+  double sceneSpeedLimit() const;
   void sortByCell();
   /// Each particle's nearest point of the boundary mesh (when the solver adds the mesh's wall to
   /// its sums, SPHParameters::meshWallDensity); after every sort and every move that follows one.
