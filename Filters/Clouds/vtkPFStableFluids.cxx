@@ -87,24 +87,17 @@ bool vtkPFStableFluids::GridShape(int cells[3], double& h)
 
 bool vtkPFStableFluids::CheckParameters()
 {
-  // The ranges mirror the XML domains (Plugins/ParaFluid/ParaFluidClouds.xml).
+  // The declared parameters' ranges are their declarations' (StableFluidsParameterTable.h).
+  const std::string declared =
+    parafluid::checkDeclared(parafluid::clouds::stableFluidsParameterTable(), this->Parameters);
   parafluid::vtk::ParameterCheck check;
-  check.inRange("TimeStep", this->TimeStep, 1e-6, 10.0, "s")
+  check.require(declared.empty(), declared)
+    .inRange("TimeStep", this->TimeStep, 1e-6, 10.0, "s")
     .inRange("OutputInterval", this->OutputInterval, 1e-6, 1e6, "s")
     .inRange("NumberOfOutputs", this->NumberOfOutputs, 0, 100000)
-    .inRange("Viscosity", this->Viscosity, 0.0, 100.0, "m^2/s")
-    .inRange("Diffusivity", this->Diffusivity, 0.0, 100.0, "m^2/s")
-    .inRange("BuoyancyDensity", this->BuoyancyDensity, -100.0, 100.0, "m/s^2")
-    .inRange("BuoyancyHeat", this->BuoyancyHeat, -100.0, 100.0, "m/s^2 per K")
-    .inRange("AmbientTemperature", this->AmbientTemperature, -1e30, 1e30, "K")
-    .inRange("Vorticity", this->Vorticity, 0.0, 10.0)
     .allInRange("EmitterBox", this->EmitterBox, 6, -1e30, 1e30, "m")
-    .inRange("EmitterDensity", this->EmitterDensity, 0.0, 1e6)
-    .inRange("EmitterTemperature", this->EmitterTemperature, -1000.0, 1000.0, "K")
-    .inRange("EmitterSpeed", this->EmitterSpeed, -1000.0, 1000.0, "m/s")
     .inRange("CloudCoverage", this->CloudCoverage, 0.0, 1.0)
     .inRange("CloudFeatureSize", this->CloudFeatureSize, 1e-6, 1e7, "m")
-    .inRange("ProjectionTolerance", this->ProjectionTolerance, 1e-14, 0.5)
     .require(this->OutputInterval / this->TimeStep <= 1e6,
              "OutputInterval / TimeStep is not allowed above a million steps per output (OutputInterval = " +
                parafluid::vtk::ParameterCheck::number(this->OutputInterval) +
@@ -217,7 +210,7 @@ int vtkPFStableFluids::RequestData(vtkInformation*, vtkInformationVector** input
       if (!cache.canContinueTo(target))
       {
         cache.dropRun();
-        StableFluidsParameters p;
+        StableFluidsParameters p = this->Parameters;
         std::copy(cells, cells + 3, p.resolution);
         p.cellSize = h;
         p.origin[0] = this->Bounds[0];
@@ -229,18 +222,8 @@ int vtkPFStableFluids::RequestData(vtkInformation*, vtkInformationVector** input
         {
           p.open[f] = this->OpenFaces[f] != 0;
         }
-        p.viscosity = this->Viscosity;
-        p.diffusivity = this->Diffusivity;
-        p.buoyancyDensity = this->BuoyancyDensity;
-        p.buoyancyHeat = this->BuoyancyHeat;
-        p.ambientTemperature = this->AmbientTemperature;
-        p.vorticity = this->Vorticity;
         p.emitter = this->Emitter;
         std::copy(this->EmitterBox, this->EmitterBox + 6, p.emitterBox);
-        p.emitterDensity = this->EmitterDensity;
-        p.emitterTemperature = this->EmitterTemperature;
-        p.emitterSpeed = this->EmitterSpeed;
-        p.projectionTolerance = this->ProjectionTolerance;
         p.preconditioner = this->Preconditioner == 1 ? parafluid::clouds::Preconditioner::Jacobi
                                                      : parafluid::clouds::Preconditioner::Multigrid;
         cache.start(std::make_unique<StableFluids>(p));

@@ -20,6 +20,9 @@
 #include "ParaFluidCloudsFiltersModule.h"
 #include "vtkImageAlgorithm.h"
 
+#include "AssignIfChanged.h"
+#include "parafluid/clouds/StableFluidsParameterTable.h"
+
 #include <memory>
 
 class PARAFLUIDCLOUDSFILTERS_EXPORT vtkPFStableFluids : public vtkImageAlgorithm
@@ -52,20 +55,26 @@ public:
   vtkSetMacro(Conservative, bool);
   vtkGetMacro(Conservative, bool);
   /// Kinematic viscosity of the air and diffusivity of density and heat [m^2/s] (0: none).
-  vtkSetMacro(Viscosity, double);
-  vtkGetMacro(Viscosity, double);
-  vtkSetMacro(Diffusivity, double);
-  vtkGetMacro(Diffusivity, double);
+  void SetViscosity(double value) { parafluid::vtk::assignIfChanged(this, this->Parameters.viscosity, value); }
+  double GetViscosity() const { return this->Parameters.viscosity; }
+  void SetDiffusivity(double value) { parafluid::vtk::assignIfChanged(this, this->Parameters.diffusivity, value); }
+  double GetDiffusivity() const { return this->Parameters.diffusivity; }
   /// Buoyancy: density weighs down [m/s^2 per unit density], heat lifts [m/s^2 per K].
-  vtkSetMacro(BuoyancyDensity, double);
-  vtkGetMacro(BuoyancyDensity, double);
-  vtkSetMacro(BuoyancyHeat, double);
-  vtkGetMacro(BuoyancyHeat, double);
-  vtkSetMacro(AmbientTemperature, double);
-  vtkGetMacro(AmbientTemperature, double);
+  void SetBuoyancyDensity(double value)
+  {
+    parafluid::vtk::assignIfChanged(this, this->Parameters.buoyancyDensity, value);
+  }
+  double GetBuoyancyDensity() const { return this->Parameters.buoyancyDensity; }
+  void SetBuoyancyHeat(double value) { parafluid::vtk::assignIfChanged(this, this->Parameters.buoyancyHeat, value); }
+  double GetBuoyancyHeat() const { return this->Parameters.buoyancyHeat; }
+  void SetAmbientTemperature(double value)
+  {
+    parafluid::vtk::assignIfChanged(this, this->Parameters.ambientTemperature, value);
+  }
+  double GetAmbientTemperature() const { return this->Parameters.ambientTemperature; }
   /// Vorticity confinement strength epsilon (0: off).
-  vtkSetMacro(Vorticity, double);
-  vtkGetMacro(Vorticity, double);
+  void SetVorticity(double value) { parafluid::vtk::assignIfChanged(this, this->Parameters.vorticity, value); }
+  double GetVorticity() const { return this->Parameters.vorticity; }
   /// Open faces (1) let air and smoke through; closed (0) are walls. xmin, xmax, ..., zmax.
   vtkSetVector6Macro(OpenFaces, int);
   vtkGetVector6Macro(OpenFaces, int);
@@ -74,14 +83,20 @@ public:
   vtkGetMacro(Emitter, bool);
   vtkSetVector6Macro(EmitterBox, double);
   vtkGetVector6Macro(EmitterBox, double);
-  vtkSetMacro(EmitterDensity, double);
-  vtkGetMacro(EmitterDensity, double);
+  void SetEmitterDensity(double value)
+  {
+    parafluid::vtk::assignIfChanged(this, this->Parameters.emitterDensity, value);
+  }
+  double GetEmitterDensity() const { return this->Parameters.emitterDensity; }
   /// [K] above ambient.
-  vtkSetMacro(EmitterTemperature, double);
-  vtkGetMacro(EmitterTemperature, double);
+  void SetEmitterTemperature(double value)
+  {
+    parafluid::vtk::assignIfChanged(this, this->Parameters.emitterTemperature, value);
+  }
+  double GetEmitterTemperature() const { return this->Parameters.emitterTemperature; }
   /// Upward speed the emitter blows [m/s].
-  vtkSetMacro(EmitterSpeed, double);
-  vtkGetMacro(EmitterSpeed, double);
+  void SetEmitterSpeed(double value) { parafluid::vtk::assignIfChanged(this, this->Parameters.emitterSpeed, value); }
+  double GetEmitterSpeed() const { return this->Parameters.emitterSpeed; }
 
   /// Procedural start: cumulus shapes covering CloudCoverage of the sky.
   vtkSetMacro(ProceduralClouds, bool);
@@ -95,8 +110,11 @@ public:
   vtkGetMacro(CloudSeed, int);
 
   /// Relative residual of the pressure solve, and its preconditioner (0 multigrid, 1 Jacobi).
-  vtkSetMacro(ProjectionTolerance, double);
-  vtkGetMacro(ProjectionTolerance, double);
+  void SetProjectionTolerance(double value)
+  {
+    parafluid::vtk::assignIfChanged(this, this->Parameters.projectionTolerance, value);
+  }
+  double GetProjectionTolerance() const { return this->Parameters.projectionTolerance; }
   vtkSetMacro(Preconditioner, int);
   vtkGetMacro(Preconditioner, int);
   vtkSetMacro(OutputDivergence, bool);
@@ -124,6 +142,8 @@ private:
   /// The other properties within their XML domains; false with an error naming the first that is not.
   bool CheckParameters();
 
+  // The declared parameters (StableFluidsParameterTable.h); the grid and the flags are set apart.
+  parafluid::clouds::StableFluidsParameters Parameters = parafluid::clouds::sourceDefaults();
   double Bounds[6] = { 0.0, 2.0, 0.0, 2.0, 0.0, 2.0 };
   int Resolution[3] = { 64, 64, 64 };
   double TimeStep = 0.02;
@@ -131,23 +151,13 @@ private:
   int NumberOfOutputs = 100;
   bool MacCormack = true;
   bool Conservative = true;
-  double Viscosity = 0.0;
-  double Diffusivity = 0.0;
-  double BuoyancyDensity = 0.05;
-  double BuoyancyHeat = 0.2;
-  double AmbientTemperature = 0.0;
-  double Vorticity = 0.3;
   int OpenFaces[6] = { 0, 0, 0, 0, 0, 1 };
   bool Emitter = true;
   double EmitterBox[6] = { 0.8, 1.2, 0.8, 1.2, 0.0, 0.2 };
-  double EmitterDensity = 1.0;
-  double EmitterTemperature = 10.0;
-  double EmitterSpeed = 1.0;
   bool ProceduralClouds = false;
   double CloudCoverage = 0.4;
   double CloudFeatureSize = 1.0;
   int CloudSeed = 1;
-  double ProjectionTolerance = 1e-5;
   int Preconditioner = 0;
   bool OutputDivergence = false;
   long long LastSteps = 0;

@@ -2,6 +2,7 @@
 
 #include "ParameterCheck.h"
 #include "parafluid/common/MemoryBudget.h"
+#include "parafluid/terrain/TerrainParameterTables.h"
 
 #include "vtkObjectFactory.h"
 
@@ -12,9 +13,7 @@ vtkStandardNewMacro(vtkPFProceduralTerrain);
 vtkPFProceduralTerrain::vtkPFProceduralTerrain()
 {
   this->SetNumberOfInputPorts(0);
-  this->Settings.featureSize = 500.0;
-  this->Settings.heightScale = 150.0;
-  this->Settings.warpScale = 400.0;
+  this->Settings = parafluid::terrain::proceduralTerrainDefaults();
 }
 
 bool vtkPFProceduralTerrain::TerrainGeometry(vtkInformationVector**, int dims[2], double origin[2], double spacing[2])

@@ -98,10 +98,10 @@ inline std::string pluginXml(const std::string& file)
 /// Every declaration its filter offers is a property of `block` with the declared label (which,
 /// without spaces, is pvpython's name: the property's name), range (reaching 0 for those with
 /// zeroMeans or in `zeroAllowed`), default (0 for those with zeroMeans) and "[unit]" in its
-/// documentation; the others are not in the XML.
+/// documentation; the others are not in the XML. The defaults are `defaults`' members (the filter's).
 template<class Parameters>
 void expectXmlMatches(const std::vector<ParameterDeclaration<Parameters>>& table, const std::string& block,
-                      const std::set<std::string>& zeroAllowed = {})
+                      const std::set<std::string>& zeroAllowed = {}, const Parameters& defaults = Parameters{})
 {
   ASSERT_FALSE(block.empty());
   for (const ParameterDeclaration<Parameters>& d : table)
@@ -119,7 +119,7 @@ void expectXmlMatches(const std::vector<ParameterDeclaration<Parameters>>& table
     EXPECT_EQ(x.minimum, d.zeroMeans || zeroAllowed.count(d.name) ? std::min(0.0, d.minimum) : d.minimum) << d.name;
     EXPECT_EQ(x.maximum, d.maximum) << d.name;
     // Compared as the float or double the setter stores.
-    const double expected = d.zeroMeans ? 0.0 : d.defaultValue();
+    const double expected = d.zeroMeans ? 0.0 : d.value(defaults);
     if (d.real)
     {
       EXPECT_EQ(static_cast<float>(std::stod(x.defaults)), static_cast<float>(expected)) << d.name;

@@ -4,6 +4,8 @@
 #include "parafluid/common/ParticleLattice.h"
 #include "parafluid/sph/SPHSolver.h"
 
+#include "EverySolver.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -62,25 +64,26 @@ TEST(PeriodicBoundary, GridWrapsNeighbourCellsAndShiftsThem)
   EXPECT_THROW(tooShort.build(x, y, z, 2, 0.2f), std::invalid_argument);
 }
 
-TEST(PeriodicBoundary, EveryParticleOfAPeriodicLatticeHasTheSameDensityAndNoForce)
+class PeriodicBoundaryEverySolver : public parafluid::testing::EverySolverTest
+{
+};
+
+TEST_P(PeriodicBoundaryEverySolver, EveryParticleOfAPeriodicLatticeHasTheSameDensityAndNoForce)
 {
   // Without walls or edges every particle has a full neighbourhood: the density is uniform and
   // the net force zero, for each solver (walls or a missing wrap would show at the faces).
-  for (PressureSolverType solver :
-       { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
+  const PressureSolverType solver = GetParam().type;
+  SPHParameters p = periodicBox(solver);
+  SPHSolver s(p, fill(p.domainBounds));
+  s.step(1e-4);
+  const auto& st = s.state();
+  const auto [lo, hi] = std::minmax_element(st.density.begin(), st.density.end());
+  EXPECT_LT((*hi - *lo) / p.restDensity, 1e-4f) << static_cast<int>(solver);
+  for (std::size_t i = 0; i < st.size(); ++i)
   {
-    SPHParameters p = periodicBox(solver);
-    SPHSolver s(p, fill(p.domainBounds));
-    s.step(1e-4);
-    const auto& st = s.state();
-    const auto [lo, hi] = std::minmax_element(st.density.begin(), st.density.end());
-    EXPECT_LT((*hi - *lo) / p.restDensity, 1e-4f) << static_cast<int>(solver);
-    for (std::size_t i = 0; i < st.size(); ++i)
-    {
-      // Float round-off only: an acceleration below 1 m/s^2 (a missing wrap pushes at ~1000 m/s^2).
-      ASSERT_LT(std::fabs(st.vx[i]) + std::fabs(st.vy[i]) + std::fabs(st.vz[i]), 1e-4f)
-        << "particle at " << st.x[i] << ", " << st.y[i] << ", " << st.z[i];
-    }
+    // Float round-off only: an acceleration below 1 m/s^2 (a missing wrap pushes at ~1000 m/s^2).
+    ASSERT_LT(std::fabs(st.vx[i]) + std::fabs(st.vy[i]) + std::fabs(st.vz[i]), 1e-4f)
+      << "particle at " << st.x[i] << ", " << st.y[i] << ", " << st.z[i];
   }
 }
 
@@ -118,3 +121,5 @@ TEST(PeriodicBoundary, TooShortAPeriodicAxisIsRefusedByName)
   EXPECT_NE(problem.find("periodic axis"), std::string::npos) << problem;
 }
 } // namespace
+
+PARAFLUID_FOR_EVERY_SOLVER(PeriodicBoundaryEverySolver);

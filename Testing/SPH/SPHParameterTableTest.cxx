@@ -27,7 +27,7 @@ TEST(SPHParameterTable, DeclarationsAreDistinctAndTheirDefaultsValid)
   for (const ParameterDeclaration& d : sphParameterTable())
   {
     EXPECT_TRUE(names.insert(d.name).second) << d.name;
-    EXPECT_EQ((d.real != nullptr) + (d.real64 != nullptr) + (d.integer != nullptr), 1)
+    EXPECT_EQ((d.real != nullptr) + (d.real64 != nullptr) + (d.integer != nullptr) + (d.integer64 != nullptr), 1)
       << d.name << " names exactly one field";
     EXPECT_LT(d.minimum, d.maximum) << d.name;
     EXPECT_GT(std::string(d.doc).size(), 10u) << d.name;

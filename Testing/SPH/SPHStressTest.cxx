@@ -6,6 +6,8 @@
 #include "parafluid/sph/SPHParameters.h"
 #include "parafluid/sph/SPHSolver.h"
 
+#include "EverySolver.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -191,34 +193,35 @@ TEST(SPHStress, DeltaSPHDamBreakFourThousandStepsPastAPillarOverARamp)
   runDamBreakPastTheObstacle(PressureSolverType::DeltaSPH, 4000);
 }
 
-TEST(SPHStress, HundredTimesTooLargeFixedStepStopsWithAClearError)
+class SPHStressEverySolver : public parafluid::testing::EverySolverTest
 {
-  for (PressureSolverType solver :
-       { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
+};
+
+TEST_P(SPHStressEverySolver, HundredTimesTooLargeFixedStepStopsWithAClearError)
+{
+  const PressureSolverType solver = GetParam().type;
+  SPHParameters p = water(solver);
+  p.adaptiveTimeStep = false;
+  p.timeStep = solver != PressureSolverType::DFSPH ? 1e-2f : 0.1f; // 100 x the adaptive step
+  const std::string outcome = runOrStop(p, smallBlock(), 300);
+  // WCSPH at 100 x its CFL step runs away (it used to go on at 600-800 m/s and 11 x rest density
+  // without a word): it must stop and name the property. DFSPH may hold it (checked for NaN
+  // inside) or stop the same way.
+  if (solver != PressureSolverType::DFSPH)
   {
-    SPHParameters p = water(solver);
-    p.adaptiveTimeStep = false;
-    p.timeStep = solver != PressureSolverType::DFSPH ? 1e-2f : 0.1f; // 100 x the adaptive step
-    const std::string outcome = runOrStop(p, smallBlock(), 300);
-    // WCSPH at 100 x its CFL step runs away (it used to go on at 600-800 m/s and 11 x rest density
-    // without a word): it must stop and name the property. DFSPH may hold it (checked for NaN
-    // inside) or stop the same way.
-    if (solver != PressureSolverType::DFSPH)
+    EXPECT_FALSE(outcome.empty()) << solverName(solver) << " at 100 x its stable step ran on";
+  }
+  if (!outcome.empty())
+  {
+    EXPECT_TRUE(outcome.find("unstable") != std::string::npos || outcome.find("blown up") != std::string::npos)
+      << outcome;
+    EXPECT_NE(outcome.find("TimeStep"), std::string::npos) << "the message names the property: " << outcome;
+    EXPECT_EQ(outcome.find("GasStiffness"),
+              solver != PressureSolverType::WCSPH ? std::string::npos : outcome.find("GasStiffness"))
+      << "only Müller's WCSPH has a GasStiffness to advise: " << outcome;
+    if (solver == PressureSolverType::DeltaSPH)
     {
-      EXPECT_FALSE(outcome.empty()) << solverName(solver) << " at 100 x its stable step ran on";
-    }
-    if (!outcome.empty())
-    {
-      EXPECT_TRUE(outcome.find("unstable") != std::string::npos || outcome.find("blown up") != std::string::npos)
-        << outcome;
-      EXPECT_NE(outcome.find("TimeStep"), std::string::npos) << "the message names the property: " << outcome;
-      EXPECT_EQ(outcome.find("GasStiffness"),
-                solver != PressureSolverType::WCSPH ? std::string::npos : outcome.find("GasStiffness"))
-        << "only Müller's WCSPH has a GasStiffness to advise: " << outcome;
-      if (solver == PressureSolverType::DeltaSPH)
-      {
-        EXPECT_NE(outcome.find("SoundSpeed"), std::string::npos) << outcome;
-      }
+      EXPECT_NE(outcome.find("SoundSpeed"), std::string::npos) << outcome;
     }
   }
 }
@@ -251,115 +254,100 @@ TEST(SPHStress, DFSPHRefusesKernelsWiderThanItsSolveConvergesFor)
   EXPECT_EQ(runOrStop(p, smallBlock(), 20), "");
 }
 
-TEST(SPHStress, ZeroViscositySkipsThePassAndStaysBounded)
+TEST_P(SPHStressEverySolver, ZeroViscositySkipsThePassAndStaysBounded)
 {
-  for (PressureSolverType solver :
-       { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
-  {
-    SPHParameters p = water(solver);
-    p.viscosity = 0.0f;
-    SPHSolver s(p, smallBlock());
-    const double initial = mechanicalEnergy(s);
-    s.advance(0.3);
-    // DFSPH stays within its bound. Müller's WCSPH without viscosity gains energy (its pressure
-    // force is not the gradient of the poly6 density's internal energy): bounded, not conserved.
-    const double bound = solver == PressureSolverType::WCSPH ? 2.0 : 1.05;
-    EXPECT_LT(mechanicalEnergy(s), bound * initial) << (solverName(solver));
-  }
+  const PressureSolverType solver = GetParam().type;
+  SPHParameters p = water(solver);
+  p.viscosity = 0.0f;
+  SPHSolver s(p, smallBlock());
+  const double initial = mechanicalEnergy(s);
+  s.advance(0.3);
+  // DFSPH stays within its bound. Müller's WCSPH without viscosity gains energy (its pressure
+  // force is not the gradient of the poly6 density's internal energy): bounded, not conserved.
+  const double bound = solver == PressureSolverType::WCSPH ? 2.0 : 1.05;
+  EXPECT_LT(mechanicalEnergy(s), bound * initial) << (solverName(solver));
 }
 
-TEST(SPHStress, WallFrictionAtExtremesOnlyTakesEnergyAndNeverBlowsUp)
+TEST_P(SPHStressEverySolver, WallFrictionAtExtremesOnlyTakesEnergyAndNeverBlowsUp)
 {
   // The small block (10 x 5 x 15 particles) collapses onto walls that stick: no-slip under a
   // viscosity of 200 Pa s, and the law of the wall for a fluid a million times more viscous than
   // water. Friction only takes energy out, whatever its strength.
-  for (PressureSolverType solver :
-       { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
-  {
-    const char* name = solverName(solver);
-    for (WallFriction friction : { WallFriction::FreeSlip, WallFriction::NoSlip, WallFriction::LogLaw })
-    {
-      SPHParameters p = water(solver);
-      p.wallFriction = friction;
-      p.viscosity = friction == WallFriction::NoSlip ? 200.0f : p.viscosity;
-      p.wallKinematicViscosity = 1.0f;
-      SPHSolver s(p, smallBlock());
-      const double initial = mechanicalEnergy(s);
-      s.advance(0.2);
-      for (std::size_t i = 0; i < s.state().size(); ++i)
-      {
-        ASSERT_TRUE(std::isfinite(s.state().x[i] + s.state().vx[i] + s.state().vz[i])) << name;
-      }
-      const double final = mechanicalEnergy(s);
-      std::printf("%s, wall friction %d: mechanical energy %.4f of the initial after 0.2 s\n", name,
-                  static_cast<int>(friction), final / initial);
-      EXPECT_LT(final, initial) << name << ", friction " << static_cast<int>(friction);
-      // A step 100 times too large with adaptivity off: the implicit wall law cannot make it worse
-      // than free-slip walls do; it runs or stops with the usual message.
-      p.adaptiveTimeStep = false;
-      p.timeStep = solver != PressureSolverType::DFSPH ? 1e-2f : 0.1f;
-      const std::string outcome = runOrStop(p, smallBlock(), 300);
-      if (!outcome.empty())
-      {
-        EXPECT_NE(outcome.find("TimeStep"), std::string::npos) << name << ": " << outcome;
-      }
-    }
-  }
-}
-
-TEST(SPHStress, ParticlesOnTopOfEachOtherAreRefusedByName)
-{
-  for (PressureSolverType solver :
-       { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
-  {
-    ParticleState s = smallBlock();
-    for (std::size_t i = 1; i < s.size(); i += 2) // every other particle onto its neighbour
-    {
-      s.x[i] = s.x[i - 1];
-      s.y[i] = s.y[i - 1];
-      s.z[i] = s.z[i - 1];
-    }
-    // SPH forces vanish at zero distance: such particles would never separate (500 at one point
-    // used to run on as one clump). Refused at the start, naming the first pair.
-    const std::string outcome = runOrStop(water(solver), s, 200);
-    EXPECT_NE(outcome.find("share their position"), std::string::npos) << outcome;
-    EXPECT_NE(outcome.find("particles 0 and 1"), std::string::npos) << outcome;
-  }
-}
-
-TEST(SPHStress, ASingleParticleFallsFreelyAndZeroParticlesAreFine)
-{
-  for (PressureSolverType solver :
-       { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
+  const PressureSolverType solver = GetParam().type;
+  const char* name = solverName(solver);
+  for (WallFriction friction : { WallFriction::FreeSlip, WallFriction::NoSlip, WallFriction::LogLaw })
   {
     SPHParameters p = water(solver);
-    SPHSolver one(p, ParticleState::atRest({ 0.3f }, { 0.05f }, { 0.35f }));
-    one.advance(0.1);
-    // Free fall: the symplectic schemes are exact for constant acceleration up to O(dt g t).
-    EXPECT_NEAR(one.state().z[0], 0.35 - 0.5 * 9.81 * 0.01, 3e-3);
-    EXPECT_NEAR(one.state().vz[0], -0.981, 1e-3);
-    SPHSolver none(p, ParticleState{});
-    EXPECT_GE(none.advance(0.1), 1);
-    EXPECT_EQ(none.state().size(), 0u);
-    EXPECT_EQ(none.kineticEnergy(), 0.0);
+    p.wallFriction = friction;
+    p.viscosity = friction == WallFriction::NoSlip ? 200.0f : p.viscosity;
+    p.wallKinematicViscosity = 1.0f;
+    SPHSolver s(p, smallBlock());
+    const double initial = mechanicalEnergy(s);
+    s.advance(0.2);
+    for (std::size_t i = 0; i < s.state().size(); ++i)
+    {
+      ASSERT_TRUE(std::isfinite(s.state().x[i] + s.state().vx[i] + s.state().vz[i])) << name;
+    }
+    const double final = mechanicalEnergy(s);
+    std::printf("%s, wall friction %d: mechanical energy %.4f of the initial after 0.2 s\n", name,
+                static_cast<int>(friction), final / initial);
+    EXPECT_LT(final, initial) << name << ", friction " << static_cast<int>(friction);
+    // A step 100 times too large with adaptivity off: the implicit wall law cannot make it worse
+    // than free-slip walls do; it runs or stops with the usual message.
+    p.adaptiveTimeStep = false;
+    p.timeStep = solver != PressureSolverType::DFSPH ? 1e-2f : 0.1f;
+    const std::string outcome = runOrStop(p, smallBlock(), 300);
+    if (!outcome.empty())
+    {
+      EXPECT_NE(outcome.find("TimeStep"), std::string::npos) << name << ": " << outcome;
+    }
   }
+}
+
+TEST_P(SPHStressEverySolver, ParticlesOnTopOfEachOtherAreRefusedByName)
+{
+  const PressureSolverType solver = GetParam().type;
+  ParticleState s = smallBlock();
+  for (std::size_t i = 1; i < s.size(); i += 2) // every other particle onto its neighbour
+  {
+    s.x[i] = s.x[i - 1];
+    s.y[i] = s.y[i - 1];
+    s.z[i] = s.z[i - 1];
+  }
+  // SPH forces vanish at zero distance: such particles would never separate (500 at one point
+  // used to run on as one clump). Refused at the start, naming the first pair.
+  const std::string outcome = runOrStop(water(solver), s, 200);
+  EXPECT_NE(outcome.find("share their position"), std::string::npos) << outcome;
+  EXPECT_NE(outcome.find("particles 0 and 1"), std::string::npos) << outcome;
+}
+
+TEST_P(SPHStressEverySolver, ASingleParticleFallsFreelyAndZeroParticlesAreFine)
+{
+  const PressureSolverType solver = GetParam().type;
+  SPHParameters p = water(solver);
+  SPHSolver one(p, ParticleState::atRest({ 0.3f }, { 0.05f }, { 0.35f }));
+  one.advance(0.1);
+  // Free fall: the symplectic schemes are exact for constant acceleration up to O(dt g t).
+  EXPECT_NEAR(one.state().z[0], 0.35 - 0.5 * 9.81 * 0.01, 3e-3);
+  EXPECT_NEAR(one.state().vz[0], -0.981, 1e-3);
+  SPHSolver none(p, ParticleState{});
+  EXPECT_GE(none.advance(0.1), 1);
+  EXPECT_EQ(none.state().size(), 0u);
+  EXPECT_EQ(none.kineticEnergy(), 0.0);
 }
 } // namespace
 
 namespace
 {
-TEST(SPHStress, FastButPhysicalRunsAreNotMistakenForBlowUps)
+TEST_P(SPHStressEverySolver, FastButPhysicalRunsAreNotMistakenForBlowUps)
 {
   // A block thrown at 5 m/s stays under the scene's speed limit (10 x (free fall + 5 m/s) + 1),
   // and its density stays near rest: the plausibility checks leave it alone.
-  for (PressureSolverType solver :
-       { PressureSolverType::WCSPH, PressureSolverType::DFSPH, PressureSolverType::DeltaSPH })
-  {
-    ParticleState s = smallBlock();
-    std::fill(s.vx.begin(), s.vx.end(), 5.0f);
-    const std::string outcome = runOrStop(water(solver), s, 100);
-    EXPECT_TRUE(outcome.empty()) << outcome;
-  }
+  const PressureSolverType solver = GetParam().type;
+  ParticleState s = smallBlock();
+  std::fill(s.vx.begin(), s.vx.end(), 5.0f);
+  const std::string outcome = runOrStop(water(solver), s, 100);
+  EXPECT_TRUE(outcome.empty()) << outcome;
 }
 } // namespace
 
@@ -381,3 +369,5 @@ TEST(SPHStress, StabilityAdviceNamesOnlyTheChosenSolversProperties)
   }
 }
 } // namespace
+
+PARAFLUID_FOR_EVERY_SOLVER(SPHStressEverySolver);

@@ -6,6 +6,8 @@
 #include "parafluid/sph/PressureSolver.h"
 #include "parafluid/sph/Simulation.h"
 
+#include "EverySolver.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -144,7 +146,7 @@ TEST(SolverRegistry, ACUDABackendThisBuildLacksIsRefusedByName)
   }
 }
 
-class EverySolver : public ::testing::TestWithParam<SolverEntry>
+class EverySolver : public parafluid::testing::EverySolverTest
 {
 };
 
@@ -247,5 +249,4 @@ TEST_P(EverySolver, RefusesASupportWiderThanItsLimit)
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Registry, EverySolver, ::testing::ValuesIn(solverRegistry()),
-                         [](const ::testing::TestParamInfo<SolverEntry>& info) { return std::string(info.param.key); });
+PARAFLUID_FOR_EVERY_SOLVER(EverySolver);

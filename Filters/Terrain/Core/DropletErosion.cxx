@@ -1,5 +1,7 @@
 #include "parafluid/terrain/DropletErosion.h"
 
+#include "parafluid/terrain/TerrainParameterTables.h"
+
 #include "parafluid/terrain/PerlinNoise.h"
 
 #include <algorithm>
@@ -10,49 +12,7 @@ namespace parafluid::terrain
 {
 std::string DropletSettings::problem() const
 {
-  const auto bad = [](const char* name, double value, const char* allowed)
-  { return std::string(name) + " = " + std::to_string(value) + " is not allowed: it must be " + allowed; };
-  if (!(drops >= 0 && drops <= 2000000000LL))
-  {
-    return bad("Drops", static_cast<double>(drops), "from 0 to 2e9");
-  }
-  if (!(inertia >= 0.0f && inertia <= 1.0f))
-  {
-    return bad("Inertia", inertia, "from 0 to 1");
-  }
-  if (!(capacity >= 0.0f && capacity <= 1e9f))
-  {
-    return bad("Capacity", capacity, "from 0 to 1e9");
-  }
-  if (!(erodeRate >= 0.0f && erodeRate <= 1.0f))
-  {
-    return bad("ErodeRate", erodeRate, "from 0 to 1");
-  }
-  if (!(depositRate >= 0.0f && depositRate <= 1.0f))
-  {
-    return bad("DepositRate", depositRate, "from 0 to 1");
-  }
-  if (!(evaporation >= 0.0f && evaporation <= 1.0f))
-  {
-    return bad("Evaporation", evaporation, "from 0 to 1");
-  }
-  if (!(radius >= 1.0f && radius <= 32.0f))
-  {
-    return bad("Radius", radius, "from 1 to 32 cells");
-  }
-  if (!(gravity >= 0.0f && gravity <= 1e3f) || !(minSlope >= 0.0f && minSlope <= 10.0f))
-  {
-    return bad("Gravity or MinSlope", gravity, "within 0..1000 and 0..10");
-  }
-  if (!(maxSteps >= 1 && maxSteps <= 100000))
-  {
-    return bad("MaxLifetime", maxSteps, "from 1 to 100000 steps");
-  }
-  if (!(batchSize >= 1 && batchSize <= 1 << 20))
-  {
-    return bad("batch size", batchSize, "from 1 to 2^20");
-  }
-  return {};
+  return checkDeclared(dropletParameterTable(), *this);
 }
 
 namespace

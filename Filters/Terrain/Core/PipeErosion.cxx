@@ -1,5 +1,7 @@
 #include "parafluid/terrain/PipeErosion.h"
 
+#include "parafluid/terrain/TerrainParameterTables.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -8,29 +10,7 @@ namespace parafluid::terrain
 {
 std::string PipeSettings::problem() const
 {
-  const auto check = [](const char* name, float value, float lo, float hi, const char* unit) -> std::string
-  {
-    if (std::isfinite(value) && value >= lo && value <= hi)
-    {
-      return {};
-    }
-    return std::string(name) + " = " + std::to_string(value) + " is not allowed: it must be from " +
-           std::to_string(lo) + " to " + std::to_string(hi) + unit;
-  };
-  for (const std::string& p :
-       { check("TimeStep", timeStep, 1e-6f, 10.0f, " s"), check("RainRate", rainRate, 0.0f, 10.0f, " m/s"),
-         check("Gravity", gravity, 0.0f, 1000.0f, " m/s^2"), check("SedimentCapacity", capacity, 0.0f, 1e6f, ""),
-         check("DissolveRate", dissolveRate, 0.0f, 1e6f, " 1/s"),
-         check("PipeDepositRate", depositRate, 0.0f, 1e6f, " 1/s"),
-         check("PipeEvaporation", evaporation, 0.0f, 1e6f, " 1/s"), check("MinTilt", minTilt, 0.0f, 1.0f, ""),
-         check("CapacityDepth", capacityDepth, 1e-6f, 1e6f, " m") })
-  {
-    if (!p.empty())
-    {
-      return p;
-    }
-  }
-  return {};
+  return checkDeclared(pipeParameterTable(), *this);
 }
 
 // Layout: every field has a ring of ghost cells around the grid (row stride nx + 2), so a cell's

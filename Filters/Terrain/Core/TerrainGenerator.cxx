@@ -1,5 +1,7 @@
 #include "parafluid/terrain/TerrainGenerator.h"
 
+#include "parafluid/terrain/TerrainParameterTables.h"
+
 #include "parafluid/terrain/DiamondSquare.h"
 
 #include <atomic>
@@ -11,49 +13,8 @@ namespace parafluid::terrain
 {
 std::string TerrainSettings::problem() const
 {
-  const auto bad = [](const char* name, double value, const char* allowed)
-  { return std::string(name) + " = " + std::to_string(value) + " is not allowed: it must be " + allowed; };
-  if (!(fractal.octaves >= 1 && fractal.octaves <= 24))
-  {
-    return bad("Octaves", fractal.octaves, "1 to 24");
-  }
-  if (!(fractal.lacunarity >= 1.01f && fractal.lacunarity <= 16.0f))
-  {
-    return bad("Lacunarity", fractal.lacunarity, "from 1.01 to 16");
-  }
-  if (!(fractal.persistence > 0.0f && fractal.persistence <= 1.0f))
-  {
-    return bad("Persistence", fractal.persistence, "above 0 and at most 1");
-  }
-  if (!(featureSize > 0.0 && featureSize <= 1e9))
-  {
-    return bad("FeatureSize", featureSize, "a positive length up to 1e9 m");
-  }
-  if (!(std::isfinite(warpStrength) && std::fabs(warpStrength) <= 1e9))
-  {
-    return bad("WarpStrength", warpStrength, "a finite length up to 1e9 m");
-  }
-  if (!(warpScale > 0.0 && warpScale <= 1e9))
-  {
-    return bad("WarpScale", warpScale, "a positive length up to 1e9 m");
-  }
-  if (!(warpOctaves >= 1 && warpOctaves <= 24))
-  {
-    return bad("WarpOctaves", warpOctaves, "1 to 24");
-  }
-  if (!(roughness >= 0.0 && roughness <= 2.0))
-  {
-    return bad("Roughness", roughness, "from 0 to 2");
-  }
-  if (!(std::isfinite(heightScale) && std::fabs(heightScale) <= 1e7))
-  {
-    return bad("HeightScale", heightScale, "a finite height up to 1e7 m");
-  }
-  if (!(std::isfinite(baseHeight) && std::fabs(baseHeight) <= 1e7))
-  {
-    return bad("BaseHeight", baseHeight, "a finite height up to 1e7 m");
-  }
-  return {};
+  const std::string fractalProblem = checkDeclared(fractalParameterTable(), fractal);
+  return fractalProblem.empty() ? checkDeclared(terrainParameterTable(), *this) : fractalProblem;
 }
 
 namespace

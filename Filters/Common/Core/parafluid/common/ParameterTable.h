@@ -26,13 +26,22 @@ struct ParameterDeclaration
   float Parameters::*real = nullptr;
   double Parameters::*real64 = nullptr;
   int Parameters::*integer = nullptr;
+  long long Parameters::*integer64 = nullptr;
 
   double value(const Parameters& p) const
   {
-    return real ? static_cast<double>(p.*real) : (real64 ? p.*real64 : static_cast<double>(p.*integer));
+    if (real)
+    {
+      return static_cast<double>(p.*real);
+    }
+    if (real64)
+    {
+      return p.*real64;
+    }
+    return integer ? static_cast<double>(p.*integer) : static_cast<double>(p.*integer64);
   }
   double defaultValue() const { return this->value(Parameters{}); }
-  bool isInteger() const { return integer != nullptr; }
+  bool isInteger() const { return integer != nullptr || integer64 != nullptr; }
   void set(Parameters& p, double v) const
   {
     if (real)
@@ -43,14 +52,18 @@ struct ParameterDeclaration
     {
       p.*real64 = v;
     }
-    else
+    else if (integer)
     {
       p.*integer = static_cast<int>(v);
+    }
+    else
+    {
+      p.*integer64 = static_cast<long long>(v);
     }
   }
 };
 
-/// Declarations of a float, double or int member of `Parameters`.
+/// Declarations of a float, double, int or long long member of `Parameters`.
 template<class Parameters, class Field>
 ParameterDeclaration<Parameters> declare(const char* name, const char* label, const char* unit, double minimum,
                                          double maximum, Field Parameters::*field, const char* doc,
@@ -65,10 +78,14 @@ ParameterDeclaration<Parameters> declare(const char* name, const char* label, co
   {
     d.real64 = field;
   }
+  else if constexpr (std::is_same_v<Field, int>)
+  {
+    d.integer = field;
+  }
   else
   {
-    static_assert(std::is_same_v<Field, int>, "a declared parameter is a float, a double or an int");
-    d.integer = field;
+    static_assert(std::is_same_v<Field, long long>, "a declared parameter is a float, a double, an int or a long long");
+    d.integer64 = field;
   }
   return d;
 }
@@ -124,9 +141,10 @@ std::string checkDeclared(const std::vector<ParameterDeclaration<Parameters>>& t
 }
 
 /// The declarations a filter offers as a Markdown table for the docs: property, unit, range,
-/// default and description.
+/// default (the member's in `defaults`) and description.
 template<class Parameters>
-std::string markdownTable(const std::vector<ParameterDeclaration<Parameters>>& table)
+std::string markdownTable(const std::vector<ParameterDeclaration<Parameters>>& table,
+                          const Parameters& defaults = Parameters{})
 {
   std::string md = "| property | unit | range | default | what it is |\n|---|---|---|---|---|\n";
   for (const ParameterDeclaration<Parameters>& d : table)
@@ -137,7 +155,7 @@ std::string markdownTable(const std::vector<ParameterDeclaration<Parameters>>& t
     }
     md += std::string("| `") + d.name + "` | " + (*d.unit ? d.unit : "–") + " | " + formatNumber(d.minimum) + " to " +
           formatNumber(d.maximum) + (d.zeroMeans ? std::string(", or 0: ") + d.zeroMeans : std::string()) + " | " +
-          formatNumber(d.zeroMeans ? 0.0 : d.defaultValue()) + " | " + d.doc + " |\n";
+          formatNumber(d.zeroMeans ? 0.0 : d.value(defaults)) + " | " + d.doc + " |\n";
   }
   return md;
 }
