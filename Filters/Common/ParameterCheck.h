@@ -4,6 +4,8 @@
 // pvpython call it), gives the value and says what is allowed, so a user never gets silent
 // nonsense from an absurd parameter. The ranges mirror the XML domains (the GUI's limits and
 // tooltips); Testing/Common/test_parameter_table.py holds the two together.
+#include "parafluid/common/ParameterTable.h"
+
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -16,10 +18,9 @@ public:
   /// `value` finite and within [lo, hi].
   ParameterCheck& inRange(const char* name, double value, double lo, double hi, const char* unit = "")
   {
-    if (this->Problem.empty() && !(std::isfinite(value) && value >= lo && value <= hi))
+    if (this->Problem.empty())
     {
-      this->Problem = describe(name, value) + " is not allowed: it must be a finite number from " + number(lo) +
-                      " to " + number(hi) + (*unit ? std::string(" ") + unit : std::string());
+      this->Problem = parafluid::checkNumber(name, unit, lo, hi, value);
     }
     return *this;
   }
@@ -64,12 +65,7 @@ public:
   bool ok() const { return this->Problem.empty(); }
   const std::string& problem() const { return this->Problem; }
 
-  static std::string number(double v)
-  {
-    std::ostringstream text;
-    text << v;
-    return text.str();
-  }
+  static std::string number(double v) { return parafluid::formatNumber(v); }
   static std::string describe(const char* name, double value) { return std::string(name) + " = " + number(value); }
 
 private:
