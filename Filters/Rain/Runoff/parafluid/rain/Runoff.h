@@ -4,8 +4,10 @@
 // particles at the impact points, with the drops' velocities, and SPH Step's solver moves them
 // with the triangulated ground as their boundary.
 //  - ConserveVolume (default): every particle carries d^3 of water (d the particle spacing); a cell
-//    inserts one whenever the rain it gathered reaches d^3, so the water in the SPH equals the rain
-//    that fell, within one particle per cell (what waits in the cells).
+//    inserts one whenever the rain it gathered reaches d^3, and the cells' remainders, once they add
+//    up to a particle, become particles in the cells owed the most; so the water in the SPH equals
+//    the rain that fell within one particle's volume over the whole terrain, at any rate and Cells.
+//    (With Infiltration the remainders are not pooled: they soak into the ground of their cell.)
 //  - Otherwise the seed's rule: one particle every RainScale impacts in a cell.
 //  - The drops step by `rainStep`; the SPH advances once every `sphEvery` drop steps, with the
 //    impacts of those steps gathered.
@@ -91,6 +93,9 @@ public:
   double insertedVolume() const { return this->Inserted; }
   double infiltratedVolume() const { return this->Infiltrated; }
   double waitingVolume() const;
+  /// Per precipitation cell, the rain it gathered less the particles it made [m^3] (ConserveVolume):
+  /// under one particle's volume either way.
+  const std::vector<double>& cellAccounts() const { return this->Gathered; }
   /// Volume of one particle's water [m^3] (d^3).
   double particleVolume() const;
   std::size_t particleCount() const;
@@ -98,8 +103,28 @@ public:
   std::int64_t sphSteps() const { return this->SPHSteps; }
 
 private:
+  /// A cell's latest impact: where its next particle appears.
+  struct LastImpact
+  {
+    float position[3] = { 0, 0, 0 };
+    float velocity[3] = { 0, 0, 0 };
+    bool onWater = false;
+    std::int64_t step = -1; // the drop step that recorded it
+    static LastImpact of(const Impact& impact, std::int64_t step = -1);
+  };
+  struct NewParticles
+  {
+    std::vector<float> x, y, z, vx, vy, vz;
+  };
   void dropStep(double dt);
-  void insert(const std::vector<Impact>& impacts);
+  /// Adds the impacts' water to their cells (ConserveVolume), or counts them (RainScale).
+  void gather(const std::vector<Impact>& impacts);
+  /// Turns the water the cells gathered into particles and adds them to the SPH.
+  void makeParticles();
+  void apportionRemainders(NewParticles& born);
+  /// `count` particles of d^3 at and around an impact, on the ground or the water it hit.
+  void emit(const LastImpact& impact, int count, NewParticles& born);
+  void addToWater(NewParticles& born);
   void infiltrate(double dt);
   void updateWaterLevels();
 
@@ -115,9 +140,13 @@ private:
   std::vector<std::int64_t> Counted;
   std::vector<float> WaterLevels;
   std::vector<std::uint32_t> ImpactCount;
-  std::vector<double> Gathered;     // water waiting in each cell [m^3] (ConserveVolume)
-  std::vector<std::uint32_t> Tally; // impacts since the cell's last particle (RainScale)
-  std::vector<double> Soak;         // infiltration capacity each wet cell has built up [m^3]
+  std::vector<double> Gathered;       // water each cell is owed [m^3], under d^3 either way (ConserveVolume)
+  std::vector<LastImpact> Latest;     // each cell's latest impact (ConserveVolume)
+  double Waiting = 0.0;               // the sum of Gathered [m^3], in [0, d^3) after each drop step
+  std::vector<std::uint32_t> Touched; // cells with impacts in this drop step
+  NewParticles Born;                  // particles made in this drop step
+  std::vector<std::uint32_t> Tally;   // impacts since the cell's last particle (RainScale)
+  std::vector<double> Soak;           // infiltration capacity each wet cell has built up [m^3]
   double Fallen = 0.0, Inserted = 0.0, Infiltrated = 0.0;
   std::vector<Impact> Impacts;
 };
