@@ -195,7 +195,14 @@ int vtkPFStableFluids::RequestData(vtkInformation*, vtkInformationVector** input
         vtkErrorMacro(<< "Stable Fluids: " << memory << "; lower Resolution");
         return 0;
       }
-      const long long target = parafluid::vtk::requestedOutput(outInfo, 0.0, interval, this->NumberOfOutputs);
+      const std::optional<long long> requested =
+        parafluid::vtk::requestedOutput(outInfo, 0.0, interval, this->NumberOfOutputs);
+      if (!requested)
+      {
+        vtkErrorMacro(<< parafluid::vtk::notATimeError("Stable Fluids"));
+        return 0;
+      }
+      const long long target = *requested;
 
       vtkDataSet* sources = vtkDataSet::GetData(inputVector[1]);
       Cache& cache = *this->Cached;

@@ -20,16 +20,30 @@ void setOutputTimes(vtkInformation* outInfo, double start, double interval, int 
   outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
 }
 
-long long requestedOutput(vtkInformation* outInfo, double start, double interval, int count)
+std::optional<long long> requestedOutput(vtkInformation* outInfo, double start, double interval, int count)
 {
   const double requested = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
                              ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
                              : start;
-  const double steps = (requested - start) / interval;
-  if (!std::isfinite(steps))
+  if (std::isnan(requested))
   {
-    return 0;
+    return std::nullopt;
   }
-  return std::clamp<long long>(std::llround(std::clamp(steps, -1.0, 1e15)), 0, std::max(count, 0));
+  const long long last = std::max(count, 0);
+  const double steps = (requested - start) / interval;
+  if (!(steps > 0.0))
+  {
+    return 0; // before the start, -inf, or an interval that makes no steps
+  }
+  if (!(steps < static_cast<double>(last)))
+  {
+    return last; // past the end, +inf
+  }
+  return std::clamp<long long>(std::llround(steps), 0, last);
+}
+
+std::string notATimeError(const std::string& filter)
+{
+  return filter + ": the requested time is not a number (NaN); ask for a time in its TimestepValues";
 }
 } // namespace parafluid::vtk

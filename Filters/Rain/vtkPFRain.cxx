@@ -286,7 +286,14 @@ int vtkPFRain::RequestData(vtkInformation*, vtkInformationVector** inputVector, 
     this->ReportError("NumberOfOutputs must be from 0 to 100000 (got " + std::to_string(this->NumberOfOutputs) + ")");
     return 0;
   }
-  const long long target = parafluid::vtk::requestedOutput(outInfo, 0.0, interval, this->NumberOfOutputs);
+  const std::optional<long long> requested =
+    parafluid::vtk::requestedOutput(outInfo, 0.0, interval, this->NumberOfOutputs);
+  if (!requested)
+  {
+    this->ReportError(parafluid::vtk::notATimeError("Rain"));
+    return 0;
+  }
+  const long long target = *requested;
   const double t = static_cast<double>(target) * interval;
 
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0]);

@@ -28,6 +28,7 @@
 #include <cmath>
 #include <exception>
 #include <memory>
+#include <optional>
 
 namespace contract = parafluid::contract;
 using parafluid::sph::Simulation;
@@ -174,17 +175,6 @@ int vtkPFSPHStep::RequestUpdateExtent(vtkInformation*, vtkInformationVector** in
   return 1;
 }
 
-long long vtkPFSPHStep::RequestedOutputIndex(vtkInformation* outInfo) const
-{
-  if (!outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-  {
-    return 0;
-  }
-  const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-  const long long index = std::llround((t - this->StartTime) / this->OutputInterval);
-  return std::max(0LL, std::min<long long>(index, this->NumberOfOutputs));
-}
-
 int vtkPFSPHStep::RequestParticles(const Particles& particles, vtkInformationVector** inputVector,
                                    vtkInformation* outInfo, vtkPolyData* output)
 {
@@ -195,7 +185,14 @@ int vtkPFSPHStep::RequestParticles(const Particles& particles, vtkInformationVec
                       std::to_string(this->OutputInterval));
     return 0;
   }
-  const long long target = this->RequestedOutputIndex(outInfo);
+  const std::optional<long long> requested =
+    parafluid::vtk::requestedOutput(outInfo, this->StartTime, this->OutputInterval, this->NumberOfOutputs);
+  if (!requested)
+  {
+    this->ReportError(parafluid::vtk::notATimeError("SPH Step"));
+    return 0;
+  }
+  const long long target = *requested;
   // Moving forward under the same inputs and properties continues the cached simulation, and an
   // output already made is copied. The gathered copy is new on every update; the local input's
   // own MTime says whether it changed.

@@ -179,8 +179,6 @@ private:
   {
     parafluid::vtk::assignIfChanged(this, field, value);
   }
-  /// The output index (0 .. NumberOfOutputs) of the time the pipeline asks for.
-  long long RequestedOutputIndex(vtkInformation* outInfo) const;
   /// A warning when reaching output `target` will take millions of steps.
   void WarnAboutLongRun(long long target);
   /// The parameters with the automatic values taken from the input's field data; false (after an

@@ -43,6 +43,14 @@ print("plume: centre of density %.3f m -> %.3f m, updraught %.2f m/s" % (low, hi
 pftest.check(high > low + 0.3, "the plume rises: centre of density %.3f m -> %.3f m" % (low, high))
 pftest.check(w.max() > 0.3, "updraught %.2f m/s" % w.max())
 
+# A time past the end (infinity too) is the last output, not the first; NaN is refused by name.
+at_inf = fetch(smoke, float("inf"))
+pftest.check(np.array_equal(pftest.point_array(at_inf, "density"), pftest.point_array(later, "density")),
+             "t = inf gives the last output")
+messages = pftest.Messages(smoke.GetClientSideObject())
+smoke.UpdatePipeline(float("nan"))
+pftest.check(any("Stable Fluids" in e and "not a number" in e for e in messages.errors), "NaN: %r" % (messages.errors,))
+
 # Back in time: the output already made, the same state.
 again = fetch(smoke, 0.25)
 pftest.check(np.array_equal(pftest.point_array(again, "density"), pftest.point_array(start, "density")),

@@ -87,6 +87,13 @@ pftest.check(fallen > 2e-4 and 0 <= fallen - volume < 0.05 ** 3,
              "100 mm/h for 10 s: fallen %g m^3, water %g m^3" % (fallen, volume))
 Delete(light)
 
+# A time past the end (infinity too) is the last output, not the first; NaN is refused by name.
+pftest.check(np.array_equal(pftest.points(fetch(rain, 1, float("inf"))), pftest.points(fetch(rain, 1, times[-1]))),
+             "t = inf gives the last output")
+messages = pftest.Messages(rain.GetClientSideObject())
+rain.UpdatePipeline(float("nan"))
+pftest.check(any("Rain" in e and "not a number" in e for e in messages.errors), "NaN time: %r" % (messages.errors,))
+
 # Without runoff: drops and splashes only, any time at once.
 dry = Rain(Terrain=terrain, Runoff=0, RainfallRate=2000, DropsPerRealDrop=0.01, Cells=[8, 8], PrecipitationHeight=2.0,
            OutputInterval=0.1, NumberOfOutputs=1000)

@@ -77,4 +77,14 @@ for k, t in enumerate(adaptive.TimestepValues):
     d = pftest.fetch(adaptive, t)
     pftest.check(d.GetFieldData().GetArray("time").GetValue(0) == t, "adaptive output %d is not at t = %g" % (k, t))
 pftest.check(steps_taken(adaptive) > 0, "adaptive run took no steps")
+# A time past the end (infinity too) is the last output, one before the start the first; NaN is
+# refused with a message.
+last = adaptive.TimestepValues[-1]
+for asked, expected in ((float("inf"), last), (1e30, last), (float("-inf"), 0.0), (-5.0, 0.0)):
+    d = pftest.fetch(adaptive, asked)
+    got = d.GetFieldData().GetArray("time").GetValue(0)
+    pftest.check(got == expected, "asked for t = %r, got the output at %g instead of %g" % (asked, got, expected))
+messages = pftest.Messages(adaptive.GetClientSideObject())
+adaptive.UpdatePipeline(float("nan"))
+pftest.check(any("not a number" in e for e in messages.errors), "NaN time: errors %r" % (messages.errors,))
 print("sph time: ok")
