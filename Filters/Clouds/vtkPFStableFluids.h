@@ -21,6 +21,7 @@
 #include "vtkImageAlgorithm.h"
 
 #include "AssignIfChanged.h"
+#include "EnumerationChoice.h"
 #include "parafluid/clouds/StableFluidsParameterTable.h"
 
 #include <memory>
@@ -115,7 +116,15 @@ public:
     parafluid::vtk::assignIfChanged(this, this->Parameters.projectionTolerance, value);
   }
   double GetProjectionTolerance() const { return this->Parameters.projectionTolerance; }
-  vtkSetMacro(Preconditioner, int);
+  void SetPreconditioner(int value)
+  {
+    if (parafluid::vtk::isChoice(this, "Preconditioner", value, { "Multigrid", "Jacobi" }, this->Preconditioner) &&
+        value != this->Preconditioner)
+    {
+      this->Preconditioner = value;
+      this->Modified();
+    }
+  }
   vtkGetMacro(Preconditioner, int);
   vtkSetMacro(OutputDivergence, bool);
   vtkGetMacro(OutputDivergence, bool);

@@ -1,5 +1,6 @@
 #include "vtkPFRain.h"
 
+#include "EnumerationChoice.h"
 #include "HeightImage.h"
 #include "OutputTimes.h"
 #include "ParameterCheck.h"
@@ -103,7 +104,12 @@ void vtkPFRain::SetPressureSolver(int solver)
 
 void vtkPFRain::SetWallFriction(int friction)
 {
-  this->Set(this->Water.sph.wallFriction, static_cast<parafluid::sph::WallFriction>(std::clamp(friction, 0, 2)));
+  if (parafluid::vtk::isChoice(this, "WallFriction", friction,
+                               { "Free-slip", "No-slip (viscous)", "Turbulent (law of the wall)" },
+                               static_cast<int>(this->Water.sph.wallFriction)))
+  {
+    this->Set(this->Water.sph.wallFriction, static_cast<parafluid::sph::WallFriction>(friction));
+  }
 }
 
 void vtkPFRain::ReportError(const std::string& message)

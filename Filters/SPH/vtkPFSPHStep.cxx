@@ -1,5 +1,6 @@
 #include "vtkPFSPHStep.h"
 
+#include "EnumerationChoice.h"
 #include "OutputTimes.h"
 #include "ParticleArrays.h"
 #include "ParticleStateArrays.h"
@@ -79,8 +80,12 @@ int vtkPFSPHStep::GetPressureSolver() const
 
 void vtkPFSPHStep::SetSurfaceTensionModel(int model)
 {
-  const int clamped = std::clamp(model, 0, 2);
-  this->SetParameter(this->Parameters.surfaceTensionModel, static_cast<parafluid::sph::SurfaceTensionModel>(clamped));
+  if (parafluid::vtk::isChoice(this, "SurfaceTensionModel", model,
+                               { "Colour field (Müller)", "Akinci 2013", "Akinci 2013, cohesion only" },
+                               static_cast<int>(this->Parameters.surfaceTensionModel)))
+  {
+    this->SetParameter(this->Parameters.surfaceTensionModel, static_cast<parafluid::sph::SurfaceTensionModel>(model));
+  }
 }
 
 void vtkPFSPHStep::SetPeriodicAxes(int x, int y, int z)
@@ -94,8 +99,12 @@ void vtkPFSPHStep::SetPeriodicAxes(int x, int y, int z)
 
 void vtkPFSPHStep::SetWallFriction(int friction)
 {
-  const int clamped = std::clamp(friction, 0, 2);
-  this->SetParameter(this->Parameters.wallFriction, static_cast<WallFriction>(clamped));
+  if (parafluid::vtk::isChoice(this, "WallFriction", friction,
+                               { "Free-slip", "No-slip (viscous)", "Turbulent (law of the wall)" },
+                               static_cast<int>(this->Parameters.wallFriction)))
+  {
+    this->SetParameter(this->Parameters.wallFriction, static_cast<WallFriction>(friction));
+  }
 }
 
 void vtkPFSPHStep::SetWallRestitution(double value)

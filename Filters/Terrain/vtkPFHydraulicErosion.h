@@ -15,6 +15,8 @@
 
 #include "vtkPFTerrainAlgorithm.h"
 
+#include "EnumerationChoice.h"
+
 #include "parafluid/terrain/DropletErosion.h"
 #include "parafluid/terrain/PipeErosion.h"
 
@@ -25,7 +27,15 @@ public:
   vtkTypeMacro(vtkPFHydraulicErosion, vtkPFTerrainAlgorithm);
 
   /// 0 droplets, 1 virtual pipes.
-  vtkSetClampMacro(Method, int, 0, 1);
+  void SetMethod(int value)
+  {
+    if (parafluid::vtk::isChoice(this, "Method", value, { "Droplets", "Virtual Pipes" }, this->Method) &&
+        value != this->Method)
+    {
+      this->Method = value;
+      this->Modified();
+    }
+  }
   vtkGetMacro(Method, int);
   // Droplets
   void SetDrops(int value) { this->SetSetting(this->Droplets.drops, static_cast<long long>(value)); }

@@ -12,6 +12,8 @@
 
 #include "vtkPFTerrainAlgorithm.h"
 
+#include "EnumerationChoice.h"
+
 #include "parafluid/terrain/TerrainGenerator.h"
 
 class PARAFLUIDTERRAINFILTERS_EXPORT vtkPFProceduralTerrain : public vtkPFTerrainAlgorithm
@@ -29,13 +31,19 @@ public:
   /// 0 fractal noise, 1 diamond-square.
   void SetMethod(int value)
   {
-    this->SetSetting(this->Settings.method, static_cast<parafluid::terrain::TerrainMethod>(value));
+    if (parafluid::vtk::isChoice(this, "Method", value, { "Fractal Noise", "Diamond-Square" }, this->GetMethod()))
+    {
+      this->SetSetting(this->Settings.method, static_cast<parafluid::terrain::TerrainMethod>(value));
+    }
   }
   int GetMethod() const { return static_cast<int>(this->Settings.method); }
   /// 0 fBm, 1 turbulence, 2 ridged.
   void SetFractalType(int value)
   {
-    this->SetSetting(this->Settings.fractal.type, static_cast<parafluid::terrain::FractalType>(value));
+    if (parafluid::vtk::isChoice(this, "FractalType", value, { "fBm", "Turbulence", "Ridged" }, this->GetFractalType()))
+    {
+      this->SetSetting(this->Settings.fractal.type, static_cast<parafluid::terrain::FractalType>(value));
+    }
   }
   int GetFractalType() const { return static_cast<int>(this->Settings.fractal.type); }
   void SetSeed(int value)

@@ -165,6 +165,33 @@ for xml_name, make in MAKERS.items():
             sys.stdout.flush()
     Delete(probe)
 
+# Enumerations: a value that is none of the choices (-1, 99) is refused by name, the setting kept,
+# and the filter runs on with it.
+ENUMERATIONS = [("SPHStep", "WallFriction"), ("SPHStep", "SurfaceTensionModel"), ("SPHStep", "PressureSolver"),
+                ("Rain", "WallFriction"), ("Rain", "PressureSolver"), ("ProceduralTerrain", "Method"),
+                ("ProceduralTerrain", "FractalType"), ("HydraulicErosion", "Method"), ("StableFluids", "Preconditioner")]
+for xml_name, name in ENUMERATIONS:
+    for bad in (-1, 99):
+        cases += 1
+        proxy = MAKERS[xml_name]()
+        messages = pftest.Messages(proxy.GetClientSideObject())
+        proxy.SetPropertyWithName(name, bad)
+        proxy.UpdateVTKObjects()
+        where = "%s.%s = %d" % (xml_name, name, bad)
+        refused = [e for e in messages.errors if name in e]
+        if not refused:
+            failures.append("%s: taken with no error naming it (errors %r)" % (where, messages.errors))
+        del messages.errors[:]
+        try:
+            times = proxy.TimestepValues
+            t = times[-1] if times else None
+        except AttributeError:
+            t = None
+        data = pftest.fetch(proxy, t)
+        if messages.errors or not output_finite(data):
+            failures.append("%s: the filter did not run on with its kept setting: %r" % (where, messages.errors))
+        Delete(proxy)
+
 for failure in failures:
     print(failure)
 pftest.check(not failures, "%d of %d parameter cases failed" % (len(failures), cases))
