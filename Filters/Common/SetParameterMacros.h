@@ -5,6 +5,7 @@
 // is clamped to it (as the GUI's slider does). VTK's own vtkSetClampMacro lets NaN through, which
 // then reaches the shaders.
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 namespace parafluid::vtk
@@ -63,20 +64,24 @@ bool isFiniteValue(T value)
     }                                                                                                                  \
   }
 
-#define vtkPFSetFiniteVector3Macro(name, type)                                                                         \
+// A triple: NaN or infinite components are ignored with a warning (`rule` says what is allowed),
+// finite ones clamped to [min, max] each.
+#define vtkPFSetVector3Impl(name, type, min, max, rule)                                                                \
   virtual void Set##name(type _arg1, type _arg2, type _arg3)                                                           \
   {                                                                                                                    \
     if (!std::isfinite(_arg1) || !std::isfinite(_arg2) || !std::isfinite(_arg3))                                       \
     {                                                                                                                  \
-      vtkWarningMacro(<< #name " = (" << _arg1 << ", " << _arg2 << ", " << _arg3                                       \
-                      << ") is ignored: each component must be a finite number");                                      \
+      vtkWarningMacro(<< #name " = (" << _arg1 << ", " << _arg2 << ", " << _arg3 << ") is ignored: " rule);            \
       return;                                                                                                          \
     }                                                                                                                  \
-    if (this->name[0] != _arg1 || this->name[1] != _arg2 || this->name[2] != _arg3)                                    \
+    const type c[3] = { _arg1 < (min) ? (min) : (_arg1 > (max) ? (max) : _arg1),                                       \
+                        _arg2 < (min) ? (min) : (_arg2 > (max) ? (max) : _arg2),                                       \
+                        _arg3 < (min) ? (min) : (_arg3 > (max) ? (max) : _arg3) };                                     \
+    if (this->name[0] != c[0] || this->name[1] != c[1] || this->name[2] != c[2])                                       \
     {                                                                                                                  \
-      this->name[0] = _arg1;                                                                                           \
-      this->name[1] = _arg2;                                                                                           \
-      this->name[2] = _arg3;                                                                                           \
+      this->name[0] = c[0];                                                                                            \
+      this->name[1] = c[1];                                                                                            \
+      this->name[2] = c[2];                                                                                            \
       this->Modified();                                                                                                \
     }                                                                                                                  \
   }                                                                                                                    \
@@ -84,3 +89,12 @@ bool isFiniteValue(T value)
   {                                                                                                                    \
     this->Set##name(_arg[0], _arg[1], _arg[2]);                                                                        \
   }
+
+#define vtkPFSetFiniteVector3Macro(name, type)                                                                         \
+  vtkPFSetVector3Impl(name, type, -std::numeric_limits<type>::infinity(), std::numeric_limits<type>::infinity(),       \
+                      << "each component must be a finite number")
+
+// A colour or other triple clamped to [min, max] each (the XML's colour domain).
+#define vtkPFSetClampVector3Macro(name, type, min, max)                                                                \
+  vtkPFSetVector3Impl(name, type, min, max,                                                                            \
+                      << "each component must be a finite number from " << (min) << " to " << (max))

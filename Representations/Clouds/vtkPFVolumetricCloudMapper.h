@@ -33,7 +33,7 @@ public:
   vtkSetStdStringFromCharMacro(DensityArray);
   vtkGetCharFromStdStringMacro(DensityArray);
   /// Extinction per unit density [1/m]: a path of density x length D has transmittance exp(-Extinction D).
-  vtkPFSetClampMacro(Extinction, double, 0.0, 1e9);
+  vtkPFSetClampMacro(Extinction, double, 0.0, 1e6);
   vtkGetMacro(Extinction, double);
   /// Scattering over extinction (clouds ~1, smoke less).
   vtkPFSetClampMacro(Albedo, double, 0.0, 1.0);
@@ -68,12 +68,12 @@ public:
   vtkGetMacro(SunAzimuth, double);
   /// The sun's colour times its intensity (with the key light: the light's colour and intensity
   /// times LightIntensity).
-  vtkPFSetFiniteVector3Macro(SunColor, double);
+  vtkPFSetClampVector3Macro(SunColor, double, 0.0, 1.0);
   vtkGetVector3Macro(SunColor, double);
-  vtkPFSetClampMacro(LightIntensity, double, 0.0, 1e6);
+  vtkPFSetClampMacro(LightIntensity, double, 0.0, 1000.0);
   vtkGetMacro(LightIntensity, double);
   /// Ambient light from the sky above (+z).
-  vtkPFSetFiniteVector3Macro(SkyColor, double);
+  vtkPFSetClampVector3Macro(SkyColor, double, 0.0, 10.0);
   vtkGetVector3Macro(SkyColor, double);
   /// 0: lit cloud; 1: samples taken per pixel (red = samples / 255), to see the skipping's effect.
   vtkPFSetClampMacro(DisplayMode, int, 0, 1);

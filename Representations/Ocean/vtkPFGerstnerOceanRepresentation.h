@@ -72,24 +72,24 @@ public:
   /// 2: the wave normal as a colour (0.5 + 0.5 n).
   vtkPFSetClampMacro(ShadingMode, int, 0, 2);
   vtkPFSetFiniteVector3Macro(SolidColor, double);
-  vtkPFSetFiniteVector3Macro(DeepColor, double);
-  vtkPFSetFiniteVector3Macro(ShallowColor, double);
+  vtkPFSetClampVector3Macro(DeepColor, double, 0.0, 1.0);
+  vtkPFSetClampVector3Macro(ShallowColor, double, 0.0, 1.0);
   /// Metres of water over which the colour goes from shallow to deep.
   vtkPFSetFiniteMacro(ColorDepth, double);
-  vtkPFSetFiniteVector3Macro(FoamColor, double);
+  vtkPFSetClampVector3Macro(FoamColor, double, 0.0, 1.0);
   vtkPFSetFiniteMacro(FoamAmount, double);
   /// Sun elevation and azimuth [degrees], colour and intensity (linear radiance).
   vtkPFSetFiniteMacro(SunElevation, double);
   vtkPFSetFiniteMacro(SunAzimuth, double);
-  vtkPFSetFiniteVector3Macro(SunColor, double);
-  vtkPFSetFiniteMacro(SunIntensity, double);
+  vtkPFSetClampVector3Macro(SunColor, double, 0.0, 1.0);
+  vtkPFSetClampMacro(SunIntensity, double, 0.0, 1000.0);
   vtkPFSetFiniteMacro(Shininess, double);
   /// Procedural sky (when no environment images are given).
-  vtkPFSetFiniteVector3Macro(HorizonColor, double);
-  vtkPFSetFiniteVector3Macro(ZenithColor, double);
+  vtkPFSetClampVector3Macro(HorizonColor, double, 0.0, 1.0);
+  vtkPFSetClampVector3Macro(ZenithColor, double, 0.0, 1.0);
   /// Six cube map faces (+X, -X, +Y, -Y, +Z, -Z; +Y of the images is world +Z), all or none.
   void SetEnvironmentImage(int face, const char* file);
-  vtkPFSetFiniteMacro(EnvironmentScale, double);
+  vtkPFSetClampMacro(EnvironmentScale, double, 0.0, 1000.0);
   /// Capillary ripples: metres per tile of the normal map, strength (0 off), drift speed, and the
   /// distance beyond which they fade out.
   vtkPFSetFiniteMacro(RippleScale, double);
@@ -98,7 +98,7 @@ public:
   vtkPFSetFiniteMacro(RippleFade, double);
   /// Exposure of the tone mapping; with AutoExposure, chosen so the average water pixel maps to
   /// mid-grey (18 % linear) instead.
-  vtkPFSetFiniteMacro(Exposure, double);
+  vtkPFSetClampMacro(Exposure, double, 0.0, 100.0);
   vtkSetMacro(AutoExposure, bool);
   /// The exposure used by the last render (the automatic one when AutoExposure is on).
   double GetEffectiveExposure() const { return this->EffectiveExposure; }

@@ -68,6 +68,42 @@ for source, kind, prefix in SCENES:
                 failures.append("%s.%s = %r changed the picture (it must be ignored): %d pixels differ" % (kind, name, bad, int(np.count_nonzero(np.any(before != after, axis=-1)))))
             display.SetPropertyWithName(name, default if len(default) > 1 else default[0])
     Hide(source, view)
+# Colours and intensities with a domain: a finite value past its end draws what the end draws (the
+# setter clamps to the XML's domain), never black or white water from -1 or 1e30.
+CLAMPED = [(ocean, "Gerstner Ocean", ["OceanDeepColor", "OceanShallowColor", "OceanSunColor", "OceanHorizonColor",
+                                       "OceanZenithColor", "OceanSunIntensity", "OceanExposure"]),
+           (clouds, "Volumetric Cloud", ["CloudSunColor", "CloudSkyColor", "CloudLightIntensity", "CloudExtinction"])]
+
+
+def settled():
+    previous, now = None, image()
+    for _ in range(6):
+        if previous is not None and np.array_equal(previous, now):
+            break
+        previous, now = now, image()
+    return now
+
+
+for source, kind, names in CLAMPED:
+    display = Show(source, view)
+    display.SetRepresentationType(kind)
+    view.ResetCamera()
+    for name in names:
+        prop = display.GetProperty(name)
+        domain = prop.SMProperty.GetDomain("range")
+        default = list(prop) if prop.SMProperty.GetNumberOfElements() > 1 else [prop.GetData()]
+        for bad, end in ((1e30, domain.GetMaximum(0)), (-1.0, domain.GetMinimum(0))):
+            cases += 1
+            display.SetPropertyWithName(name, [end] * len(default) if len(default) > 1 else end)
+            at_end = settled()
+            display.SetPropertyWithName(name, [bad] * len(default) if len(default) > 1 else bad)
+            past = settled()
+            if not np.array_equal(at_end, past):
+                failures.append("%s.%s = %r does not draw what %r draws: %d pixels differ" % (
+                    kind, name, bad, end, int(np.count_nonzero(np.any(at_end != past, axis=-1)))))
+        display.SetPropertyWithName(name, default if len(default) > 1 else default[0])
+    Hide(source, view)
+
 for failure in failures:
     print(failure)
 pftest.check(not failures, "%d of %d display cases failed" % (len(failures), cases))
