@@ -118,11 +118,9 @@ public:
   double GetProjectionTolerance() const { return this->Parameters.projectionTolerance; }
   void SetPreconditioner(int value)
   {
-    if (parafluid::vtk::isChoice(this, "Preconditioner", value, { "Multigrid", "Jacobi" }, this->Preconditioner) &&
-        value != this->Preconditioner)
+    if (parafluid::vtk::isChoice(this, "Preconditioner", value, { "Multigrid", "Jacobi" }, this->Preconditioner))
     {
-      this->Preconditioner = value;
-      this->Modified();
+      parafluid::vtk::assignIfChanged(this, this->Preconditioner, value);
     }
   }
   vtkGetMacro(Preconditioner, int);

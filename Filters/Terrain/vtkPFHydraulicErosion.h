@@ -15,6 +15,7 @@
 
 #include "vtkPFTerrainAlgorithm.h"
 
+#include "AssignIfChanged.h"
 #include "EnumerationChoice.h"
 
 #include "parafluid/terrain/DropletErosion.h"
@@ -29,11 +30,9 @@ public:
   /// 0 droplets, 1 virtual pipes.
   void SetMethod(int value)
   {
-    if (parafluid::vtk::isChoice(this, "Method", value, { "Droplets", "Virtual Pipes" }, this->Method) &&
-        value != this->Method)
+    if (parafluid::vtk::isChoice(this, "Method", value, { "Droplets", "Virtual Pipes" }, this->Method))
     {
-      this->Method = value;
-      this->Modified();
+      parafluid::vtk::assignIfChanged(this, this->Method, value);
     }
   }
   vtkGetMacro(Method, int);
