@@ -1,5 +1,6 @@
 #include "vtkPFH5PartReader.h"
 
+#include "GuardedRequest.h"
 #include "ParticleArrays.h"
 #include "parafluid/common/MemoryBudget.h"
 #include "parafluid/h5part/Attributes.h"
@@ -231,7 +232,7 @@ int vtkPFH5PartReader::RequestData(vtkInformation*, vtkInformationVector**, vtkI
   }
   catch (const std::exception& e)
   {
-    error = "'" + this->FileName + "': " + e.what();
+    error = "'" + this->FileName + "': " + parafluid::vtk::exceptionText(e);
   }
   output->Initialize();
   vtkErrorMacro("ParaFluid H5Part Reader: " << error);
@@ -263,9 +264,11 @@ bool vtkPFH5PartReader::ReadStep(vtkInformation* info, vtkPolyData* output, std:
       error = where + "the requested time is NaN";
       return false;
     }
+    // Past the last step (+inf too) the last, before the first the first, else the nearest.
+    const double clamped = std::clamp(requested, this->StepTimes.front(), this->StepTimes.back());
     for (std::size_t k = 0; k < this->StepTimes.size(); ++k)
     {
-      if (std::fabs(this->StepTimes[k] - requested) < std::fabs(this->StepTimes[step] - requested))
+      if (std::fabs(this->StepTimes[k] - clamped) < std::fabs(this->StepTimes[step] - clamped))
       {
         step = k;
       }

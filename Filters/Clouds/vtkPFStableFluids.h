@@ -148,6 +148,11 @@ private:
   bool GridShape(int cells[3], double& h);
   /// The other properties within their XML domains; false with an error naming the first that is not.
   bool CheckParameters();
+  /// Steps the run on to output `target`: 1, or -1 when aborted, 0 with an error (the run is
+  /// dropped in both).
+  int AdvanceTo(long long target, double cellCount);
+  /// More steps than this in one output interval is an error, not a wait.
+  static constexpr double kMaxStepsPerOutput = 10000.0;
 
   // The declared parameters (StableFluidsParameterTable.h); the grid and the flags are set apart.
   parafluid::clouds::StableFluidsParameters Parameters = parafluid::clouds::sourceDefaults();

@@ -7,9 +7,21 @@
 
 #include <exception>
 #include <new>
+#include <string>
 
 namespace parafluid::vtk
 {
+/// An exception as a user reads it: a failed allocation says so and what to do (its own text is
+/// only "std::bad_alloc").
+inline std::string exceptionText(const std::exception& e)
+{
+  if (dynamic_cast<const std::bad_alloc*>(&e))
+  {
+    return "not enough memory for this request (an allocation failed); lower its resolution, size or particle count";
+  }
+  return e.what();
+}
+
 template<class Request>
 int guardedRequest(vtkAlgorithm* algorithm, const char* label, Request&& request)
 {

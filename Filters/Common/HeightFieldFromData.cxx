@@ -1,5 +1,6 @@
 #include "HeightFieldFromData.h"
 
+#include "GuardedRequest.h"
 #include "HeightImage.h"
 
 #include "parafluid/common/HeightField.h"
@@ -76,7 +77,7 @@ std::shared_ptr<HeightField> heightFieldFrom(vtkDataObject* data, double seaLeve
   }
   catch (const std::exception& e)
   {
-    error = e.what();
+    error = parafluid::vtk::exceptionText(e);
   }
   return nullptr;
 }

@@ -1,5 +1,6 @@
 #include "vtkPFParticleAlgorithm.h"
 
+#include "GuardedRequest.h"
 #include "ParticleArrays.h"
 
 #include "vtkInformation.h"
@@ -168,7 +169,7 @@ int vtkPFParticleAlgorithm::RequestData(vtkInformation*, vtkInformationVector** 
     }
     catch (const std::exception& e)
     {
-      this->ReportError(e.what());
+      this->ReportError(parafluid::vtk::exceptionText(e));
       result = 0;
     }
     if (!result)

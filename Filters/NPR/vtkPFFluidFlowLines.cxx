@@ -1,5 +1,6 @@
 #include "vtkPFFluidFlowLines.h"
 
+#include "GuardedRequest.h"
 #include "ParticleArrays.h"
 
 #include "parafluid/npr/FlowLines.h"
@@ -109,7 +110,7 @@ int vtkPFFluidFlowLines::RequestParticles(const Particles& particles, vtkInforma
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro("Fluid Flow Lines: " << e.what());
+    vtkErrorMacro("Fluid Flow Lines: " << parafluid::vtk::exceptionText(e));
     return 0;
   }
 

@@ -108,7 +108,7 @@ int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inpu
       }
       catch (const std::exception& e)
       {
-        vtkErrorMacro("Foam Particles: " << e.what());
+        vtkErrorMacro("Foam Particles: " << parafluid::vtk::exceptionText(e));
         return 0;
       }
       this->UpdateProgress(0.9);

@@ -1,6 +1,7 @@
 #include "vtkPFGerstnerOcean.h"
 
 #include "GuardedRequest.h"
+#include "OutputTimes.h"
 #include "ParameterCheck.h"
 #include "parafluid/common/MemoryBudget.h"
 
@@ -123,9 +124,18 @@ int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inpu
       using namespace parafluid::ocean;
       vtkInformation* outInfo = outputVector->GetInformationObject(0);
       vtkPolyData* output = vtkPolyData::GetData(outInfo);
-      const double time = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-                            ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
-                            : 0.0;
+      const double requested = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+                                 ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+                                 : 0.0;
+      if (std::isnan(requested))
+      {
+        vtkErrorMacro(<< parafluid::vtk::notATimeError("Gerstner Ocean"));
+        return 0;
+      }
+      // Any time in the offered range as asked; past its end the last frame, before it the first.
+      const double last =
+        this->FrameRate > 0.0 ? std::floor(this->Duration * this->FrameRate + 1e-9) / this->FrameRate : 0.0;
+      const double time = std::clamp(requested, 0.0, std::isfinite(last) ? last : 0.0);
       const int nx = this->Resolution[0], ny = this->Resolution[1];
       parafluid::vtk::ParameterCheck check;
       check.inRange("Resolution", nx, 2, 65536)
@@ -177,7 +187,7 @@ int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inpu
       }
       catch (const std::exception& e)
       {
-        vtkErrorMacro(<< e.what());
+        vtkErrorMacro(<< parafluid::vtk::exceptionText(e));
         return 0;
       }
 

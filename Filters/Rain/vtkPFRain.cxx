@@ -1,7 +1,9 @@
 #include "vtkPFRain.h"
 
 #include "EnumerationChoice.h"
+#include "GuardedRequest.h"
 #include "HeightImage.h"
+#include "LongWork.h"
 #include "OutputTimes.h"
 #include "ParameterCheck.h"
 #include "ParticleArrays.h"
@@ -32,6 +34,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -114,7 +117,9 @@ void vtkPFRain::SetWallFriction(int friction)
 
 void vtkPFRain::ReportError(const std::string& message)
 {
-  vtkErrorMacro(<< "Rain: " << message);
+  // The cores' messages may name the filter already.
+  const bool named = message.rfind("Rain: ", 0) == 0;
+  vtkErrorMacro(<< (named ? "" : "Rain: ") << message);
 }
 
 int vtkPFRain::FillInputPortInformation(int, vtkInformation* info)
@@ -167,6 +172,10 @@ std::shared_ptr<const HeightField> vtkPFRain::ReadGround(vtkDataObject* input)
                           " (fill no-data with Terrain From Image first)");
         return nullptr;
       }
+      if (!this->GroundFits(static_cast<double>(heights.nx) * heights.ny, "the Terrain image's samples"))
+      {
+        return nullptr;
+      }
       return std::make_shared<HeightField>(std::move(heights.heights), heights.nx, heights.ny, heights.origin[0],
                                            heights.origin[1], heights.spacing[0], heights.spacing[1], 0.0);
     }
@@ -181,6 +190,11 @@ std::shared_ptr<const HeightField> vtkPFRain::ReadGround(vtkDataObject* input)
         this->ImpactResolution[1] > 8192)
     {
       this->ReportError("ImpactResolution must be from 2 to 8192 nodes per side");
+      return nullptr;
+    }
+    if (!this->GroundFits(static_cast<double>(this->ImpactResolution[0]) * this->ImpactResolution[1],
+                          "ImpactResolution"))
+    {
       return nullptr;
     }
     vtkNew<vtkTriangleFilter> triangles;
@@ -217,9 +231,26 @@ std::shared_ptr<const HeightField> vtkPFRain::ReadGround(vtkDataObject* input)
   }
   catch (const std::exception& e)
   {
-    this->ReportError(std::string("Terrain: ") + e.what());
+    this->ReportError(std::string("Terrain: ") + parafluid::vtk::exceptionText(e));
     return nullptr;
   }
+}
+
+bool vtkPFRain::GroundFits(double nodes, const char* property)
+{
+  // Measured: the height field 8 bytes a node, and with runoff 130 (the water levels, the SPH's
+  // boundary from the ground and their work arrays; 2048^2 nodes took 530 MB more than 256^2).
+  const double bytes = nodes * (this->SimulateRunoff ? 130.0 : 8.0);
+  char what[200];
+  std::snprintf(what, sizeof(what), "the ground of %.0f nodes (%s)%s", nodes, property,
+                this->SimulateRunoff ? " and its runoff" : "");
+  const std::string memory = parafluid::checkMemoryBudget(bytes, what);
+  if (!memory.empty())
+  {
+    this->ReportError(memory + "; lower " + property);
+    return false;
+  }
+  return true;
 }
 
 bool vtkPFRain::Resolve(const HeightField& ground, parafluid::rain::RainParameters& rain)
@@ -339,16 +370,16 @@ int vtkPFRain::RequestData(vtkInformation*, vtkInformationVector** inputVector, 
         cache.dropRun();
         cache.start(std::make_unique<Runoff>(rain, this->Water, ground));
       }
-      bool aborted = false;
       Runoff& runoff = *cache.simulation();
-      runoff.advance(t - runoff.time(),
-                     [this, &aborted](double fraction)
-                     {
-                       this->UpdateProgress(fraction);
-                       aborted = this->CheckAbort() != 0;
-                       return !aborted;
-                     });
-      if (aborted)
+      // Drop steps to the requested time, at a nominal 0.1 ms a step and 20 ns a drop on a 2-core
+      // machine (the SPH's share is measured as it runs).
+      const double span = t - runoff.time();
+      const double dropSteps = std::ceil(span / this->Water.rainStep);
+      parafluid::vtk::LongWork work(this, "Rain",
+                                    { dropSteps, 1e-4 + 2e-8 * static_cast<double>(runoff.rain().dropCount()),
+                                      "drop steps (of RainTimeStep to the requested time)", "the requested time" });
+      runoff.advance(span, [&work, dropSteps](double fraction) { return work.advance(fraction * dropSteps); });
+      if (work.aborted())
       {
         cache.dropRun();
         return 1;
@@ -381,7 +412,7 @@ int vtkPFRain::RequestData(vtkInformation*, vtkInformationVector** inputVector, 
   catch (const std::exception& e)
   {
     cache.dropRun();
-    this->ReportError(e.what());
+    this->ReportError(parafluid::vtk::exceptionText(e));
     return 0;
   }
   for (vtkPolyData* output : { drops, water, splashes })

@@ -102,6 +102,9 @@ private:
   {
     parafluid::vtk::assignIfChanged(this, field, value);
   }
+  /// The memory the ground of `nodes` samples (and its runoff) needs fits the budget; else an
+  /// error naming `property` and the bytes.
+  bool GroundFits(double nodes, const char* property);
   void ReportError(const std::string& message);
   /// The ground from the input; null after an error.
   std::shared_ptr<const parafluid::HeightField> ReadGround(vtkDataObject* input);

@@ -1,5 +1,6 @@
 #include "TriangleBoundaryFromSurface.h"
 
+#include "GuardedRequest.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkNew.h"
@@ -79,7 +80,7 @@ std::shared_ptr<const TriangleBoundary> makeTriangleBoundary(vtkPolyData* surfac
   }
   catch (const std::exception& e)
   {
-    error = e.what();
+    error = parafluid::vtk::exceptionText(e);
     return nullptr;
   }
 }

@@ -54,7 +54,7 @@ int vtkPFParticleBlock::RequestData(vtkInformation*, vtkInformationVector**, vtk
       }
       catch (const std::exception& e)
       {
-        vtkErrorMacro("Particle Block: " << e.what());
+        vtkErrorMacro("Particle Block: " << parafluid::vtk::exceptionText(e));
         return 0;
       }
       this->WriteBlock(lattice, mass, h, output);

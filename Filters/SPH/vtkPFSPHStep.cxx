@@ -1,6 +1,8 @@
 #include "vtkPFSPHStep.h"
 
 #include "EnumerationChoice.h"
+#include "GuardedRequest.h"
+#include "LongWork.h"
 #include "OutputTimes.h"
 #include "ParticleArrays.h"
 #include "ParticleStateArrays.h"
@@ -27,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <memory>
 #include <optional>
@@ -223,7 +226,6 @@ int vtkPFSPHStep::RequestParticles(const Particles& particles, vtkInformationVec
       return 0;
     }
   }
-  this->WarnAboutLongRun(target);
   const int advanced = this->AdvanceTo(target);
   if (advanced != 1)
   {
@@ -259,25 +261,6 @@ bool vtkPFSPHStep::ReadBoundary(vtkDataObject* boundaryData, vtkSmartPointer<vtk
     boundary = parafluid::vtk::heightSurface(heights.heights, heights.nx, heights.ny, heights.origin, heights.spacing);
   }
   return true;
-}
-
-void vtkPFSPHStep::WarnAboutLongRun(long long target)
-{
-  // The first step's length says how many the requested time needs; a run that will take
-  // millions of steps (a huge Viscosity, a tiny SmoothingLength, a very stiff fluid) is announced
-  // before the progress bar starts crawling, with what makes the steps short.
-  const Cache& cache = *this->Cached;
-  const double span = static_cast<double>(target - cache.outputIndex()) * this->OutputInterval;
-  const double dt = cache.simulation()->proposedTimeStep();
-  const double steps = dt > 0.0 ? span / dt : 0.0;
-  const double particles = static_cast<double>(cache.simulation()->particleCount());
-  if (steps * std::max(particles, 1.0) > 1e10 || steps > 1e6)
-  {
-    vtkWarningMacro(<< "SPH Step: reaching t = " << this->StartTime + target * this->OutputInterval << " s needs about "
-                    << steps << " time steps of " << dt << " s for " << particles
-                    << " particles: a long run (the step shrinks with a high Viscosity, a small SmoothingLength or a "
-                       "large GasStiffness; progress is shown and the run can be aborted)");
-  }
 }
 
 bool vtkPFSPHStep::ResolveParameters(vtkFieldData* fd, SPHParameters& p)
@@ -350,7 +333,7 @@ bool vtkPFSPHStep::ResolveParameters(vtkFieldData* fd, SPHParameters& p)
   }
   catch (const std::exception& e)
   {
-    this->ReportError(e.what());
+    this->ReportError(parafluid::vtk::exceptionText(e));
     return false;
   }
   return true;
@@ -419,7 +402,7 @@ bool vtkPFSPHStep::StartSimulation(vtkPointSet* input, vtkPolyData* surface)
   }
   catch (const std::exception& e)
   {
-    this->ReportError(e.what());
+    this->ReportError(parafluid::vtk::exceptionText(e));
     return false;
   }
   return true;
@@ -432,6 +415,20 @@ int vtkPFSPHStep::AdvanceTo(long long target)
   Cache& cache = *this->Cached;
   Simulation& simulation = *cache.simulation();
   const long long intervals = target - cache.outputIndex();
+  // The first step's length says how many the requested time needs, at a nominal 1 us a
+  // particle-step on a 2-core machine (delta-SPH's 1 M particle-steps/s).
+  const double proposed = simulation.proposedTimeStep();
+  const double steps = std::ceil(static_cast<double>(intervals) * this->OutputInterval /
+                                 (proposed > 0.0 ? std::min(proposed, this->OutputInterval) : this->OutputInterval));
+  const double perStep = static_cast<double>(std::max<std::size_t>(simulation.hostState().size(), 1));
+  char what[160];
+  std::snprintf(what, sizeof(what), "particle-steps (%.3g time steps of %.3g s for %.0f particles)", steps, proposed,
+                perStep);
+  parafluid::vtk::LongWork work(this, "SPH Step",
+                                { steps * perStep, 1e-6, what, "the requested time",
+                                  "the step shrinks with a high Viscosity, a small SmoothingLength or a large "
+                                  "GasStiffness" });
+  const double perInterval = steps * perStep / static_cast<double>(std::max(intervals, 1LL));
   bool aborted = false;
   try
   {
@@ -439,10 +436,9 @@ int vtkPFSPHStep::AdvanceTo(long long target)
     {
       this->StepsTakenLastUpdate +=
         simulation.advance(this->OutputInterval,
-                           [this, &aborted, k, intervals](double fraction)
+                           [&work, &aborted, k, perInterval](double fraction)
                            {
-                             this->UpdateProgress((static_cast<double>(k) + fraction) / static_cast<double>(intervals));
-                             aborted = this->CheckAbort() != 0;
+                             aborted = !work.advance((static_cast<double>(k) + fraction) * perInterval);
                              return !aborted;
                            });
     }
@@ -450,7 +446,7 @@ int vtkPFSPHStep::AdvanceTo(long long target)
   catch (const std::exception& e)
   {
     cache.dropRun();
-    this->ReportError(e.what());
+    this->ReportError(parafluid::vtk::exceptionText(e));
     return 0;
   }
   if (aborted)

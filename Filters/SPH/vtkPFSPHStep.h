@@ -179,8 +179,6 @@ private:
   {
     parafluid::vtk::assignIfChanged(this, field, value);
   }
-  /// A warning when reaching output `target` will take millions of steps.
-  void WarnAboutLongRun(long long target);
   /// The parameters with the automatic values taken from the input's field data; false (after an
   /// error that names the property to set) when the input cannot supply them.
   bool ResolveParameters(vtkFieldData* fieldData, parafluid::sph::SPHParameters& resolved);

@@ -1,5 +1,6 @@
 #include "vtkPFCarpetSurface.h"
 
+#include "GuardedRequest.h"
 #include "HeightFieldFromData.h"
 #include "ParticleArrays.h"
 #include "SurfaceMeshOutput.h"
@@ -144,7 +145,7 @@ int vtkPFCarpetSurface::RequestParticles(const Particles& particles, vtkInformat
   catch (const std::exception& e)
   {
     this->HasState = false;
-    this->ReportError(e.what());
+    this->ReportError(parafluid::vtk::exceptionText(e));
     return 0;
   }
   std::vector<float> depth;

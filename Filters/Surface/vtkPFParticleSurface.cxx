@@ -1,5 +1,6 @@
 #include "vtkPFParticleSurface.h"
 
+#include "GuardedRequest.h"
 #include "ParticleArrays.h"
 #include "SurfaceMeshOutput.h"
 
@@ -97,7 +98,7 @@ int vtkPFParticleSurface::RequestParticles(const Particles& particles, vtkInform
   }
   catch (const std::exception& e)
   {
-    this->ReportError(e.what());
+    this->ReportError(parafluid::vtk::exceptionText(e));
     return 0;
   }
   parafluid::vtk::meshToPolyData(mesh, output);

@@ -1,6 +1,7 @@
 #include "vtkPFHydraulicErosion.h"
 
 #include "HeightImage.h"
+#include "LongWork.h"
 #include "ParameterCheck.h"
 
 #include "vtkImageData.h"
@@ -62,17 +63,28 @@ bool vtkPFHydraulicErosion::ComputeTerrain(vtkInformationVector** inputVector, p
     return false;
   }
   ErosionMaps maps;
+  // Nominal costs on a 2-core machine: a drop of the default 64-step lifetime 3.7 us; a pipe
+  // iteration 4.4 ns a cell and 6 us besides (measured on 257 x 257 and 33 x 33 terrains).
   if (this->Method == 0)
   {
-    this->Budget = erodeWithDroplets(this->Droplets, grid, maps, [this](double f) { return this->Progress(f); });
+    parafluid::vtk::LongWork work(
+      this, this->Label(),
+      { static_cast<double>(this->Droplets.drops), 3.7e-6 * this->Droplets.maxSteps / 64.0, "drops", "Drops" });
+    this->Budget = erodeWithDroplets(this->Droplets, grid, maps,
+                                     [&work, this](double f)
+                                     { return work.advance(f * static_cast<double>(this->Droplets.drops)); });
   }
   else
   {
     PipeErosion pipes(grid, this->Pipes);
+    const double cells = static_cast<double>(grid.size());
+    parafluid::vtk::LongWork work(
+      this, this->Label(),
+      { static_cast<double>(this->Iterations), 4.4e-9 * cells + 6e-6, "iterations", "Iterations" });
     for (int k = 0; k < this->Iterations; ++k)
     {
       pipes.step();
-      if (k % 16 == 15 && !this->Progress(static_cast<double>(k + 1) / this->Iterations))
+      if (!work.advance(k + 1))
       {
         break;
       }

@@ -317,6 +317,80 @@ hid_t openForReading(const std::string& fileName, std::string& error)
   return file;
 }
 
+namespace
+{
+/// The file address of the object `name` in `group` (0 when it cannot be read).
+haddr_t objectAddress(hid_t group, const std::string& name)
+{
+  H5O_info_t info;
+  return H5Oget_info_by_name(group, name.c_str(), &info, H5P_DEFAULT) < 0 ? 0 : info.addr;
+}
+
+/// Steps that are not what their names say: two groups numbering the same step (the second is
+/// dropped), and step groups or datasets that are one object in the file (a damaged or copied
+/// link would show one step's particles as another's), named in warnings.
+void checkDistinctSteps(hid_t file, std::vector<StepEntry>& steps, std::vector<std::string>* warnings)
+{
+  std::map<long, std::string> byIndex;
+  std::map<haddr_t, std::string> owners;
+  std::vector<StepEntry> kept;
+  std::vector<std::string> found;
+  for (const StepEntry& entry : steps)
+  {
+    const auto [first, fresh] = byIndex.emplace(entry.index, entry.group);
+    if (!fresh)
+    {
+      found.push_back(entry.group + " and " + first->second + " both number step " + std::to_string(entry.index) +
+                      "; " + entry.group + " is left out");
+      continue;
+    }
+    kept.push_back(entry);
+    const haddr_t groupAddress = objectAddress(file, entry.group);
+    if (groupAddress != 0)
+    {
+      const auto [owner, own] = owners.emplace(groupAddress, entry.group);
+      if (!own)
+      {
+        found.push_back(entry.group + " is the same group in the file as " + owner->second + ": step " +
+                        std::to_string(entry.index) + " shows the particles of " + owner->second +
+                        " (a damaged or hard link?)");
+        continue;
+      }
+    }
+    Handle group(H5Gopen2(file, entry.group.c_str(), H5P_DEFAULT), H5Gclose);
+    if (!group.valid())
+    {
+      continue;
+    }
+    for (const std::string& child : childNames(group))
+    {
+      const haddr_t address = objectAddress(group, child);
+      if (address == 0)
+      {
+        continue;
+      }
+      const std::string path = entry.group + "/" + child;
+      const auto [owner, own] = owners.emplace(address, path);
+      if (!own)
+      {
+        found.push_back(path + " is the same dataset in the file as " + owner->second + ": step " +
+                        std::to_string(entry.index) + " shows its values (a damaged or hard link?)");
+      }
+    }
+  }
+  steps = std::move(kept);
+  // A few named, the rest counted: a file that hard-links one array into every step says so once.
+  for (std::size_t k = 0; warnings && k < found.size() && k < 3; ++k)
+  {
+    warnings->push_back(found[k]);
+  }
+  if (warnings && found.size() > 3)
+  {
+    warnings->push_back("and " + std::to_string(found.size() - 3) + " more steps or datasets shared like these");
+  }
+}
+} // namespace
+
 std::vector<StepEntry> listSteps(hid_t file, std::string& error, std::vector<std::string>* warnings)
 {
   std::vector<StepEntry> steps;
@@ -357,7 +431,13 @@ std::vector<StepEntry> listSteps(hid_t file, std::string& error, std::vector<std
     }
     steps.push_back(entry);
   }
-  std::sort(steps.begin(), steps.end(), [](const StepEntry& a, const StepEntry& b) { return a.index < b.index; });
+  // Of two groups numbering one step, the one named as H5Part names it ("Step#1", not "Step#01")
+  // comes first and is kept, else the first in the file's order.
+  const auto canonical = [](const StepEntry& e) { return e.group == "Step#" + std::to_string(e.index); };
+  std::stable_sort(steps.begin(), steps.end(),
+                   [&canonical](const StepEntry& a, const StepEntry& b)
+                   { return a.index < b.index || (a.index == b.index && canonical(a) && !canonical(b)); });
+  checkDistinctSteps(file, steps, warnings);
   if (steps.empty())
   {
     error = "the file has no H5Part step groups (\"Step#0\", \"Step#1\", ...)";

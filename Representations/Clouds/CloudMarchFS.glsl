@@ -10,6 +10,11 @@
 //  - optionally, multiple scattering by octaves of fainter, less directional, less absorbed light
 //    (Wrenninge, Kulla & Lundqvist 2013), and the "powder" darkening of edges facing the light
 //    (Schneider & Vos 2015);
+//  - light paths read with an extinction no higher than the grid resolves (the densest voxel
+//    2 optical depths deep): in thicker media the light within a voxel of the surface, which
+//    the lit side shows, would otherwise be taken from the voxel's centre, many optical depths
+//    in, and the cloud drawn black; a semi-infinite cloud's surface looks the same whatever its
+//    extinction (single scattering off a half-space, albedo x phase x mu0 / (mu0 + mu));
 //  - ambient sky light, dimmed by the density above the sample as diffuse light fades in a
 //    scattering medium, exp(-sqrt(3 (1 - albedo) (1 - g)) tau) (the diffusion approximation of
 //    radiative transfer, e.g. Bohren 1987), by the same octaves;
@@ -36,6 +41,9 @@ uniform vec3 boxMin;            // the volume's world box
 uniform vec3 boxMax;
 uniform vec3 blockCount;        // blocks per axis
 uniform float extinction;       // per unit density [1/m]
+uniform float lightExtinction;  // the extinction the light paths are read with: at most what
+                                // makes the densest voxel 2 deep (a denser cloud is lit at its
+                                // surface, which the grid cannot resolve: it is lit as that one)
 uniform float albedo;           // scattering over extinction
 uniform float stepLength;       // [m]
 uniform int maxSteps;
@@ -166,13 +174,13 @@ void main()
       float weight = 1.0, depthScale = 1.0, g = anisotropy;
       for (int k = 0; k < octaves; ++k)
       {
-        sun += weight * exp(-extinction * paths.r * depthScale) * phase(cosTheta, g) * lightColor;
-        sky += weight * exp(-diffuseDecay * extinction * paths.g * depthScale) * skyColor;
+        sun += weight * exp(-lightExtinction * paths.r * depthScale) * phase(cosTheta, g) * lightColor;
+        sky += weight * exp(-diffuseDecay * lightExtinction * paths.g * depthScale) * skyColor;
         weight *= 0.5;
         depthScale *= 0.5;
         g *= 0.5;
       }
-      sun *= mix(1.0, 1.0 - exp(-2.0 * extinction * paths.r), powder);
+      sun *= mix(1.0, 1.0 - exp(-2.0 * lightExtinction * paths.r), powder);
       vec3 scattered = albedo * sigmaT * (sun + sky);
       float stepDepth = sigmaT * dt;
       float stepTransmittance = exp(-stepDepth);

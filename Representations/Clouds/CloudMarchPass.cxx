@@ -100,6 +100,7 @@ bool CloudMarchPass::Run(vtkOpenGLRenderWindow* window, vtkRenderer* renderer, c
                             static_cast<float>(textures.BlockCount()[2]) };
   program->SetUniform3f("blockCount", blocks);
   program->SetUniformf("extinction", static_cast<float>(s.Extinction));
+  program->SetUniformf("lightExtinction", static_cast<float>(s.LightExtinction));
   program->SetUniformf("albedo", static_cast<float>(s.Albedo));
   program->SetUniformf("stepLength", static_cast<float>(s.StepLength));
   program->SetUniformi("maxSteps", s.MaxSteps);

@@ -16,7 +16,8 @@ class CloudVolumeTextures;
 
 struct CloudMarchSettings
 {
-  double Extinction = 8.0; // [1/m per unit density]
+  double Extinction = 8.0;      // [1/m per unit density]
+  double LightExtinction = 8.0; // the light paths' [1/m per unit density] (CloudMarchFS.glsl says why)
   double Albedo = 0.95;
   double Anisotropy = 0.6;
   double StepLength = 0.01; // [m]

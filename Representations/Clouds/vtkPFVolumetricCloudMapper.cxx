@@ -2,6 +2,7 @@
 
 #include "CloudMarchPass.h"
 #include "CloudVolumeTextures.h"
+#include "GuardedRequest.h"
 
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
@@ -127,6 +128,12 @@ void vtkPFVolumetricCloudMapper::ChooseLight(vtkRenderer* renderer, double direc
   vtkMath::Normalize(direction);
 }
 
+namespace
+{
+// The optical depth of the densest voxel beyond which the light paths are read as at this depth.
+constexpr double kResolvedVoxelDepth = 2.0;
+} // namespace
+
 void vtkPFVolumetricCloudMapper::Render(vtkRenderer* renderer, vtkVolume*)
 {
   this->LastMarched = false;
@@ -160,7 +167,7 @@ void vtkPFVolumetricCloudMapper::Render(vtkRenderer* renderer, vtkVolume*)
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro("Volumetric Cloud: " << e.what());
+    vtkErrorMacro("Volumetric Cloud: " << parafluid::vtk::exceptionText(e));
     return;
   }
   this->LastError.clear();
@@ -178,6 +185,8 @@ void vtkPFVolumetricCloudMapper::Render(vtkRenderer* renderer, vtkVolume*)
     return;
   }
   s.Extinction = this->Extinction;
+  // The densest voxel at most kResolvedVoxelDepth optical depths deep for the light.
+  s.LightExtinction = std::min(this->Extinction, kResolvedVoxelDepth / (textures.MaxDensity() * sample));
   s.Albedo = this->Albedo;
   s.Anisotropy = this->Anisotropy;
   s.StepLength = this->StepSize * sample;

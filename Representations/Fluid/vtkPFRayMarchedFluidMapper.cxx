@@ -2,6 +2,7 @@
 
 #include "FluidFrame.h"
 #include "FluidScreenTargets.h"
+#include "GuardedRequest.h"
 #include "RayMarchBoundsPass.h"
 #include "RayMarchBuffers.h"
 #include "RayMarchPass.h"
@@ -151,7 +152,7 @@ void vtkPFRayMarchedFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro("Ray-Marched Fluid: " << e.what());
+    vtkErrorMacro("Ray-Marched Fluid: " << parafluid::vtk::exceptionText(e));
     return;
   }
   if (in.Buffers.Grid().particleCount() == 0)

@@ -4,6 +4,7 @@
 #include "FluidFrame.h"
 #include "FluidScreenTargets.h"
 #include "FluidShadePass.h"
+#include "GuardedRequest.h"
 
 #include "parafluid/npr/BrushStrokes.h"
 
@@ -172,7 +173,7 @@ void vtkPFBrushStrokeFluidMapper::LayOutStrokes(vtkPointSet* input, vtkUnsignedC
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro("Brush strokes: " << e.what());
+    vtkErrorMacro("Brush strokes: " << parafluid::vtk::exceptionText(e));
   }
   // Colours: the scalar colouring, else the colour array from dark to light fluid colour.
   const double* fluidColor = this->GetFluidColor();

@@ -1,4 +1,5 @@
 #include "vtkPFGerstnerOceanRepresentation.h"
+#include "GuardedRequest.h"
 #include "parafluid/common/MathConstants.h"
 
 #include "GerstnerOceanShading.h"
@@ -251,7 +252,7 @@ void vtkPFGerstnerOceanRepresentation::UpdateModel(vtkDataObject* delivered)
       }
       catch (const std::exception& e)
       {
-        this->LastError = e.what();
+        this->LastError = parafluid::vtk::exceptionText(e);
       }
     }
   }
@@ -268,7 +269,7 @@ void vtkPFGerstnerOceanRepresentation::UpdateModel(vtkDataObject* delivered)
   }
   catch (const std::exception& e)
   {
-    this->LastError = e.what();
+    this->LastError = parafluid::vtk::exceptionText(e);
     p.waves.clear();
     floor.reset();
     this->Internal->Model = std::make_unique<GerstnerOcean>(p);

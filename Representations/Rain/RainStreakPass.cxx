@@ -107,6 +107,7 @@ bool RainStreakPass::Run(const RainFrame& frame, const RainPointBuffer& drops, c
   program->SetUniform2f("viewport", frame.Viewport);
   program->SetUniform3f("eye", frame.Eye);
   program->SetUniformf("widthScale", static_cast<float>(settings.WidthScale));
+  program->SetUniformf("maxStreakArea", static_cast<float>(settings.MaxStreakArea));
   program->SetUniformf("brightness", static_cast<float>(settings.Brightness));
   program->SetUniformf("opacity", static_cast<float>(settings.Opacity));
   program->SetUniformf("fogDistance", static_cast<float>(settings.FogDistance));

@@ -28,6 +28,7 @@ public:
     double Opacity = 0.6;
     double FogDistance = 0.0; // [m]; 0: none
     double WidthScale = 1.0;
+    double MaxStreakArea = 1e30; // [pixels] (parafluid::rain::streakAreaLimit)
     bool RadianceOnly = false;
   };
   /// Draws the drops; false when the shader did not compile.

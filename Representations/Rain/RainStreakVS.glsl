@@ -16,6 +16,8 @@ uniform mat4 WCVCMatrix;
 uniform mat4 VCDCMatrix;
 uniform vec2 viewport;       // pixels
 uniform float widthScale;    // streak width over the drop's diameter
+uniform float maxStreakArea; // the most pixels a streak may cover (StreakRaster.h's limit: all of
+                             // them together cover at most 16 views, whatever widthScale is)
 uniform vec3 eye;            // camera position, world
 uniform float brightness;
 uniform float opacity;
@@ -90,7 +92,8 @@ void main()
   // Projected diameter at the drop (perspective: P11 * D / depth * half the viewport height).
   float depth = max(-headVC.z, 1e-3);
   float diameterPx = widthScale * a.w * VCDCMatrix[1][1] / depth * 0.5 * viewport.y;
-  float halfWidth = 0.5 * max(diameterPx, 1.0);
+  float halfWidth = min(0.5 * max(diameterPx, 1.0),
+                        max(0.25 * (sqrt(lengthPx * lengthPx + 4.0 * maxStreakArea) - lengthPx), 0.5));
   float total = lengthPx + 2.0 * halfWidth;
   // Off screen (the capsule's box outside the viewport) or fainter than a level of an 8-bit
   // channel: a degenerate triangle, which the rasteriser drops before any setup.

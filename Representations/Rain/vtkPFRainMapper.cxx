@@ -208,6 +208,8 @@ void vtkPFRainMapper::Render(vtkRenderer* renderer, vtkActor*)
     settings.Opacity = this->Opacity;
     settings.FogDistance = this->FogDistance;
     settings.WidthScale = this->WidthScale;
+    settings.MaxStreakArea =
+      parafluid::rain::streakAreaLimit(static_cast<double>(size[0]) * size[1], in.Packed.size() / 8);
     settings.RadianceOnly = this->DisplayMode == 1;
     if (in.SoftwareRenderer < 0)
     {
@@ -224,6 +226,7 @@ void vtkPFRainMapper::Render(vtkRenderer* renderer, vtkActor*)
                                                   parafluid::RainStreakPass::kTransferRows };
       parafluid::rain::StreakLook look;
       look.widthScale = static_cast<float>(settings.WidthScale);
+      look.maxArea = static_cast<float>(settings.MaxStreakArea);
       look.brightness = static_cast<float>(settings.Brightness);
       look.opacity = static_cast<float>(settings.Opacity);
       look.fogDistance = static_cast<float>(settings.FogDistance);

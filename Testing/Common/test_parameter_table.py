@@ -9,11 +9,13 @@ few properties whose meaning is not a plain range (bounds, vectors, 0 = automati
 """
 import builtins
 import math
+import os
 import sys
 
 import numpy as np
 from paraview.simple import *
 from paraview import servermanager
+from vtkmodules.util.numpy_support import vtk_to_numpy
 import pftest
 
 pftest.load(globals())
@@ -191,6 +193,47 @@ for xml_name, name in ENUMERATIONS:
         if messages.errors or not output_finite(data):
             failures.append("%s: the filter did not run on with its kept setting: %r" % (where, messages.errors))
         Delete(proxy)
+
+# Times: every time-aware source and filter gives its last output for +inf and 1e30, its first
+# for -inf and -1e30, and refuses NaN with an error naming it.
+steps_file = os.path.join(pftest.scratch_dir(), "times.h5part")
+pftest.write_h5(steps_file, """
+for k in range(3):
+    g = f.create_group('Step#%d' % k)
+    g.attrs['time'] = 0.5 * k
+    g['x'] = np.arange(4, dtype='f4') + k
+    g['y'] = np.zeros(4, dtype='f4')
+    g['z'] = np.zeros(4, dtype='f4')
+""")
+TIME_AWARE = dict(MAKERS, ParaFluidH5PartReader=lambda: ParaFluidH5PartReader(FileName=steps_file))
+for xml_name in ("ParaFluidH5PartReader", "SPHStep", "GerstnerOcean", "Rain", "StableFluids"):
+    proxy = TIME_AWARE[xml_name]()
+    proxy.UpdatePipelineInformation()
+    times = list(proxy.TimestepValues)
+    messages = pftest.Messages(proxy.GetClientSideObject())
+
+    def points_at(t):
+        data = pftest.fetch(proxy, t)
+        data = data if data.IsA("vtkDataSet") else data.GetBlock(0)
+        if not data.GetNumberOfPoints():
+            return np.zeros((0, 3))
+        # Points of a point set, the first point array of an image (a grid's points never move).
+        values = data.GetPoints().GetData() if data.IsA("vtkPointSet") else data.GetPointData().GetArray(0)
+        return vtk_to_numpy(values).copy()
+
+    first, last = points_at(times[0]), points_at(times[-1])
+    for t, expected, label in ((float("inf"), last, "last"), (1e30, last, "last"), (float("-inf"), first, "first"),
+                               (-1e30, first, "first")):
+        cases += 1
+        got = points_at(t)
+        if messages.errors or got.shape != expected.shape or not np.array_equal(got, expected):
+            failures.append("%s at t = %g: not its %s output (errors %r)" % (xml_name, t, label, messages.errors))
+        del messages.errors[:]
+    cases += 1
+    proxy.UpdatePipeline(float("nan"))
+    if not any("not a number" in e or "NaN" in e for e in messages.errors):
+        failures.append("%s at t = NaN: no error saying so (errors %r)" % (xml_name, messages.errors))
+    Delete(proxy)
 
 for failure in failures:
     print(failure)

@@ -208,3 +208,38 @@ TEST(StreakRaster, TheImageDoesNotDependOnTheThreadCount)
   EXPECT_EQ(drawnOne, drawnThree);
   EXPECT_EQ(one, three);
 }
+
+TEST(StreakRaster, AWideStreakKeepsToItsShareOfTheFramesPixels)
+{
+  // The limit itself: a capped streak's rectangle covers its share exactly, one under it is kept.
+  for (const float length : { 0.0f, 3.0f, 40.0f, 500.0f })
+  {
+    for (const float area : { 2.0f, 50.0f, 4000.0f })
+    {
+      const float w = limitedHalfWidth(1e6f, length, area);
+      EXPECT_NEAR((length + 2.0f * w) * 2.0f * w, std::max(area, (length + 1.0f) * 1.0f), 1e-3f * area + 1e-3f)
+        << "length " << length << " area " << area;
+      EXPECT_EQ(limitedHalfWidth(0.7f, length, 1e9f), 0.7f);
+    }
+  }
+  EXPECT_FLOAT_EQ(streakAreaLimit(64.0 * 64.0, 16), kStreakScreens * 64.0f * 64.0f / 16.0f);
+  // A drop 1e6 times its width covers its share of the frame, not the whole of it.
+  StreakRaster raster;
+  UniformRadiance white(1, 1, 1);
+  StreakLook look;
+  look.widthScale = 1e6f;
+  look.maxArea = 100.0f;
+  std::vector<float> rgba;
+  const auto drop = fallingDrop();
+  ASSERT_EQ(raster.draw(drop.data(), 1, camera(), look, white.table, nullptr, rgba, 1), 1u);
+  int covered = 0;
+  for (int row = 0; row < kSize; ++row)
+  {
+    for (int column = 0; column < kSize; ++column)
+    {
+      covered += alphaAt(rgba, column, row) > 0.0f ? 1 : 0;
+    }
+  }
+  EXPECT_GT(covered, 20);
+  EXPECT_LE(covered, 100 + 4 * 10); // the rectangle's pixels, and a rim of partly covered ones
+}

@@ -2,6 +2,8 @@
 rain that fell, time awareness (forward continues, back gives the output already made), a surface as
 the terrain, drops and splashes without runoff, and errors that name the property."""
 import numpy as np
+import os
+
 from paraview.simple import *
 from paraview import servermanager
 import pftest
@@ -109,4 +111,18 @@ for prop, value, word in (("PrecipitationHeight", 0.05, "PrecipitationHeight"), 
     bad.UpdatePipeline(0.0)
     pftest.check(any(word in e for e in messages.errors), "%s = %r: errors %r" % (prop, value, messages.errors))
     Delete(bad)
+# An ImpactResolution whose ground and runoff exceed the memory budget is refused before anything
+# is allocated, naming the property and the bytes (8192 x 8192 reached 6 GB and a bare bad_alloc).
+os.environ["PARAFLUID_MEMORY_BUDGET_MB"] = "2000"
+huge = Rain(Terrain=OutputPort(terrain, 1), ImpactResolution=[8192, 8192], PrecipitationHeight=2.0,
+            DropsPerRealDrop=0.01)
+messages = pftest.Messages(huge.GetClientSideObject())
+huge.UpdatePipeline(0.0)
+del os.environ["PARAFLUID_MEMORY_BUDGET_MB"]
+text = "\n".join(messages.errors)
+pftest.check("ImpactResolution" in text and "GB" in text and "bad_alloc" not in text,
+             "ImpactResolution over the budget: %r" % text)
+huge.ImpactResolution = [64, 64]
+huge.UpdatePipeline(0.0)
+pftest.check(huge.GetDataInformation().GetNumberOfPoints() > 0, "Rain runs after lowering ImpactResolution")
 print("rain filter: %d drops, %d particles, %d splashes" % (drops.GetNumberOfPoints(), n, splashes.GetNumberOfPoints()))

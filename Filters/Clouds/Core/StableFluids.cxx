@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -233,6 +234,25 @@ double StableFluids::totalDensity() const
     sum += value;
   }
   return sum * this->Grid.h * this->Grid.h * this->Grid.h;
+}
+
+double StableFluids::fastestSpeed() const
+{
+  double fastest = P.emitter || !this->PointSources.empty() ? std::abs(P.emitterSpeed) : 0.0;
+  for (const GridArray* f : { &this->Grid.u, &this->Grid.v, &this->Grid.w })
+  {
+    for (double value : f->values)
+    {
+      fastest = std::max(fastest, std::abs(value));
+    }
+  }
+  return fastest;
+}
+
+double StableFluids::longestStableStep() const
+{
+  const double fastest = this->fastestSpeed();
+  return fastest > 0.0 ? kMaxCellsPerStep * this->Grid.h / fastest : std::numeric_limits<double>::infinity();
 }
 
 double StableFluids::kineticEnergy() const

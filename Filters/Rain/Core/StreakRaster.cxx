@@ -202,7 +202,7 @@ bool StreakRaster::project(const float* drop, const StreakCamera& camera, const 
   // Projected diameter at the drop (perspective: P11 D / depth, times half the viewport height).
   const float viewDepth = std::max(-headView[2], 1e-3f);
   const float diameterPx = look.widthScale * diameter * camera.viewToClip[5] / viewDepth * halfViewport[1];
-  const float halfWidth = 0.5f * std::max(diameterPx, 1.0f);
+  const float halfWidth = limitedHalfWidth(0.5f * std::max(diameterPx, 1.0f), lengthPx, look.maxArea);
   float fog = 1.0f;
   if (look.fogDistance > 0.0f)
   {

@@ -389,6 +389,37 @@ def vds_partial(f):
 
 case("vds_partial", "error", vds_partial, error=["map to a source"])
 
+# --- steps that are not what their names say (issue 65: metadata damage showed step 1 as step 0) -
+def group_linked_twice(f):
+    step(f, 0, time=0.0)
+    f["Step#1"] = f["Step#0"]  # a second name for the same group
+    step(f, 2, time=2.0)
+
+
+def dataset_linked_twice(f):
+    step(f, 0, time=0.0)
+    g = f.create_group("Step#1")
+    g.attrs["time"] = 1.0
+    g["x"] = f["Step#0/x"]
+    g["y"] = np.arange(N, dtype="f4")
+    g["z"] = np.arange(N, dtype="f4")
+
+
+def numbered_twice(f):
+    step(f, 0, time=0.0)
+    step(f, 1, time=1.0)
+    g = f.create_group("Step#01")
+    coords(g, 5)
+    g.attrs["time"] = 1.5
+
+
+case("steps_one_group_twice", "data", group_linked_twice, points=N, steps=3,
+     warn=["Step#1 is the same group in the file as Step#0"])
+case("steps_one_dataset_twice", "data", dataset_linked_twice, points=N, steps=2,
+     warn=["Step#1/x is the same dataset in the file as Step#0/x"])
+case("steps_numbered_twice", "data", numbered_twice, points=N, steps=2, last_points=N,
+     warn=["Step#01 and Step#1 both number step 1; Step#01 is left out"])
+
 # --- truncations and bit flips of valid files ----------------------------------------------------
 rng = random.Random(20261124)
 for base in valid:

@@ -77,6 +77,15 @@ public:
   double totalDensity() const;
   /// 1/2 sum of the squared face velocities times a cell's volume (each face's share).
   double kineticEnergy() const;
+  /// The fastest face velocity component now, or the emitter's (and point sources') speed if
+  /// faster: what the next step's sources set [m/s].
+  double fastestSpeed() const;
+  /// The longest step [s] in which the fastest flow crosses kMaxCellsPerStep cells (infinite in
+  /// still air): longer traces smear the flow, and past open faces the conservative advection's
+  /// work grows with the cube of the cells a trace crosses.
+  double longestStableStep() const;
+  static constexpr double kMaxCellsPerStep =
+    5.0; // the CFL number semi-Lagrangian solvers run at (Stam 1999; Fedkiw et al. 2001)
 
 private:
   void applySources(double dt);

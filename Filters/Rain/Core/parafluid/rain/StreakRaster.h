@@ -7,7 +7,9 @@
 // without a GPU) draws one textured quad instead of a triangle per drop. Under llvmpipe a drop's
 // triangle costs about half a microsecond of setup whatever it covers (Testing/Benchmarks/README.md,
 // "Rain"), while the one to three pixels of a typical streak cost a few nanoseconds here.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -30,7 +32,24 @@ struct StreakLook
   float brightness = 1.0f;  // multiplies the radiance
   float opacity = 0.6f;     // of a streak's core
   float fogDistance = 0.0f; // [m]; 0: no fog
+  float maxArea = 1e30f;    // the most pixels one streak may cover (its width shrinks to keep to it)
 };
+
+/// The pixels one of `drops` streaks may cover so that all of them together cover at most
+/// kStreakScreens views of `pixels`: the frame's cost stays bounded whatever WidthScale says.
+constexpr float kStreakScreens = 16.0f;
+inline float streakAreaLimit(double pixels, std::size_t drops)
+{
+  return static_cast<float>(kStreakScreens * pixels / static_cast<double>(drops > 0 ? drops : 1));
+}
+
+/// The half width [px] a streak of `lengthPx` keeps to cover at most `maxArea` pixels (its
+/// rectangle (length + 2 w) x 2 w), never under half a pixel.
+inline float limitedHalfWidth(float halfWidth, float lengthPx, float maxArea)
+{
+  const float limit = 0.25f * (std::sqrt(lengthPx * lengthPx + 4.0f * maxArea) - lengthPx);
+  return std::min(halfWidth, std::max(limit, 0.5f));
+}
 
 /// The drop's radiance toward each view direction: `columns` azimuths (from +x, counter-clockwise
 /// about +z) by `rows` heights (view z from -1 to 1), RGBA floats, row-major (RainStreakPass's
