@@ -1,6 +1,7 @@
 #include "vtkPFFluidFlowLines.h"
 
 #include "GuardedRequest.h"
+#include "LongWork.h"
 #include "ParticleArrays.h"
 
 #include "parafluid/npr/FlowLines.h"
@@ -101,12 +102,12 @@ int vtkPFFluidFlowLines::RequestParticles(const Particles& particles, vtkInforma
   parafluid::npr::FlowLineSet lines;
   try
   {
+    // Nominal cost on a 2-core machine: 1.7 us a particle (500 000 at the default settings).
+    parafluid::vtk::LongWork work(this, "Fluid Flow Lines",
+                                  { static_cast<double>(n), 1.7e-6, "particles", "the input's particle count" });
     lines = parafluid::npr::traceFlowLines(xyz, velocity.data(), static_cast<std::size_t>(n), p, seedXYZ, seedCount,
-                                           [this](double fraction)
-                                           {
-                                             this->UpdateProgress(fraction);
-                                             return this->GetAbortExecute() == 0;
-                                           });
+                                           [&work, n](double fraction)
+                                           { return work.advance(fraction * static_cast<double>(n)); });
   }
   catch (const std::exception& e)
   {

@@ -1,6 +1,7 @@
 #include "vtkPFGerstnerOcean.h"
 
 #include "GuardedRequest.h"
+#include "LongWork.h"
 #include "OutputTimes.h"
 #include "ParameterCheck.h"
 #include "parafluid/common/MemoryBudget.h"
@@ -216,19 +217,23 @@ int vtkPFGerstnerOcean::RequestData(vtkInformation*, vtkInformationVector** inpu
       depth->SetName("depth");
       depth->SetNumberOfTuples(n);
       const bool hasBottom = floor || this->Sea.waterDepth > 0.0;
-      const int blocks = std::min(ny, 32);
-      for (int b = 0; b < blocks && !this->AbortExecute; ++b)
+      // Blocks of at most 2^19 vertices (0.15 s each here), so progress and Abort keep up.
+      const int blocks = static_cast<int>(std::min<std::size_t>(
+        static_cast<std::size_t>(ny), std::max<std::size_t>(32, static_cast<std::size_t>(n >> 19) + 1)));
+      // Nominal cost on a 2-core machine: 0.29 us a vertex (the default sea state).
+      parafluid::vtk::LongWork work(this, "Gerstner Ocean",
+                                    { static_cast<double>(n), 2.9e-7, "vertices", "Resolution" });
+      for (int b = 0; b < blocks; ++b)
       {
         const std::size_t first = static_cast<std::size_t>(ny) * b / blocks * nx;
         const std::size_t last = static_cast<std::size_t>(ny) * (b + 1) / blocks * nx;
         ocean->evaluate(xs.data() + first, ys.data() + first, last - first, time, displacement->GetPointer(3 * first),
                         normals->GetPointer(3 * first), jacobian->GetPointer(first), foam->GetPointer(first),
                         depth->GetPointer(first));
-        this->UpdateProgress(static_cast<double>(b + 1) / blocks);
-      }
-      if (this->AbortExecute)
-      {
-        return 1;
+        if (!work.advance(static_cast<double>(last)))
+        {
+          return 1;
+        }
       }
 
       vtkNew<vtkPoints> points;

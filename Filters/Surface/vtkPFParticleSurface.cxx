@@ -1,6 +1,7 @@
 #include "vtkPFParticleSurface.h"
 
 #include "GuardedRequest.h"
+#include "LongWork.h"
 #include "ParticleArrays.h"
 #include "SurfaceMeshOutput.h"
 
@@ -89,12 +90,12 @@ int vtkPFParticleSurface::RequestParticles(const Particles& particles, vtkInform
   parafluid::surface::SurfaceMesh mesh;
   try
   {
-    mesh = surface.extract(xyz, static_cast<std::size_t>(n), p,
-                           [this](double fraction)
-                           {
-                             this->UpdateProgress(0.9 * fraction);
-                             return this->GetAbortExecute() == 0;
-                           });
+    // Nominal cost on a 2-core machine: 3.2 us a particle (500 000 at the default settings).
+    parafluid::vtk::LongWork work(this, "Particle Surface",
+                                  { static_cast<double>(n), 3.2e-6, "particles", "the input's particle count" });
+    mesh =
+      surface.extract(xyz, static_cast<std::size_t>(n), p,
+                      [&work, n](double fraction) { return work.advance(0.9 * fraction * static_cast<double>(n)); });
   }
   catch (const std::exception& e)
   {

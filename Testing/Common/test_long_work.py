@@ -99,16 +99,16 @@ out = pftest.fetch(sph, 0.05)
 pftest.check(out.GetNumberOfPoints() == block.GetDataInformation().GetNumberOfPoints(),
              "SPH Step runs normally after Abort")
 
-# Stable Fluids with a 1000 m/s emitter: the flow forces steps of at most five cells, so t = 0.2 s
-# takes about 480 steps of 24^3 cells (t = 0.5 s took over two minutes when one step of 0.02 s had
+# Stable Fluids with a 1000 m/s emitter: the flow forces steps of at most five cells, so t = 0.1 s
+# takes about 240 steps of 24^3 cells (t = 0.5 s took over two minutes when one step of 0.02 s had
 # to trace 240 cells past every open face); far on, the steps it needs are announced by the
 # property that forces them.
 fast = StableFluids(Resolution=[24, 24, 24], OpenFaces=[1] * 6, EmitterSpeed=1000)
 fast_messages = pftest.Messages(fast.GetClientSideObject())
-grid = pftest.fetch(fast, 0.2)
+grid = pftest.fetch(fast, 0.1)
 speed = pftest.point_array(grid, "velocity")
 pftest.check(not fast_messages.errors and grid.GetNumberOfPoints() == 24 ** 3 and abs(speed).max() > 100.0,
-             "StableFluids(EmitterSpeed=1000) reaches t = 0.2 s (errors %r)" % fast_messages.errors)
+             "StableFluids(EmitterSpeed=1000) reaches t = 0.1 s (errors %r)" % fast_messages.errors)
 far = StableFluids(Resolution=[24, 24, 24], OpenFaces=[1] * 6, EmitterSpeed=1000, NumberOfOutputs=100000)
 watch = Watch(far)
 watch.run(lambda: far.UpdatePipeline(1000.0))
