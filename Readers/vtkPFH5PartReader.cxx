@@ -2,6 +2,7 @@
 
 #include "GuardedRequest.h"
 #include "ParticleArrays.h"
+#include "ParticleBlockRead.h"
 #include "parafluid/common/MemoryBudget.h"
 #include "parafluid/h5part/Attributes.h"
 #include "parafluid/h5part/Datasets.h"
@@ -33,32 +34,6 @@
 namespace
 {
 using parafluid::h5::Handle;
-using parafluid::h5::ValueType;
-
-vtkSmartPointer<vtkDataArray> arrayOf(ValueType type)
-{
-  switch (type)
-  {
-    case ValueType::Float32:
-      return vtkSmartPointer<vtkFloatArray>::New();
-    case ValueType::Float64:
-      return vtkSmartPointer<vtkDoubleArray>::New();
-    case ValueType::Int32:
-      return vtkSmartPointer<vtkIntArray>::New();
-    case ValueType::Int64:
-      return vtkSmartPointer<vtkTypeInt64Array>::New();
-    default:
-      return vtkSmartPointer<vtkTypeUInt64Array>::New();
-  }
-}
-
-/// Sizes an array to n tuples; false when the memory could not be had (VTK then leaves it empty).
-bool allocate(vtkDataArray* array, int components, vtkIdType n)
-{
-  array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(n);
-  return array->GetNumberOfTuples() == n;
-}
 
 /// Numeric root attributes become field-data arrays; string attributes become string arrays.
 void readSceneConstants(hid_t file, vtkFieldData* fieldData, std::vector<std::string>& warnings)
@@ -286,121 +261,27 @@ bool vtkPFH5PartReader::ReadStep(vtkInformation* info, vtkPolyData* output, std:
   {
     this->WarnOnce(warning);
   }
-  Handle group(H5Gopen2(file, groupName.c_str(), H5P_DEFAULT), H5Gclose);
-
-  // This piece's contiguous slice of the particles.
-  const int piece = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-                      ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-                      : 0;
-  const int pieces = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-                       ? std::max(1, info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
-                       : 1;
-  const std::uint64_t total = layout.particles;
-  const std::uint64_t begin = total / pieces * piece + std::min<std::uint64_t>(piece, total % pieces);
-  const std::uint64_t count = total / pieces + (static_cast<std::uint64_t>(piece) < total % pieces ? 1 : 0);
-  const auto n = static_cast<vtkIdType>(count);
-
-  // What this step will take in memory, checked before anything is allocated.
-  const auto coordinateType = parafluid::h5::commonValueType(group, layout.coordinateDatasets) == ValueType::Float32
-                                ? ValueType::Float32
-                                : ValueType::Float64;
-  double bytes = static_cast<double>(count) * (3.0 * parafluid::h5::valueBytes(coordinateType) + 8.0 + 16.0);
-  std::vector<ValueType> arrayTypes;
-  for (const auto& source : layout.arrays)
+  // This piece's contiguous slice of the particles, read by the path every layout shares.
+  parafluid::vtk::BlockReading how;
+  how.selection = this->PointArraySelection;
+  how.piece = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+                ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+                : 0;
+  how.pieces = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+                 ? std::max(1, info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
+                 : 1;
+  how.algorithm = this;
+  const parafluid::h5::ParticleBlock block{ groupName, { { this->FileName, groupName, layout } }, {} };
+  std::vector<std::string> blockWarnings;
+  const bool read = parafluid::vtk::readParticleBlock(block, how, output, blockWarnings, error);
+  for (const std::string& warning : blockWarnings)
   {
-    arrayTypes.push_back(parafluid::h5::commonValueType(group, source.datasets));
-    if (this->PointArraySelection->ArrayIsEnabled(source.name.c_str()))
-    {
-      bytes += static_cast<double>(count) * source.components * parafluid::h5::valueBytes(arrayTypes.back());
-    }
+    this->WarnOnce(warning);
   }
-  const std::string tooLarge =
-    parafluid::checkMemoryBudget(bytes, groupName + " (" + std::to_string(total) + " particles, as the file declares)");
-  if (!tooLarge.empty())
+  if (!read)
   {
-    error = where + tooLarge + "; deselect point arrays or read it under MPI in pieces";
+    error = error.rfind("'", 0) == 0 ? error : where + error;
     return false;
-  }
-
-  // Coordinates, keeping the file's precision.
-  vtkSmartPointer<vtkDataArray> coordinates = arrayOf(coordinateType);
-  if (!allocate(coordinates, 3, n))
-  {
-    error = where + "not enough memory for the coordinates of " + groupName;
-    return false;
-  }
-  for (std::size_t c = 0; c < layout.coordinateDatasets.size(); ++c)
-  {
-    if (!parafluid::h5::readSlice(group, layout.coordinateDatasets[c], coordinateType, begin, count,
-                                  coordinates->GetVoidPointer(0), 3, layout.coordinateDatasets.size() > 1 ? c : 0,
-                                  error))
-    {
-      error = where + groupName + ": " + error;
-      return false;
-    }
-  }
-  this->WarnAboutNonFinite(coordinates, "coordinate", groupName, begin);
-  vtkNew<vtkPoints> points;
-  points->SetData(coordinates);
-  output->SetPoints(points);
-  parafluid::vtk::setOneVertexPerPoint(output, n);
-
-  // Stable ids: the file's, else the index in the file.
-  vtkNew<vtkTypeInt64Array> ids;
-  ids->SetName(parafluid::contract::Id);
-  if (!allocate(ids, 1, n))
-  {
-    error = where + "not enough memory for the ids of " + groupName;
-    return false;
-  }
-  std::string idProblem;
-  if (layout.idDataset.empty() ||
-      !parafluid::h5::readIds(group, layout.idDataset, begin, count,
-                              reinterpret_cast<std::int64_t*>(ids->GetPointer(0)), idProblem))
-  {
-    if (!idProblem.empty())
-    {
-      this->WarnOnce(groupName + ": " + idProblem + "; each particle's id is its index in the file instead");
-    }
-    std::iota(ids->GetPointer(0), ids->GetPointer(0) + n, static_cast<vtkTypeInt64>(begin));
-  }
-  output->GetPointData()->AddArray(ids);
-
-  for (std::size_t k = 0; k < layout.arrays.size(); ++k)
-  {
-    const auto& source = layout.arrays[k];
-    if (this->CheckAbort())
-    {
-      error = where + "reading was aborted";
-      return false;
-    }
-    if (!this->PointArraySelection->ArrayIsEnabled(source.name.c_str()))
-    {
-      continue;
-    }
-    auto array = arrayOf(arrayTypes[k]);
-    array->SetName(source.name.c_str());
-    if (!allocate(array, source.components, n))
-    {
-      error = where + "not enough memory for array " + source.name + " of " + groupName;
-      return false;
-    }
-    for (std::size_t c = 0; c < source.datasets.size(); ++c)
-    {
-      if (!parafluid::h5::readSlice(group, source.datasets[c], arrayTypes[k], begin, count, array->GetVoidPointer(0),
-                                    static_cast<std::uint64_t>(source.components), source.datasets.size() > 1 ? c : 0,
-                                    error))
-      {
-        error = where + groupName + ": " + error;
-        return false;
-      }
-    }
-    output->GetPointData()->AddArray(array);
-    this->UpdateProgress(0.1 + 0.9 * static_cast<double>(k + 1) / static_cast<double>(layout.arrays.size()));
-  }
-  if (auto* velocity = output->GetPointData()->GetArray(parafluid::contract::Velocity))
-  {
-    output->GetPointData()->SetVectors(velocity);
   }
 
   std::vector<std::string> warnings;
@@ -415,42 +296,6 @@ bool vtkPFH5PartReader::ReadStep(vtkInformation* info, vtkPolyData* output, std:
   output->GetFieldData()->AddArray(timeArray);
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
   return true;
-}
-
-void vtkPFH5PartReader::WarnAboutNonFinite(vtkDataArray* values, const char* what, const std::string& groupName,
-                                           std::uint64_t begin)
-{
-  const vtkIdType n = values->GetNumberOfTuples();
-  const int components = values->GetNumberOfComponents();
-  // A typed scan of the raw values (the coordinates are float or double): GetComponent's virtual
-  // call per value cost as much as the read itself.
-  auto firstNonFinite = [&](const auto* v) -> vtkIdType
-  {
-    const vtkIdType total = n * components;
-    for (vtkIdType k = 0; k < total; ++k)
-    {
-      if (!std::isfinite(v[k]))
-      {
-        return k / components;
-      }
-    }
-    return -1;
-  };
-  vtkIdType bad = -1;
-  if (auto* floats = vtkFloatArray::SafeDownCast(values))
-  {
-    bad = firstNonFinite(floats->GetPointer(0));
-  }
-  else if (auto* doubles = vtkDoubleArray::SafeDownCast(values))
-  {
-    bad = firstNonFinite(doubles->GetPointer(0));
-  }
-  if (bad >= 0)
-  {
-    this->WarnOnce(groupName + ": particle " + std::to_string(begin + static_cast<std::uint64_t>(bad)) +
-                   " has a NaN or infinite " + what +
-                   " (read as it is; filters that need finite values refuse or drop such particles)");
-  }
 }
 
 void vtkPFH5PartReader::PrintSelf(ostream& os, vtkIndent indent)

@@ -72,5 +72,4 @@ private:
   /// The step nearest the requested time into `output`; false with `error` when it cannot be read.
   bool ReadStep(vtkInformation* info, vtkPolyData* output, std::string& error);
   void WarnOnce(const std::string& warning);
-  void WarnAboutNonFinite(vtkDataArray* values, const char* what, const std::string& groupName, std::uint64_t begin);
 };

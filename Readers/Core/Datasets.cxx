@@ -74,13 +74,16 @@ std::size_t valueBytes(ValueType type)
 
 namespace
 {
-bool readRows(hid_t dataset, hid_t memory, std::uint64_t offset, std::uint64_t count, std::uint64_t width, void* target)
+bool readRows(hid_t dataset, hid_t memory, std::uint64_t offset, std::uint64_t count, std::uint64_t width, void* target,
+              std::int64_t frame)
 {
   Handle fileSpace(H5Dget_space(dataset), H5Sclose);
   const int rank = H5Sget_simple_extent_ndims(fileSpace);
-  const hsize_t fileStart[2] = { offset, 0 };
-  const hsize_t fileCount[2] = { count, width };
-  if (rank < 1 || H5Sselect_hyperslab(fileSpace, H5S_SELECT_SET, fileStart, nullptr, fileCount, nullptr) < 0)
+  // Rows of one frame: the frame axis first, then the rows (and columns) as in an N (x k) dataset.
+  const int lead = frame >= 0 ? 1 : 0;
+  const hsize_t fileStart[3] = { frame >= 0 ? static_cast<hsize_t>(frame) : offset, frame >= 0 ? offset : 0, 0 };
+  const hsize_t fileCount[3] = { frame >= 0 ? 1 : count, frame >= 0 ? count : width, width };
+  if (rank < 1 + lead || H5Sselect_hyperslab(fileSpace, H5S_SELECT_SET, fileStart, nullptr, fileCount, nullptr) < 0)
   {
     return false;
   }
@@ -90,7 +93,7 @@ bool readRows(hid_t dataset, hid_t memory, std::uint64_t offset, std::uint64_t c
 } // namespace
 
 bool readSlice(hid_t group, const std::string& name, ValueType type, std::uint64_t offset, std::uint64_t count,
-               void* target, std::uint64_t stride, std::uint64_t column, std::string& error)
+               void* target, std::uint64_t stride, std::uint64_t column, std::string& error, std::int64_t frame)
 {
   Handle dataset(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose);
   if (!dataset.valid())
@@ -100,13 +103,21 @@ bool readSlice(hid_t group, const std::string& name, ValueType type, std::uint64
   }
   Handle fileSpace(H5Dget_space(dataset), H5Sclose);
   const int rank = H5Sget_simple_extent_ndims(fileSpace);
-  hsize_t dims[2] = { 0, 1 };
-  if (rank < 1 || rank > 2 || H5Sget_simple_extent_dims(fileSpace, dims, nullptr) < 0 || offset + count > dims[0])
+  const int lead = frame >= 0 ? 1 : 0;
+  hsize_t shape[3] = { 0, 1, 1 };
+  if (rank < 1 + lead || rank > 2 + lead || H5Sget_simple_extent_dims(fileSpace, shape, nullptr) < 0 ||
+      (frame >= 0 && static_cast<hsize_t>(frame) >= shape[0]))
   {
     error = "dataset " + name + " does not have the rows asked for";
     return false;
   }
-  const std::uint64_t width = rank == 2 ? dims[1] : 1;
+  const hsize_t* dims = shape + lead;
+  if (offset + count > dims[0])
+  {
+    error = "dataset " + name + " does not have the rows asked for";
+    return false;
+  }
+  const std::uint64_t width = rank == 2 + lead ? dims[1] : 1;
   if (count == 0)
   {
     return true;
@@ -114,7 +125,7 @@ bool readSlice(hid_t group, const std::string& name, ValueType type, std::uint64
   const hid_t memory = memoryType(type);
   if (width == stride && column == 0)
   {
-    if (!readRows(dataset, memory, offset, count, width, target))
+    if (!readRows(dataset, memory, offset, count, width, target, frame))
     {
       error = "HDF5 failed to read dataset " + name;
       return false;
@@ -130,7 +141,7 @@ bool readSlice(hid_t group, const std::string& name, ValueType type, std::uint64
   // interleaved: HDF5's own strided scatter is several times slower on chunked, compressed data.
   const std::size_t bytes = valueBytes(type);
   std::vector<unsigned char> component(static_cast<std::size_t>(count) * bytes);
-  if (!readRows(dataset, memory, offset, count, 1, component.data()))
+  if (!readRows(dataset, memory, offset, count, 1, component.data(), frame))
   {
     error = "HDF5 failed to read dataset " + name;
     return false;
@@ -155,15 +166,15 @@ bool readSlice(hid_t group, const std::string& name, ValueType type, std::uint64
 }
 
 bool readIds(hid_t group, const std::string& name, std::uint64_t offset, std::uint64_t count, std::int64_t* ids,
-             std::string& error)
+             std::string& error, std::int64_t frame)
 {
   const ValueType stored = commonValueType(group, { name });
   if (stored != ValueType::Float32 && stored != ValueType::Float64)
   {
-    return readSlice(group, name, ValueType::Int64, offset, count, ids, 1, 0, error);
+    return readSlice(group, name, ValueType::Int64, offset, count, ids, 1, 0, error, frame);
   }
   std::vector<double> values(static_cast<std::size_t>(count));
-  if (!readSlice(group, name, ValueType::Float64, offset, count, values.data(), 1, 0, error))
+  if (!readSlice(group, name, ValueType::Float64, offset, count, values.data(), 1, 0, error, frame))
   {
     return false;
   }

@@ -54,6 +54,25 @@ const char* className(H5T_class_t typeClass)
 
 /// Dimensions of a numeric dataset of one or two dimensions; empty (with `why` set when the
 /// object is a dataset the user may have meant as an array) otherwise.
+/// The dataset `name` of `group` when it holds numbers; an invalid handle with `why` otherwise.
+Handle openNumeric(hid_t group, const std::string& name, std::string& why)
+{
+  Handle dataset(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!dataset.valid())
+  {
+    why = "HDF5 cannot open it";
+    return dataset;
+  }
+  Handle type(H5Dget_type(dataset), H5Tclose);
+  const H5T_class_t typeClass = H5Tget_class(type);
+  if (typeClass != H5T_FLOAT && typeClass != H5T_INTEGER)
+  {
+    why = std::string("it holds ") + className(typeClass);
+    return Handle();
+  }
+  return dataset;
+}
+
 std::vector<std::uint64_t> numericShape(hid_t group, const std::string& name, std::string& why)
 {
   H5O_info_t info;
@@ -66,17 +85,9 @@ std::vector<std::uint64_t> numericShape(hid_t group, const std::string& name, st
   {
     return {};
   }
-  Handle dataset(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose);
+  Handle dataset = openNumeric(group, name, why);
   if (!dataset.valid())
   {
-    why = "HDF5 cannot open it";
-    return {};
-  }
-  Handle type(H5Dget_type(dataset), H5Tclose);
-  const H5T_class_t typeClass = H5Tget_class(type);
-  if (typeClass != H5T_FLOAT && typeClass != H5T_INTEGER)
-  {
-    why = std::string("it holds ") + className(typeClass);
     return {};
   }
   Handle space(H5Dget_space(dataset), H5Sclose);
@@ -471,7 +482,35 @@ std::vector<StepEntry> listSteps(hid_t file, std::string& error, std::vector<std
   return steps;
 }
 
+std::vector<std::uint64_t> datasetShape(hid_t group, const std::string& name, std::string& problem)
+{
+  Handle dataset = openNumeric(group, name, problem);
+  if (!dataset.valid())
+  {
+    return {};
+  }
+  problem = checkStorage(dataset, folderOf(group));
+  if (!problem.empty())
+  {
+    return {};
+  }
+  Handle space(H5Dget_space(dataset), H5Sclose);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(rank, 0)));
+  if (rank < 0 || rank > 3 || H5Sget_simple_extent_dims(space, dims.data(), nullptr) < 0)
+  {
+    problem = "it has " + std::to_string(rank) + " dimensions";
+    return {};
+  }
+  return std::vector<std::uint64_t>(dims.begin(), dims.end()); // a scalar: empty, no problem
+}
+
 StepLayout describeStep(hid_t file, const std::string& groupName)
+{
+  return describeStep(file, groupName, DatasetNames{});
+}
+
+StepLayout describeStep(hid_t file, const std::string& groupName, const DatasetNames& names)
 {
   StepLayout layout;
   Handle group(H5Gopen2(file, groupName.c_str(), H5P_DEFAULT), H5Gclose);
@@ -531,15 +570,17 @@ StepLayout describeStep(hid_t file, const std::string& groupName)
       }
     }
   }
-  else if (isVector3("position") || isVector3("positions"))
+  else if (const auto vector = std::find_if(names.coordinates.begin(), names.coordinates.end(),
+                                            [&](const std::string& n) { return isVector3(n); });
+           vector != names.coordinates.end())
   {
-    const std::string name = isVector3("position") ? "position" : "positions";
-    layout.coordinateDatasets = { name };
-    layout.particles = shapes[name][0];
+    layout.coordinateDatasets = { *vector };
+    layout.particles = shapes[*vector][0];
   }
   else
   {
-    layout.error = groupName + " has no particle coordinates: expected datasets x, y, z or an N x 3 \"position\"";
+    layout.error = groupName + " has no particle coordinates: expected datasets x, y, z or an N x 3 \"" +
+                   names.coordinates.front() + "\"";
     return layout;
   }
   for (const std::string& name : layout.coordinateDatasets)
@@ -553,11 +594,14 @@ StepLayout describeStep(hid_t file, const std::string& groupName)
   }
 
   std::set<std::string> used(layout.coordinateDatasets.begin(), layout.coordinateDatasets.end());
-  if (shapes.count("id"))
+  const auto idName =
+    std::find_if(names.ids.begin(), names.ids.end(), [&](const std::string& n) { return shapes.count(n) > 0; });
+  if (idName != names.ids.end())
   {
-    used.insert("id");
-    const auto& shape = shapes["id"];
-    std::string problem = storageProblem("id");
+    const std::string id = *idName;
+    used.insert(id);
+    const auto& shape = shapes[id];
+    std::string problem = storageProblem(id);
     if (problem.empty() && (shape.size() != 1 || shape[0] != layout.particles))
     {
       problem = shape.size() != 1 ? "it has " + std::to_string(shape[1]) + " values per particle, not one"
@@ -566,11 +610,11 @@ StepLayout describeStep(hid_t file, const std::string& groupName)
     }
     if (problem.empty())
     {
-      layout.idDataset = "id";
+      layout.idDataset = id;
     }
     else
     {
-      layout.warnings.push_back(groupName + "/id is not used (" + problem +
+      layout.warnings.push_back(groupName + "/" + id + " is not used (" + problem +
                                 "); each particle's id is its index in the file");
     }
   }
@@ -629,8 +673,10 @@ StepLayout describeStep(hid_t file, const std::string& groupName)
       continue;
     }
     const int components = shape.size() == 2 ? static_cast<int>(shape[1]) : 1;
-    layout.arrays.push_back({ name, { name }, components });
+    const auto renamed = names.arrays.find(name);
+    layout.arrays.push_back({ renamed != names.arrays.end() ? renamed->second : name, { name }, components });
   }
+  layout.coordinates = { "", layout.coordinateDatasets, 3 };
   return layout;
 }
 } // namespace parafluid::h5

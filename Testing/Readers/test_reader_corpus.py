@@ -22,7 +22,8 @@ import open_one  # noqa: E402
 
 folder = os.path.join(pftest.scratch_dir(), "corpus")
 subprocess.run(["/usr/bin/python3", os.path.join(here, "corpus", "make_corpus.py"), folder], check=True)
-manifest = json.load(open(os.path.join(folder, "manifest.json")))
+subprocess.run(["/usr/bin/python3", os.path.join(here, "corpus", "make_layout_corpus.py"), folder], check=True)
+manifest = json.load(open(os.path.join(folder, "manifest.json"))) + json.load(open(os.path.join(folder, "layouts.json")))
 TIME_LIMIT_S = 60
 ADDRESS_SPACE_BYTES = 8 << 30  # a file that makes the reader allocate beyond this fails the test
 
@@ -38,7 +39,8 @@ def start(entry):
             resource.setrlimit(resource.RLIMIT_AS, (ADDRESS_SPACE_BYTES, ADDRESS_SPACE_BYTES))
             resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
             signal.alarm(TIME_LIMIT_S)  # SIGALRM ends a hung child
-            result = open_one.open_file(os.path.join(folder, entry["file"]), simple.ParaFluidH5PartReader)
+            reader = simple.ParaFluidHDF5Particles if entry.get("reader") == "particles" else simple.ParaFluidH5PartReader
+            result = open_one.open_file(os.path.join(folder, entry["file"]), reader)
             with open(out, "w") as f:
                 json.dump(result, f)
             code = 0

@@ -1,4 +1,4 @@
-"""Opens one corpus file with the ParaFluid H5Part reader and says what it gave.
+"""Opens one corpus file with the ParaFluid H5Part reader (or ParaFluid HDF5 Particles) and says what it gave.
 
 open_file(path) returns a dict: the error and warning texts, the first step's particle count, the
 first values of each point array, the field data, the number of time steps and the last step's
@@ -32,8 +32,17 @@ def open_file(path, reader_type):
     data = servermanager.Fetch(reader)
     steps = list(reader.TimestepValues) if reader.TimestepValues else []
     result = {"steps": len(steps)}
+    if data is not None and data.IsA("vtkMultiBlockDataSet"):
+        # ParaFluid HDF5 Particles: every block's particles count, the first block's arrays are shown.
+        blocks = [data.GetBlock(b) for b in range(data.GetNumberOfBlocks()) if data.GetBlock(b) is not None]
+        total = sum(b.GetNumberOfPoints() for b in blocks)
+        data = blocks[0] if blocks else None
+        if data is not None:
+            result["blocks"] = len(blocks)
+    else:
+        total = data.GetNumberOfPoints() if data is not None else 0
     if data is not None and not messages.errors:
-        result["points"] = data.GetNumberOfPoints()
+        result["points"] = total
         pd, fd = data.GetPointData(), data.GetFieldData()
         result["arrays"] = {pd.GetArray(i).GetName(): values(pd.GetArray(i)) for i in range(pd.GetNumberOfArrays())}
         result["field"], result["strings"] = {}, {}

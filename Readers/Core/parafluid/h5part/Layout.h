@@ -8,6 +8,7 @@
 #include "parafluid/h5part/Hdf5.h"
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,14 +28,20 @@ struct ArraySource
   std::string name;
   std::vector<std::string> datasets;
   int components = 1;
+  std::int64_t frame = -1; // the frame of F x N (x k) datasets (H5MD's time-dependent values); -1: none
+  double scale = 1.0;      // the factor to SI the values are multiplied by (1: as stored)
+  std::string unit;        // the unit of the values once scaled ("m s^-1"); empty when unknown
 };
 
 struct StepLayout
 {
   std::uint64_t particles = 0;
-  /// Either three datasets x, y, z or one N x 3 dataset ("position" / "positions").
+  /// Either three datasets x, y, z or one N x 3 dataset ("position" / "positions"), with the
+  /// frame, scale and unit they are read with (the `datasets` of an ArraySource of 3 components).
   std::vector<std::string> coordinateDatasets;
-  std::string idDataset; // empty when the file has no usable "id" dataset
+  ArraySource coordinates;
+  std::string idDataset;     // empty when the file has no usable "id" dataset
+  std::int64_t idFrame = -1; // the frame of a time-dependent F x N id dataset
   std::vector<ArraySource> arrays;
   std::string error;                 // empty when the step is readable
   std::vector<std::string> warnings; // datasets left out, and why
@@ -52,8 +59,23 @@ hid_t openForReading(const std::string& fileName, std::string& error);
 /// step's time its position in the list (with a warning). On failure returns nothing and sets error.
 std::vector<StepEntry> listSteps(hid_t file, std::string& error, std::vector<std::string>* warnings = nullptr);
 
+/// What the datasets of a group of N-row datasets are called: the N x 3 coordinates (x, y, z are
+/// always taken), the ids, and the point arrays' names in the particle contract (the rest keep
+/// the dataset's name). H5Part's by default.
+struct DatasetNames
+{
+  std::vector<std::string> coordinates{ "position", "positions" };
+  std::vector<std::string> ids{ "id" };
+  std::map<std::string, std::string> arrays;
+};
+
+/// The shape of a numeric dataset of rank 1 to 3 that holds what it declares; empty with `problem`
+/// saying why not (a scalar is empty with no problem).
+std::vector<std::uint64_t> datasetShape(hid_t group, const std::string& name, std::string& problem);
+
 /// Reads the layout of one step group and checks that its datasets hold what they declare.
 StepLayout describeStep(hid_t file, const std::string& group);
+StepLayout describeStep(hid_t file, const std::string& group, const DatasetNames& names);
 
 /// Reads a numeric attribute of at most `maxValues` values; false when absent, not numeric or larger.
 bool readNumericAttribute(hid_t object, const char* name, std::vector<double>& values, std::size_t maxValues = 4096);

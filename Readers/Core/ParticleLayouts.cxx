@@ -1,0 +1,206 @@
+#include "parafluid/h5part/ParticleLayouts.h"
+
+#include "parafluid/h5part/Attributes.h"
+#include "parafluid/h5part/Handle.h"
+#include "private/LayoutParts.h"
+
+#include <algorithm>
+
+namespace parafluid::h5
+{
+std::uint64_t ParticleBlock::particles() const
+{
+  std::uint64_t total = 0;
+  for (const BlockPart& part : this->parts)
+  {
+    total += part.layout.particles;
+  }
+  return total;
+}
+
+namespace detail
+{
+namespace
+{
+herr_t collect(hid_t, const char* name, const H5L_info_t*, void* data)
+{
+  static_cast<std::vector<std::string>*>(data)->emplace_back(name);
+  return 0;
+}
+} // namespace
+
+std::vector<std::string> linkNames(hid_t group)
+{
+  std::vector<std::string> names;
+  H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names);
+  return names;
+}
+
+bool hasObject(hid_t group, const std::string& name, H5O_type_t type)
+{
+  if (H5Lexists(group, name.c_str(), H5P_DEFAULT) <= 0)
+  {
+    return false;
+  }
+  H5O_info_t info;
+  return H5Oget_info_by_name(group, name.c_str(), &info, H5P_DEFAULT) >= 0 && info.type == type;
+}
+
+bool readSmallDataset(hid_t group, const std::string& name, std::vector<double>& values, std::size_t maxValues)
+{
+  if (!hasObject(group, name, H5O_TYPE_DATASET))
+  {
+    return false;
+  }
+  Handle dataset(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose);
+  Handle type(dataset.valid() ? H5Dget_type(dataset) : -1, H5Tclose);
+  Handle space(dataset.valid() ? H5Dget_space(dataset) : -1, H5Sclose);
+  if (!type.valid() || !space.valid() || (H5Tget_class(type) != H5T_FLOAT && H5Tget_class(type) != H5T_INTEGER))
+  {
+    return false;
+  }
+  const hssize_t count = H5Sget_simple_extent_npoints(space);
+  if (count < 1 || static_cast<std::size_t>(count) > maxValues)
+  {
+    return false;
+  }
+  values.resize(static_cast<std::size_t>(count));
+  return H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) >= 0;
+}
+
+std::vector<std::string> stringAttribute(hid_t object, const char* name)
+{
+  std::vector<std::string> ignored;
+  for (const Attribute& attribute : readAttributes(object, ignored))
+  {
+    if (attribute.name == name && attribute.text)
+    {
+      return attribute.strings;
+    }
+  }
+  return {};
+}
+} // namespace detail
+
+ParticleLayout detectLayout(hid_t file)
+{
+  if (detail::hasObject(file, "h5md", H5O_TYPE_GROUP) && detail::hasObject(file, "particles", H5O_TYPE_GROUP))
+  {
+    return ParticleLayout::H5MD;
+  }
+  if (detail::hasObject(file, "Header", H5O_TYPE_GROUP))
+  {
+    for (const std::string& name : detail::linkNames(file))
+    {
+      if (name.rfind("PartType", 0) == 0)
+      {
+        return ParticleLayout::Gadget;
+      }
+    }
+  }
+  for (const std::string& name : detail::linkNames(file))
+  {
+    if (name.rfind("Step#", 0) == 0)
+    {
+      return ParticleLayout::H5Part;
+    }
+  }
+  return ParticleLayout::Unknown;
+}
+
+const char* layoutName(ParticleLayout layout)
+{
+  switch (layout)
+  {
+    case ParticleLayout::H5Part:
+      return "H5Part";
+    case ParticleLayout::H5MD:
+      return "H5MD";
+    case ParticleLayout::Gadget:
+      return "Gadget-style snapshot";
+    default:
+      return "unknown";
+  }
+}
+
+ParticleFileInfo describeParticleFile(const std::string& fileName)
+{
+  ParticleFileInfo info;
+  std::string error;
+  Handle file(openForReading(fileName, error), H5Fclose);
+  if (!file.valid())
+  {
+    info.error = error;
+    return info;
+  }
+  info.layout = detectLayout(file);
+  info.files = { fileName };
+  switch (info.layout)
+  {
+    case ParticleLayout::H5MD:
+      detail::describeH5mdFile(file, info);
+      break;
+    case ParticleLayout::Gadget:
+      detail::describeGadgetFile(file, fileName, info);
+      break;
+    case ParticleLayout::H5Part:
+      info.description = "H5Part";
+      for (const StepEntry& step : listSteps(file, info.error, &info.warnings))
+      {
+        info.times.push_back(step.time);
+      }
+      break;
+    default:
+      info.error = "'" + fileName +
+                   "' is HDF5 but none of the particle layouts read here: looked for an /h5md group with "
+                   "/particles (H5MD), /Header with /PartType<n> groups (Gadget, SWIFT, GIZMO, AREPO) and "
+                   "\"Step#<n>\" groups (H5Part)";
+  }
+  if (info.error.empty() && info.times.empty())
+  {
+    info.error = "'" + fileName + "': the " + std::string(layoutName(info.layout)) + " file has no particles";
+  }
+  return info;
+}
+
+ParticleFrame describeFrame(const ParticleFileInfo& info, std::size_t timeIndex)
+{
+  ParticleFrame frame;
+  if (!info.error.empty() || timeIndex >= info.times.size())
+  {
+    frame.error = info.error.empty() ? "no such time" : info.error;
+    return frame;
+  }
+  if (info.layout == ParticleLayout::Gadget)
+  {
+    return detail::describeGadgetFrame(info);
+  }
+  std::string error;
+  Handle file(openForReading(info.files.front(), error), H5Fclose);
+  if (!file.valid())
+  {
+    frame.error = error;
+    return frame;
+  }
+  if (info.layout == ParticleLayout::H5MD)
+  {
+    return detail::describeH5mdFrame(file, info, timeIndex);
+  }
+  // H5Part: one block, the step at this time.
+  std::vector<std::string> ignored;
+  const std::vector<StepEntry> steps = listSteps(file, error, &ignored);
+  if (timeIndex >= steps.size())
+  {
+    frame.error = error.empty() ? "the file changed since it was opened" : error;
+    return frame;
+  }
+  ParticleBlock block{ "particles",
+                       { { info.files.front(), steps[timeIndex].group, describeStep(file, steps[timeIndex].group) } },
+                       {} };
+  frame.time = steps[timeIndex].time;
+  frame.error = block.parts.front().layout.error;
+  frame.warnings = block.parts.front().layout.warnings;
+  frame.blocks.push_back(std::move(block));
+  return frame;
+}
+} // namespace parafluid::h5

@@ -1,0 +1,85 @@
+#pragma once
+// The HDF5 particle layouts particle codes write, told apart by what a file holds, not by its
+// name: H5Part ("Step#<n>" groups), H5MD 1.x (an /h5md group, /particles/<group>/<element>) and
+// Gadget-style snapshots (/Header and /PartType<n>; SWIFT's per-dataset unit attributes applied;
+// a snapshot split over NumFilesPerSnapshot files read as one). Each is described as frames of
+// blocks of N-row datasets (StepLayout), the one path the readers turn into particles.
+#include "parafluid/h5part/Layout.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace parafluid::h5
+{
+enum class ParticleLayout
+{
+  Unknown,
+  H5Part,
+  H5MD,
+  Gadget
+};
+
+/// One file's rows of a block: the group its datasets are in, and what they are.
+struct BlockPart
+{
+  std::string file;
+  std::string group;
+  StepLayout layout;
+};
+
+/// A value every particle of a block shares (Gadget's MassTable, an H5MD scalar element).
+struct ConstantArray
+{
+  std::string name;
+  double value = 0.0;
+  std::string unit;
+};
+
+/// The particles of one group, species or type at one time: its rows over one or more files.
+struct ParticleBlock
+{
+  std::string name;
+  std::vector<BlockPart> parts;
+  std::vector<ConstantArray> constants;
+  std::uint64_t particles() const;
+};
+
+/// A named value of the file or frame (box, time, redshift), for the output's field data.
+struct FieldValue
+{
+  std::string name;
+  std::vector<double> values;
+};
+
+struct ParticleFrame
+{
+  double time = 0.0;
+  std::vector<ParticleBlock> blocks;
+  std::vector<FieldValue> fields;
+  std::vector<std::string> warnings;
+  std::string error; // empty when the frame is readable
+};
+
+struct ParticleFileInfo
+{
+  ParticleLayout layout = ParticleLayout::Unknown;
+  std::string description;        // "H5MD 1.1 (LAMMPS)", "SWIFT snapshot, 2 files"
+  std::vector<std::string> files; // the files read together (a multi-file snapshot's parts)
+  std::vector<double> times;      // the times offered, increasing
+  std::string error;              // empty when the file could be placed
+  std::vector<std::string> warnings;
+};
+
+/// The layout `file` holds (Unknown when none of them).
+ParticleLayout detectLayout(hid_t file);
+const char* layoutName(ParticleLayout layout);
+
+/// Places a file: its layout, its companion files and its times; `error` lists what was looked
+/// for when the file is none of the layouts, or names what is missing or inconsistent.
+ParticleFileInfo describeParticleFile(const std::string& fileName);
+
+/// The blocks of frame `timeIndex` (of info.times) of an H5MD or Gadget file, checked against
+/// what the datasets hold.
+ParticleFrame describeFrame(const ParticleFileInfo& info, std::size_t timeIndex);
+} // namespace parafluid::h5
