@@ -132,6 +132,9 @@ void applyScale(vtkDataArray* array, double scale)
   }
 }
 
+/// The name readSource knows the coordinates' offsets by ("" is the coordinates).
+constexpr const char* kOffset = "#offset";
+
 /// Reads `source` (found in every part) into `array` sized for this piece.
 bool readSource(const std::vector<BlockPart>& parts, const std::vector<Rows>& rows, const ArraySource& first,
                 const std::string& name, ValueType type, vtkDataArray* array, std::string& error)
@@ -149,7 +152,9 @@ bool readSource(const std::vector<BlockPart>& parts, const std::vector<Rows>& ro
       const auto& arrays = part.layout.arrays;
       const auto found =
         std::find_if(arrays.begin(), arrays.end(), [&](const ArraySource& a) { return a.name == name; });
-      source = name.empty() ? &part.layout.coordinates : (found == arrays.end() ? nullptr : &*found);
+      source = name.empty()      ? &part.layout.coordinates
+               : name == kOffset ? &part.layout.coordinateOffset
+                                 : (found == arrays.end() ? nullptr : &*found);
       if (!source)
       {
         error = "'" + part.file + "': " + part.group + " has no " + name + " as the snapshot's first file has";
@@ -168,13 +173,49 @@ bool readSource(const std::vector<BlockPart>& parts, const std::vector<Rows>& ro
     void* target = static_cast<char*>(array->GetVoidPointer(0)) + rows[p].at * bytes;
     for (std::size_t c = 0; c < source->datasets.size(); ++c)
     {
-      if (!parafluid::h5::readSlice(group, source->datasets[c], type, rows[p].first, rows[p].count, target,
-                                    static_cast<std::uint64_t>(source->components), source->datasets.size() > 1 ? c : 0,
-                                    error, source->frame))
+      if (source->datasets[c].empty())
+      {
+        continue; // a component the layout gives as a constant (the array was zero-filled)
+      }
+      if (!parafluid::h5::readSlice(group, source->datasets[c], type, part.layout.firstRow + rows[p].first,
+                                    rows[p].count, target, static_cast<std::uint64_t>(source->components),
+                                    source->datasets.size() > 1 ? c : 0, error, source->frame))
       {
         error = "'" + part.file + "': " + part.group + ": " + error;
         return false;
       }
+    }
+  }
+  return true;
+}
+/// Adds the layout's offsets to the scaled coordinates: a read offset array and a constant per axis.
+bool shiftCoordinates(const parafluid::h5::ParticleBlock& block, const std::vector<Rows>& rows, vtkDataArray* points,
+                      std::string& error)
+{
+  const parafluid::h5::StepLayout& layout = block.parts.front().layout;
+  const double* shift = layout.coordinateShift;
+  const bool offsets = !layout.coordinateOffset.datasets.empty();
+  if (!offsets && shift[0] == 0.0 && shift[1] == 0.0 && shift[2] == 0.0)
+  {
+    return true;
+  }
+  vtkNew<vtkDoubleArray> offset;
+  if (!allocate(offset, 3, points->GetNumberOfTuples()))
+  {
+    error = "not enough memory for the coordinates' offsets of " + block.parts.front().group;
+    return false;
+  }
+  offset->Fill(0.0);
+  if (offsets && !readSource(block.parts, rows, layout.coordinateOffset, kOffset, ValueType::Float64, offset, error))
+  {
+    return false;
+  }
+  const double scale = offsets ? layout.coordinateOffset.scale : 1.0;
+  for (vtkIdType i = 0; i < points->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      points->SetComponent(i, c, points->GetComponent(i, c) + scale * offset->GetComponent(i, c) + shift[c]);
     }
   }
   return true;
@@ -249,12 +290,21 @@ bool readParticleBlock(const parafluid::h5::ParticleBlock& block, const BlockRea
   }
 
   vtkSmartPointer<vtkDataArray> points = arrayOf(coordinateType);
-  if (!allocate(points, 3, n) || !readSource(block.parts, rows, coordinates, "", coordinateType, points, error))
+  if (!allocate(points, 3, n))
   {
-    error = error.empty() ? "not enough memory for the coordinates of " + head.group : error;
+    error = "not enough memory for the coordinates of " + head.group;
+    return false;
+  }
+  points->Fill(0.0); // components the layout leaves to constants stay 0 before the shift
+  if (!readSource(block.parts, rows, coordinates, "", coordinateType, points, error))
+  {
     return false;
   }
   applyScale(points, coordinates.scale);
+  if (!shiftCoordinates(block, rows, points, error))
+  {
+    return false;
+  }
   if (!coordinates.unit.empty())
   {
     points->GetInformation()->Set(vtkDataArray::UNITS_LABEL(), coordinates.unit.c_str());
@@ -289,8 +339,9 @@ bool readParticleBlock(const parafluid::h5::ParticleBlock& block, const BlockRea
     {
       Handle partFile(parafluid::h5::openForReading(part.file, problem), H5Fclose);
       Handle partGroup(partFile.valid() ? H5Gopen2(partFile, part.group.c_str(), H5P_DEFAULT) : -1, H5Gclose);
-      read = partGroup.valid() && parafluid::h5::readIds(partGroup, part.layout.idDataset, rows[p].first, rows[p].count,
-                                                         target, problem, part.layout.idFrame);
+      read = partGroup.valid() &&
+             parafluid::h5::readIds(partGroup, part.layout.idDataset, part.layout.firstRow + rows[p].first,
+                                    rows[p].count, target, problem, part.layout.idFrame);
     }
     if (!read)
     {

@@ -44,16 +44,20 @@ bool headerValues(hid_t file, const char* name, std::vector<double>& values, std
 
 /// SWIFT's factor from a dataset's values to SI, and the SI unit, from its attributes; 1 and ""
 /// when it has none (Gadget: the code's own units).
-void swiftUnits(hid_t group, const std::string& name, double& scale, std::string& unit)
+std::string swiftUnits(hid_t group, const std::string& name, double& scale, std::string& unit)
 {
   scale = 1.0;
   unit.clear();
+  static const char* const factor = "Conversion factor to CGS (not including cosmological corrections)";
   Handle dataset(H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose);
   std::vector<double> cgs;
-  if (!dataset.valid() ||
-      !readNumericAttribute(dataset, "Conversion factor to CGS (not including cosmological corrections)", cgs, 1))
+  if (!dataset.valid() || H5Aexists(dataset, factor) <= 0)
   {
-    return;
+    return "";
+  }
+  if (!readNumericAttribute(dataset, factor, cgs, 1) || !std::isfinite(cgs[0]))
+  {
+    return name + "'s CGS conversion factor is not a number; it is read in the code's units";
   }
   // Grams and centimetres to kilograms and metres; seconds, kelvin and amperes stay.
   struct Dimension
@@ -80,6 +84,7 @@ void swiftUnits(hid_t group, const std::string& name, double& scale, std::string
     std::snprintf(part, sizeof(part), exponent[0] == 1.0 ? "%s" : "%s^%g", d.si, exponent[0]);
     unit += (unit.empty() ? "" : " ") + std::string(part);
   }
+  return "";
 }
 
 bool exists(const std::string& path)
@@ -244,10 +249,18 @@ ParticleFrame describeGadgetFrame(const ParticleFileInfo& info)
         return frame;
       }
       Handle partType(H5Gopen2(file, group.c_str(), H5P_DEFAULT), H5Gclose);
-      swiftUnits(partType, layout.coordinates.datasets.front(), layout.coordinates.scale, layout.coordinates.unit);
+      std::vector<std::string> unitProblems = { swiftUnits(partType, layout.coordinates.datasets.front(),
+                                                           layout.coordinates.scale, layout.coordinates.unit) };
       for (ArraySource& array : layout.arrays)
       {
-        swiftUnits(partType, array.datasets.front(), array.scale, array.unit);
+        unitProblems.push_back(swiftUnits(partType, array.datasets.front(), array.scale, array.unit));
+      }
+      for (const std::string& problem : unitProblems)
+      {
+        if (!problem.empty())
+        {
+          frame.warnings.push_back("/" + group + "/" + problem);
+        }
       }
       frame.warnings.insert(frame.warnings.end(), layout.warnings.begin(), layout.warnings.end());
       blocks[type].parts.push_back({ info.files[f], "/" + group, std::move(layout) });

@@ -84,6 +84,14 @@ std::vector<std::string> stringAttribute(hid_t object, const char* name)
 
 ParticleLayout detectLayout(hid_t file)
 {
+  if (H5Aexists(file, "openPMD") > 0 && H5Aexists(file, "basePath") > 0)
+  {
+    return ParticleLayout::OpenPMD;
+  }
+  if (detail::hasObject(file, "VTKHDF", H5O_TYPE_GROUP))
+  {
+    return ParticleLayout::VTKHDF;
+  }
   if (detail::hasObject(file, "h5md", H5O_TYPE_GROUP) && detail::hasObject(file, "particles", H5O_TYPE_GROUP))
   {
     return ParticleLayout::H5MD;
@@ -118,6 +126,10 @@ const char* layoutName(ParticleLayout layout)
       return "H5MD";
     case ParticleLayout::Gadget:
       return "Gadget-style snapshot";
+    case ParticleLayout::OpenPMD:
+      return "openPMD";
+    case ParticleLayout::VTKHDF:
+      return "VTKHDF";
     default:
       return "unknown";
   }
@@ -143,6 +155,12 @@ ParticleFileInfo describeParticleFile(const std::string& fileName)
     case ParticleLayout::Gadget:
       detail::describeGadgetFile(file, fileName, info);
       break;
+    case ParticleLayout::OpenPMD:
+      detail::describeOpenPmdFile(file, fileName, info);
+      break;
+    case ParticleLayout::VTKHDF:
+      detail::describeVtkHdfFile(file, info);
+      break;
     case ParticleLayout::H5Part:
       info.description = "H5Part";
       for (const StepEntry& step : listSteps(file, info.error, &info.warnings))
@@ -153,8 +171,9 @@ ParticleFileInfo describeParticleFile(const std::string& fileName)
     default:
       info.error = "'" + fileName +
                    "' is HDF5 but none of the particle layouts read here: looked for an /h5md group with "
-                   "/particles (H5MD), /Header with /PartType<n> groups (Gadget, SWIFT, GIZMO, AREPO) and "
-                   "\"Step#<n>\" groups (H5Part)";
+                   "/particles (H5MD), /Header with /PartType<n> groups (Gadget, SWIFT, GIZMO, AREPO), the "
+                   "root attributes openPMD and basePath (openPMD), a /VTKHDF group (VTKHDF) and \"Step#<n>\" "
+                   "groups (H5Part)";
   }
   if (info.error.empty() && info.times.empty())
   {
@@ -175,6 +194,10 @@ ParticleFrame describeFrame(const ParticleFileInfo& info, std::size_t timeIndex)
   {
     return detail::describeGadgetFrame(info);
   }
+  if (info.layout == ParticleLayout::OpenPMD)
+  {
+    return detail::describeOpenPmdFrame(info, timeIndex);
+  }
   std::string error;
   Handle file(openForReading(info.files.front(), error), H5Fclose);
   if (!file.valid())
@@ -185,6 +208,10 @@ ParticleFrame describeFrame(const ParticleFileInfo& info, std::size_t timeIndex)
   if (info.layout == ParticleLayout::H5MD)
   {
     return detail::describeH5mdFrame(file, info, timeIndex);
+  }
+  if (info.layout == ParticleLayout::VTKHDF)
+  {
+    return detail::describeVtkHdfFrame(file, info, timeIndex);
   }
   // H5Part: one block, the step at this time.
   std::vector<std::string> ignored;

@@ -218,3 +218,91 @@ g = f.create_group('particles/all/position'); g['value'] = np.zeros((2, 5, 2)); 
 text = errors_of(bad)
 pftest.check("/particles/all/position/value" in text and "N x 3" in text, "2-D positions: %r" % text)
 print("Gadget: two files as one; missing files, bad counts, unknown layouts and shapes named")
+
+# --- openPMD: groupBased and fileBased ---------------------------------------------------------------
+OPENPMD_ITERATION = """
+def iteration(f, it, t, n, shift):
+    g = f.create_group('data/%d' % it); g.attrs['time'] = t; g.attrs['dt'] = 0.1; g.attrs['timeUnitSI'] = 1e-15
+    e = g.create_group('particles/electrons')
+    pos = e.create_group('position'); pos.attrs['unitDimension'] = np.array([1.0, 0, 0, 0, 0, 0, 0])
+    off = e.create_group('positionOffset'); off.attrs['unitDimension'] = np.array([1.0, 0, 0, 0, 0, 0, 0])
+    for a, axis in enumerate('xyz'):
+        pos[axis] = np.arange(n, dtype='f4') * (a + 1) + shift; pos[axis].attrs['unitSI'] = 1e-6
+        c = off.create_group(axis); c.attrs['value'] = 2.0 if axis == 'x' else 0.0; c.attrs['shape'] = np.array([n], 'u8')
+        c.attrs['unitSI'] = 1e-6
+    mom = e.create_group('momentum'); mom.attrs['unitDimension'] = np.array([1.0, 1, -1, 0, 0, 0, 0])
+    for axis in 'xyz':
+        mom[axis] = np.full(n, 3.0); mom[axis].attrs['unitSI'] = 2e-22
+    e['weighting'] = np.full(n, 5.0); e['weighting'].attrs['unitSI'] = 1.0
+    q = e.create_group('charge'); q.attrs['value'] = -1.0; q.attrs['shape'] = np.array([n], 'u8'); q.attrs['unitSI'] = 1.602e-19
+    q.attrs['unitDimension'] = np.array([0.0, 0, 1, 1, 0, 0, 0])
+    e['id'] = np.arange(n, dtype='u8') + 7 * it
+def header(f, encoding, fmt):
+    f.attrs['openPMD'] = np.string_('1.1.0'); f.attrs['openPMDextension'] = np.uint32(0)
+    f.attrs['basePath'] = np.string_('/data/%T/'); f.attrs['particlesPath'] = np.string_('particles/')
+    f.attrs['meshesPath'] = np.string_('meshes/'); f.attrs['iterationEncoding'] = np.string_(encoding)
+    f.attrs['iterationFormat'] = np.string_(fmt)
+"""
+grouped = os.path.join(out, "pic_grouped.h5")
+pftest.write_h5(grouped, OPENPMD_ITERATION + """
+header(f, 'groupBased', '/data/%T/')
+iteration(f, 100, 10.0, 6, 0.0)
+iteration(f, 200, 20.0, 6, 1.0)
+""")
+reader = OpenDataFile(grouped)
+pftest.check(reader.GetXMLName() == "H5ParticlesReader", "OpenDataFile picks %s for openPMD .h5" % reader.GetXMLName())
+reader.UpdatePipelineInformation()
+pftest.check(reader.GetProperty("DetectedLayout").GetElement(0) == "openPMD 1.1.0",
+             "DetectedLayout %r" % reader.GetProperty("DetectedLayout").GetElement(0))
+pftest.check(np.allclose(reader.TimestepValues, [1e-14, 2e-14]), "iteration times in s: %s" % list(reader.TimestepValues))
+electrons = blocks(reader, 2e-14)["electrons"]
+expected = np.stack([np.arange(6) * (a + 1) + 1.0 for a in range(3)], axis=1) * 1e-6
+expected[:, 0] += 2e-6  # positionOffset's constant x
+pftest.check(np.allclose(pftest.points(electrons), expected, rtol=1e-6, atol=1e-12), "position + positionOffset in m")
+pftest.check(unit(electrons, "points") == "m", "position unit %r" % unit(electrons, "points"))
+pftest.check(np.allclose(pftest.point_array(electrons, "momentum"), 6e-22) and unit(electrons, "momentum") == "kg m s^-1",
+             "momentum in SI with its unit (%r)" % unit(electrons, "momentum"))
+pftest.check(np.allclose(pftest.point_array(electrons, "charge"), -1.602e-19) and unit(electrons, "charge") == "s A",
+             "a constant record as every particle's value (%r)" % unit(electrons, "charge"))
+pftest.check(np.allclose(pftest.point_array(electrons, "weighting"), 5.0), "a scalar record")
+pftest.check(list(pftest.point_array(electrons, "id")) == list(range(1400, 1406)), "ids of iteration 200")
+for k, it in enumerate((100, 200, 300)):
+    pftest.write_h5(os.path.join(out, "series_%06d.h5" % it), OPENPMD_ITERATION + """
+header(f, 'fileBased', 'series_%%06T.h5')
+iteration(f, %d, %r, %d, 0.0)
+""" % (it, 10.0 * (k + 1), 4 + k))
+reader = ParaFluidHDF5Particles(FileName=os.path.join(out, "series_000200.h5"))
+reader.UpdatePipelineInformation()
+pftest.check(np.allclose(reader.TimestepValues, [1e-14, 2e-14, 3e-14]), "a file per iteration: %s" % list(reader.TimestepValues))
+pftest.check([blocks(reader, t)["electrons"].GetNumberOfPoints() for t in reader.TimestepValues] == [4, 5, 6],
+             "each time from its own file")
+print("openPMD: groupBased and fileBased, SI units, constant records")
+
+# --- VTKHDF PolyData, as VTK 9.3 writes it ---------------------------------------------------------
+vtkhdf = os.path.join(out, "cloud.vtkhdf.hdf5")
+pftest.write_h5(vtkhdf, """
+root = f.create_group('VTKHDF'); root.attrs['Version'] = np.array([2, 0])
+root.attrs.create('Type', np.string_('PolyData'), dtype=h5py.string_dtype('ascii', len('PolyData')))
+# two steps, of 2 partitions (3 + 2 points) and 1 partition (4 points), one after the other
+root['NumberOfPoints'] = np.array([3, 2, 4])
+root['Points'] = np.arange(27, dtype='f4').reshape(9, 3)
+pd = root.create_group('PointData'); pd['temperature'] = np.arange(9, dtype='f8') * 10; pd['id'] = np.arange(9) + 100
+for kind in ('Vertices', 'Lines', 'Polygons', 'Strips'):
+    g = root.create_group(kind); g['NumberOfCells'] = np.zeros(3, 'i8'); g['NumberOfConnectivityIds'] = np.zeros(3, 'i8')
+    g['Offsets'] = np.zeros(3, 'i8'); g['Connectivity'] = np.zeros(0, 'i8')
+steps = root.create_group('Steps'); steps.attrs['NSteps'] = 2
+steps['Values'] = np.array([0.5, 1.5]); steps['PartOffsets'] = np.array([0, 2]); steps['NumberOfParts'] = np.array([2, 1])
+steps['PointOffsets'] = np.array([0, 5]); steps.create_group('PointDataOffsets')
+steps['PointDataOffsets/temperature'] = np.array([0, 5]); steps['PointDataOffsets/id'] = np.array([0, 5])
+""")
+reader = ParaFluidHDF5Particles(FileName=vtkhdf)
+reader.UpdatePipelineInformation()
+pftest.check(reader.GetProperty("DetectedLayout").GetElement(0) == "VTKHDF PolyData 2.0",
+             "DetectedLayout %r" % reader.GetProperty("DetectedLayout").GetElement(0))
+pftest.check(list(reader.TimestepValues) == [0.5, 1.5], "VTKHDF steps %s" % list(reader.TimestepValues))
+first, second = blocks(reader, 0.5)["particles"], blocks(reader, 1.5)["particles"]
+pftest.check(np.array_equal(pftest.points(first), np.arange(15).reshape(5, 3)), "step 0: both partitions' points")
+pftest.check(np.array_equal(pftest.points(second), np.arange(15, 27).reshape(4, 3)), "step 1's points")
+pftest.check(list(pftest.point_array(second, "temperature")) == [50, 60, 70, 80], "step 1's point data")
+pftest.check(list(pftest.point_array(second, "id")) == [105, 106, 107, 108], "ids from PointData/id")
+print("VTKHDF: steps and partitions")

@@ -11,6 +11,10 @@ void describeH5mdFile(hid_t file, ParticleFileInfo& info);
 ParticleFrame describeH5mdFrame(hid_t file, const ParticleFileInfo& info, std::size_t timeIndex);
 void describeGadgetFile(hid_t file, const std::string& fileName, ParticleFileInfo& info);
 ParticleFrame describeGadgetFrame(const ParticleFileInfo& info);
+void describeOpenPmdFile(hid_t file, const std::string& fileName, ParticleFileInfo& info);
+ParticleFrame describeOpenPmdFrame(const ParticleFileInfo& info, std::size_t timeIndex);
+void describeVtkHdfFile(hid_t file, ParticleFileInfo& info);
+ParticleFrame describeVtkHdfFrame(hid_t file, const ParticleFileInfo& info, std::size_t timeIndex);
 
 /// The names of the links in `group`, in name order.
 std::vector<std::string> linkNames(hid_t group);

@@ -61,9 +61,57 @@ def swift(f, n=N, coordinates=None, count=None, files=1, total=None):
     return g
 
 
+def openpmd(f, encoding="groupBased", fmt="/data/%T/", n=N, units=(1e-6, 1e-6, 1e-6), axes="xyz"):
+    f.attrs["openPMD"] = np.string_("1.1.0")
+    f.attrs["basePath"] = np.string_("/data/%T/")
+    f.attrs["particlesPath"] = np.string_("particles/")
+    f.attrs["iterationEncoding"] = np.string_(encoding)
+    f.attrs["iterationFormat"] = np.string_(fmt)
+    g = f.create_group("data/10")
+    g.attrs["time"] = 1.0
+    g.attrs["timeUnitSI"] = 1e-15
+    pos = g.create_group("particles/e/position")
+    pos.attrs["unitDimension"] = np.array([1.0, 0, 0, 0, 0, 0, 0])
+    for axis, unit in zip(axes, units):
+        pos[axis] = np.arange(n, dtype="f4")
+        pos[axis].attrs["unitSI"] = unit
+    g["particles/e/weighting"] = np.ones(n)
+
+
+def vtkhdf(f, kind="PolyData", points=N, rows=N, steps=False):
+    root = f.create_group("VTKHDF")
+    root.attrs["Version"] = np.array([2, 0])
+    root.attrs.create("Type", np.string_(kind), dtype=h5py.string_dtype("ascii", len(kind)))
+    root["NumberOfPoints"] = np.array([points])
+    root["Points"] = np.zeros((rows, 3), "f4")
+    root["PointData/speed"] = np.ones(rows)
+    if steps:
+        s = root.create_group("Steps")
+        s["Values"] = np.array([0.0])
+
+
 valid = []
 valid.append(case("h5md_valid", ".h5md", "data", lambda f: h5md(f).__setitem__("velocity", np.ones((N, 3))), points=N))
 valid.append(case("swift_valid", ".hdf5", "data", swift, points=N))
+valid.append(case("openpmd_valid", ".h5", "data", openpmd, points=N))
+valid.append(case("vtkhdf_valid", ".hdf5", "data", vtkhdf, points=N))
+
+# openPMD
+case("openpmd_no_iterations", ".h5", "error",
+     lambda f: f.attrs.__setitem__("openPMD", np.string_("1.1.0")) or f.attrs.__setitem__("basePath", np.string_("/data/%T/")),
+     error=["no iterations"])
+case("openpmd_no_components", ".h5", "error", lambda f: openpmd(f, axes=""), error=["no x, y or z"])
+case("openpmd_mixed_units", ".h5", "error", lambda f: openpmd(f, units=(1e-6, 1.0, 1e-6)), error=["different unitSI"])
+case("openpmd_filebased_no_pattern", ".h5", "error", lambda f: openpmd(f, encoding="fileBased", fmt="data.h5"),
+     error=["%T"])
+case("openpmd_unit_text", ".h5", "error",
+     lambda f: openpmd(f) or f["data/10/particles/e/position/x"].attrs.__setitem__("unitSI", "micron"),
+     error=["position/x", "unitSI", "not a number"])
+
+# VTKHDF
+case("vtkhdf_unstructured", ".hdf5", "error", lambda f: vtkhdf(f, kind="UnstructuredGrid"), error=["not PolyData"])
+case("vtkhdf_points_short", ".hdf5", "error", lambda f: vtkhdf(f, points=N + 9), error=["/VTKHDF/Points"])
+case("vtkhdf_steps_without_offsets", ".hdf5", "error", lambda f: vtkhdf(f, steps=True), error=["PartOffsets"])
 
 # H5MD
 case("h5md_position_2d", ".h5md", "error", lambda f: h5md(f, position=np.zeros((2, N, 2))), error=["N x 3"])
@@ -121,7 +169,7 @@ def unit_text(f):
     swift(f)["Coordinates"].attrs["Conversion factor to CGS (not including cosmological corrections)"] = "a lot"
 
 
-case("gadget_unit_text", ".hdf5", "data", unit_text, points=N)
+case("gadget_unit_text", ".hdf5", "data", unit_text, points=N, warn=["/PartType0/Coordinates", "not a number"])
 case("gadget_files_1e9", ".hdf5", "error", lambda f: swift(f, files=10 ** 9), error=["NumFilesPerSnapshot"])
 case("gadget_split.0", ".hdf5", "error", lambda f: swift(f, files=2), error=["gadget_split.1.hdf5", "missing"])
 case("gadget_pair.0", ".hdf5", "error", lambda f: swift(f, files=2, total=2 * N), error=["NumPart_Total differs"])

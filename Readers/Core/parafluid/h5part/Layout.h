@@ -36,10 +36,15 @@ struct ArraySource
 struct StepLayout
 {
   std::uint64_t particles = 0;
+  std::uint64_t firstRow = 0; // the datasets' row of the first particle (VTKHDF's steps share datasets)
   /// Either three datasets x, y, z or one N x 3 dataset ("position" / "positions"), with the
   /// frame, scale and unit they are read with (the `datasets` of an ArraySource of 3 components).
   std::vector<std::string> coordinateDatasets;
   ArraySource coordinates;
+  /// Added to the coordinates once scaled (openPMD's positionOffset): a dataset per component
+  /// ("" where none) scaled by its own factor, and a constant per axis [SI].
+  ArraySource coordinateOffset;
+  double coordinateShift[3] = { 0.0, 0.0, 0.0 };
   std::string idDataset;     // empty when the file has no usable "id" dataset
   std::int64_t idFrame = -1; // the frame of a time-dependent F x N id dataset
   std::vector<ArraySource> arrays;

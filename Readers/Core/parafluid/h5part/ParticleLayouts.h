@@ -1,9 +1,11 @@
 #pragma once
 // The HDF5 particle layouts particle codes write, told apart by what a file holds, not by its
-// name: H5Part ("Step#<n>" groups), H5MD 1.x (an /h5md group, /particles/<group>/<element>) and
+// name: H5Part ("Step#<n>" groups), H5MD 1.x (an /h5md group, /particles/<group>/<element>),
 // Gadget-style snapshots (/Header and /PartType<n>; SWIFT's per-dataset unit attributes applied;
-// a snapshot split over NumFilesPerSnapshot files read as one). Each is described as frames of
-// blocks of N-row datasets (StepLayout), the one path the readers turn into particles.
+// a snapshot split over NumFilesPerSnapshot files read as one) and openPMD 1.x particles
+// (/data/<iteration>/particles/<species>/<record>/<component>, in one file or one file per
+// iteration, unitSI applied) and VTKHDF PolyData (newer VTK's point clouds, its steps too). Each is described as frames
+// of blocks of N-row datasets (StepLayout), the one path the readers turn into particles.
 #include "parafluid/h5part/Layout.h"
 
 #include <cstdint>
@@ -17,7 +19,9 @@ enum class ParticleLayout
   Unknown,
   H5Part,
   H5MD,
-  Gadget
+  Gadget,
+  OpenPMD,
+  VTKHDF
 };
 
 /// One file's rows of a block: the group its datasets are in, and what they are.
@@ -67,7 +71,10 @@ struct ParticleFileInfo
   std::string description;        // "H5MD 1.1 (LAMMPS)", "SWIFT snapshot, 2 files"
   std::vector<std::string> files; // the files read together (a multi-file snapshot's parts)
   std::vector<double> times;      // the times offered, increasing
-  std::string error;              // empty when the file could be placed
+  /// Per time, where its frame is when the layout keeps frames apart (openPMD: the file and the
+  /// iteration's group, "/data/100/").
+  std::vector<std::string> frameFiles, frameGroups;
+  std::string error; // empty when the file could be placed
   std::vector<std::string> warnings;
 };
 
