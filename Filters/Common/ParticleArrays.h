@@ -20,12 +20,15 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numeric>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace parafluid::vtk
@@ -150,17 +153,29 @@ inline void setFieldValue(vtkFieldData* fieldData, const char* name, const doubl
   fieldData->AddArray(array);
 }
 
-/// One vertex cell per point, written straight into offsets and connectivity.
+/// One vertex cell per point, written straight into offsets and connectivity: 32-bit ones below
+/// 2^31 points (vtkCellArray's own storage choice; half the bytes to write, a tenth of a second a
+/// 10 M particle read).
 inline void setOneVertexPerPoint(vtkPolyData* output, vtkIdType n)
 {
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfValues(n + 1);
-  std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, vtkIdType(0));
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(n);
-  std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, vtkIdType(0));
   vtkNew<vtkCellArray> vertices;
-  vertices->SetData(offsets, connectivity);
+  auto fill = [&](auto offsets, auto connectivity)
+  {
+    using Value = std::remove_pointer_t<decltype(offsets->GetPointer(0))>;
+    offsets->SetNumberOfValues(n + 1);
+    std::iota(offsets->GetPointer(0), offsets->GetPointer(0) + n + 1, Value(0));
+    connectivity->SetNumberOfValues(n);
+    std::iota(connectivity->GetPointer(0), connectivity->GetPointer(0) + n, Value(0));
+    vertices->SetData(offsets.GetPointer(), connectivity.GetPointer());
+  };
+  if (n < (vtkIdType(1) << 31) - 1)
+  {
+    fill(vtkSmartPointer<vtkTypeInt32Array>::New(), vtkSmartPointer<vtkTypeInt32Array>::New());
+  }
+  else
+  {
+    fill(vtkSmartPointer<vtkTypeInt64Array>::New(), vtkSmartPointer<vtkTypeInt64Array>::New());
+  }
   output->SetVerts(vertices);
 }
 /// This process's index and the number of processes (0 and 1 in a serial session).

@@ -169,6 +169,25 @@ bool readIds(hid_t group, const std::string& name, std::uint64_t offset, std::ui
              std::string& error, std::int64_t frame)
 {
   const ValueType stored = commonValueType(group, { name });
+  if (stored == ValueType::UInt64)
+  {
+    // Read as stored and checked here: HDF5's own uint64 -> int64 conversion, value by value with
+    // overflow handling, took longer than the read (Gadget's and SWIFT's ids are uint64).
+    if (!readSlice(group, name, ValueType::UInt64, offset, count, ids, 1, 0, error, frame))
+    {
+      return false;
+    }
+    for (std::uint64_t i = 0; i < count; ++i)
+    {
+      if (ids[i] < 0)
+      {
+        error = "dataset " + name + " holds " + std::to_string(static_cast<std::uint64_t>(ids[i])) + " at particle " +
+                std::to_string(offset + i) + ", beyond int64's range";
+        return false;
+      }
+    }
+    return true;
+  }
   if (stored != ValueType::Float32 && stored != ValueType::Float64)
   {
     return readSlice(group, name, ValueType::Int64, offset, count, ids, 1, 0, error, frame);
