@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -166,4 +167,36 @@ TEST(FoamClassifier, EmptyInputAndBadParameters)
   EXPECT_THROW(scoreFoam(one, 1, p), std::invalid_argument);
   const float bad[3] = { 0, INFINITY, 0 };
   EXPECT_THROW(scoreFoam(bad, 1, parameters()), std::invalid_argument);
+}
+
+TEST(FoamClassifier, ReportsProgressInBlocksAndStopsWhenAsked)
+{
+  // A 50 x 50 x 30 slab: 75 000 particles, two blocks a pass.
+  std::vector<float> xyz;
+  for (int k = 0; k < 30; ++k)
+    for (int j = 0; j < 50; ++j)
+      for (int i = 0; i < 50; ++i)
+        xyz.insert(xyz.end(), { float(i * kSpacing), float(j * kSpacing), float(k * kSpacing) });
+  const std::size_t n = xyz.size() / 3;
+  const FoamScores plain = scoreFoam(xyz.data(), n, parameters());
+  std::vector<double> reported;
+  const FoamScores blocked = scoreFoam(xyz.data(), n, parameters(),
+                                       [&](double f)
+                                       {
+                                         reported.push_back(f);
+                                         return true;
+                                       });
+  EXPECT_EQ(blocked.score, plain.score); // the blocks do not change a score
+  ASSERT_EQ(reported.size(), 4u);
+  EXPECT_TRUE(std::is_sorted(reported.begin(), reported.end()));
+  EXPECT_DOUBLE_EQ(reported.back(), 1.0);
+  int calls = 0;
+  const FoamScores stopped = scoreFoam(xyz.data(), n, parameters(),
+                                       [&](double)
+                                       {
+                                         ++calls;
+                                         return false;
+                                       });
+  EXPECT_EQ(calls, 1);
+  EXPECT_TRUE(std::all_of(stopped.score.begin(), stopped.score.end(), [](float s) { return s == 0.0f; }));
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -36,7 +37,8 @@ std::string validate(const FoamParameters& p)
   return why.str();
 }
 
-FoamScores scoreFoam(const float* xyz, std::size_t n, const FoamParameters& p)
+FoamScores scoreFoam(const float* xyz, std::size_t n, const FoamParameters& p,
+                     const std::function<bool(double)>& progress)
 {
   const std::string problem = validate(p);
   if (!problem.empty())
@@ -59,68 +61,92 @@ FoamScores scoreFoam(const float* xyz, std::size_t n, const FoamParameters& p)
   const float volume = static_cast<float>(p.particleVolume);
   const long long count = static_cast<long long>(n);
 
+  // Each pass in blocks of particles, progress reported between them (every particle's score
+  // depends on its neighbours only, so the blocks do not change the result).
+  constexpr long long kBlock = 1 << 16;
+  bool stopped = false;
+  const auto inBlocks = [&](double from, double to, const auto& body)
+  {
+    for (long long first = 0; first < count && !stopped; first += kBlock)
+    {
+      const long long last = std::min(count, first + kBlock);
+      body(first, last);
+      stopped = progress && !progress(from + (to - from) * static_cast<double>(last) / static_cast<double>(count));
+    }
+  };
+
   // Pass 1: outward unit normal -grad c / |grad c|, the surface test, and the neighbour count.
   std::vector<float> normal(3 * n, 0.0f);
   std::vector<std::uint32_t> neighbours(n, 0);
+  inBlocks(0.0, 0.5,
+           [&](long long first, long long last)
+           {
 #pragma omp parallel for schedule(static)
-  for (long long i = 0; i < count; ++i)
-  {
-    float g[3] = { 0.0f, 0.0f, 0.0f };
-    std::uint32_t others = 0;
-    near.forEachNear(&xyz[3 * i],
-                     [&](std::uint32_t j, float ex, float ey, float ez, float r2)
-                     {
-                       if (j == static_cast<std::uint32_t>(i))
-                       {
-                         return;
-                       }
-                       ++others;
-                       // grad_i W(x_i - x_j) = factor * (x_i - x_j) = -factor * e
-                       const float f = -volume * poly6.gradientFactorFromSquared(r2);
-                       g[0] += f * ex;
-                       g[1] += f * ey;
-                       g[2] += f * ez;
-                     });
-    neighbours[i] = others;
-    const float length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-    if (length * h > p.surfaceThreshold)
-    {
-      out.surface[i] = 1;
-      for (int a = 0; a < 3; ++a)
-      {
-        normal[3 * i + a] = -g[a] / length; // c grows into the fluid; outward is against it
-      }
-    }
-  }
+             for (long long i = first; i < last; ++i)
+             {
+               float g[3] = { 0.0f, 0.0f, 0.0f };
+               std::uint32_t others = 0;
+               near.forEachNear(&xyz[3 * i],
+                                [&](std::uint32_t j, float ex, float ey, float ez, float r2)
+                                {
+                                  if (j == static_cast<std::uint32_t>(i))
+                                  {
+                                    return;
+                                  }
+                                  ++others;
+                                  // grad_i W(x_i - x_j) = factor * (x_i - x_j) = -factor * e
+                                  const float f = -volume * poly6.gradientFactorFromSquared(r2);
+                                  g[0] += f * ex;
+                                  g[1] += f * ey;
+                                  g[2] += f * ez;
+                                });
+               neighbours[i] = others;
+               const float length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+               if (length * h > p.surfaceThreshold)
+               {
+                 out.surface[i] = 1;
+                 for (int a = 0; a < 3; ++a)
+                 {
+                   normal[3 * i + a] = -g[a] / length; // c grows into the fluid; outward is against it
+                 }
+               }
+             }
+           });
 
   // Pass 2: crest potential over surface neighbours below along the normal, and the score.
   const float spray = static_cast<float>(p.sprayNeighbours);
+  inBlocks(0.5, 1.0,
+           [&](long long first, long long last)
+           {
 #pragma omp parallel for schedule(static)
-  for (long long i = 0; i < count; ++i)
-  {
-    float crest = 0.0f;
-    if (out.surface[i])
-    {
-      const float* ni = &normal[3 * i];
-      near.forEachNear(&xyz[3 * i],
-                       [&](std::uint32_t j, float ex, float ey, float ez, float r2)
-                       {
-                         if (j == static_cast<std::uint32_t>(i) || !out.surface[j] ||
-                             ex * ni[0] + ey * ni[1] + ez * ni[2] >= 0.0f)
-                         {
-                           return;
-                         }
-                         const float* nj = &normal[3 * j];
-                         crest += (1.0f - (ni[0] * nj[0] + ni[1] * nj[1] + ni[2] * nj[2])) * (1.0f - std::sqrt(r2) / h);
-                       });
-    }
-    out.crest[i] = crest;
-    // Spray cue: 1 at sprayNeighbours neighbours or fewer, falling to 0 at twice as many.
-    const float others = static_cast<float>(neighbours[i]);
-    const float sprayCue = others <= spray ? 1.0f : std::max(0.0f, 1.0f - (others - spray) / std::max(spray, 1.0f));
-    out.score[i] = std::max(crest / static_cast<float>(p.crestThreshold), sprayCue);
-    out.candidate[i] = out.score[i] >= 1.0f ? 1 : 0;
-  }
+             for (long long i = first; i < last; ++i)
+             {
+               float crest = 0.0f;
+               if (out.surface[i])
+               {
+                 const float* ni = &normal[3 * i];
+                 near.forEachNear(&xyz[3 * i],
+                                  [&](std::uint32_t j, float ex, float ey, float ez, float r2)
+                                  {
+                                    if (j == static_cast<std::uint32_t>(i) || !out.surface[j] ||
+                                        ex * ni[0] + ey * ni[1] + ez * ni[2] >= 0.0f)
+                                    {
+                                      return;
+                                    }
+                                    const float* nj = &normal[3 * j];
+                                    crest += (1.0f - (ni[0] * nj[0] + ni[1] * nj[1] + ni[2] * nj[2])) *
+                                             (1.0f - std::sqrt(r2) / h);
+                                  });
+               }
+               out.crest[i] = crest;
+               // Spray cue: 1 at sprayNeighbours neighbours or fewer, falling to 0 at twice as many.
+               const float others = static_cast<float>(neighbours[i]);
+               const float sprayCue =
+                 others <= spray ? 1.0f : std::max(0.0f, 1.0f - (others - spray) / std::max(spray, 1.0f));
+               out.score[i] = std::max(crest / static_cast<float>(p.crestThreshold), sprayCue);
+               out.candidate[i] = out.score[i] >= 1.0f ? 1 : 0;
+             }
+           });
   return out;
 }
 

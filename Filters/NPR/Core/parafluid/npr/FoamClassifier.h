@@ -12,6 +12,7 @@
 // so foam does not flicker.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -42,7 +43,10 @@ struct FoamScores
 
 /// Scores n particles (x, y, z interleaved). Throws std::invalid_argument for bad parameters or
 /// NaN/infinite positions.
-FoamScores scoreFoam(const float* xyz, std::size_t n, const FoamParameters& parameters);
+/// `progress(fraction)` is called between blocks of particles; returning false stops the scoring
+/// (the scores are then incomplete).
+FoamScores scoreFoam(const float* xyz, std::size_t n, const FoamParameters& parameters,
+                     const std::function<bool(double)>& progress = {});
 
 class FoamHysteresis
 {
