@@ -15,6 +15,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTypeInt64Array.h"
 #include "vtkTypeUInt64Array.h"
 
@@ -236,6 +237,22 @@ bool shiftCoordinates(const parafluid::h5::ParticleBlock& block, const std::vect
   return true;
 }
 } // namespace
+
+BlockReading blockReadingFor(vtkInformation* outInfo, vtkDataArraySelection* selection, vtkAlgorithm* algorithm)
+{
+  BlockReading how;
+  how.selection = selection;
+  how.algorithm = algorithm;
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
+  {
+    how.piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
+  }
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
+  {
+    how.pieces = std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
+  }
+  return how;
+}
 
 std::vector<std::string> blockArrayNames(const parafluid::h5::ParticleBlock& block)
 {

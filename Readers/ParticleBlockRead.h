@@ -11,6 +11,7 @@
 
 class vtkAlgorithm;
 class vtkDataArraySelection;
+class vtkInformation;
 class vtkPolyData;
 
 namespace parafluid::vtk
@@ -21,6 +22,10 @@ struct BlockReading
   int piece = 0, pieces = 1;
   vtkAlgorithm* algorithm = nullptr; // for Abort, when set
 };
+
+/// The piece `outInfo` asks for (0 of 1 without a request), with the array selection and the
+/// algorithm whose Abort stops the read.
+BlockReading blockReadingFor(vtkInformation* outInfo, vtkDataArraySelection* selection, vtkAlgorithm* algorithm);
 
 /// False with `error` (naming the file and group) when the block cannot be read; warnings (NaN
 /// coordinates, ids that are not whole numbers) are appended.

@@ -262,15 +262,7 @@ bool vtkPFH5PartReader::ReadStep(vtkInformation* info, vtkPolyData* output, std:
     this->WarnOnce(warning);
   }
   // This piece's contiguous slice of the particles, read by the path every layout shares.
-  parafluid::vtk::BlockReading how;
-  how.selection = this->PointArraySelection;
-  how.piece = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-                ? info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-                : 0;
-  how.pieces = info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-                 ? std::max(1, info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
-                 : 1;
-  how.algorithm = this;
+  const parafluid::vtk::BlockReading how = parafluid::vtk::blockReadingFor(info, this->PointArraySelection, this);
   const parafluid::h5::ParticleBlock block{ groupName, { { this->FileName, groupName, layout } }, {} };
   std::vector<std::string> blockWarnings;
   const bool read = parafluid::vtk::readParticleBlock(block, how, output, blockWarnings, error);

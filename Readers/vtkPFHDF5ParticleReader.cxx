@@ -167,15 +167,8 @@ int vtkPFHDF5ParticleReader::RequestData(vtkInformation*, vtkInformationVector**
       {
         this->WarnOnce(warning);
       }
-      parafluid::vtk::BlockReading how;
-      how.selection = this->PointArraySelection;
-      how.piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-                    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-                    : 0;
-      how.pieces = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
-                     ? std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
-                     : 1;
-      how.algorithm = this;
+      const parafluid::vtk::BlockReading how =
+        parafluid::vtk::blockReadingFor(outInfo, this->PointArraySelection, this);
       output->SetNumberOfBlocks(static_cast<unsigned int>(frame.blocks.size()));
       for (std::size_t b = 0; b < frame.blocks.size(); ++b)
       {
