@@ -12,7 +12,7 @@ generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S "$root" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPARAFLUID_CORE_ONLY=ON \
-    -DPARAFLUID_BUILD_BENCHMARKS=OFF -DPARAFLUID_SANITIZE=ON
+    -DPARAFLUID_BUILD_BENCHMARKS=OFF -DPARAFLUID_SANITIZE=ON -DPARAFLUID_CUDA=OFF
 fi
 cmake --build "$build" --parallel "$(nproc)"
 # halt_on_error + -fno-sanitize-recover: the first report ends the test with a failure.

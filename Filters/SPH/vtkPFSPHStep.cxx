@@ -22,6 +22,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPolyData.h"
@@ -74,6 +75,16 @@ void vtkPFSPHStep::SetPressureSolver(int solver)
     return;
   }
   this->SetParameter(this->Parameters.pressureSolver, entry->type);
+}
+
+void vtkPFSPHStep::SetBackend(int backend)
+{
+  if (backend != this->Backend &&
+      parafluid::vtk::isChoice(this, "Backend", backend, { "Automatic", "CPU", "CUDA" }, this->Backend))
+  {
+    this->Backend = backend;
+    this->Modified();
+  }
 }
 
 int vtkPFSPHStep::GetPressureSolver() const
@@ -398,7 +409,15 @@ bool vtkPFSPHStep::StartSimulation(vtkPointSet* input, vtkPolyData* surface)
   }
   try
   {
-    cache.start(parafluid::sph::makeSimulation(p, parafluid::vtk::readParticleState(input), std::move(boundary)));
+    std::string choice;
+    cache.start(parafluid::sph::makeSimulation(p, parafluid::vtk::readParticleState(input), std::move(boundary),
+                                               static_cast<parafluid::sph::Backend>(this->Backend), &choice));
+    if (this->Backend == 0 && choice != this->BackendUsed)
+    {
+      // Automatic says once where it runs, and for the CPU why not on the GPU.
+      vtkOutputWindowDisplayText(("SPH Step runs on " + choice + "\n").c_str());
+    }
+    this->BackendUsed = choice;
   }
   catch (const std::exception& e)
   {
@@ -500,6 +519,7 @@ void vtkPFSPHStep::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SmoothingLength: " << this->Parameters.smoothingLength << "\n";
   os << indent << "PressureSolver: " << parafluid::sph::solverEntry(this->Parameters.pressureSolver).label << "\n";
+  os << indent << "Backend: " << this->Backend << " (used: " << this->BackendUsed << ")\n";
   os << indent << "AdaptiveTimeStep: " << this->Parameters.adaptiveTimeStep << "\n";
   os << indent << "TimeStep: " << this->Parameters.timeStep << "\n";
   os << indent << "OutputInterval: " << this->OutputInterval << "\n";

@@ -27,6 +27,7 @@
 #include "vtkSmartPointer.h"
 
 #include <memory>
+#include <string>
 
 class vtkAlgorithmOutput;
 class vtkFieldData;
@@ -139,6 +140,15 @@ public:
   void SetWallKinematicViscosity(double value) { this->SetParameter(this->Parameters.wallKinematicViscosity, value); }
   double GetWallKinematicViscosity() const { return this->Parameters.wallKinematicViscosity; }
 
+  /// Where the simulation runs: 0 Automatic (the GPU when this build's CUDA backend is usable here
+  /// and runs the scene, else the CPU; the output window says which and why), 1 CPU, 2 CUDA (an
+  /// error, naming why, where it cannot run).
+  void SetBackend(int backend);
+  vtkGetMacro(Backend, int);
+  /// The backend that runs the simulation ("CPU", "CUDA (NVIDIA H200)"; for Automatic on the CPU,
+  /// why not the GPU); empty before the first update.
+  const char* GetBackendUsed() const { return this->BackendUsed.c_str(); }
+
   /// Simulated time between two output times [s].
   vtkSetMacro(OutputInterval, double);
   vtkGetMacro(OutputInterval, double);
@@ -196,6 +206,8 @@ private:
   void WriteOutput(vtkPointSet* input, long long target, vtkPolyData* output);
 
   parafluid::sph::SPHParameters Parameters;
+  int Backend = 0;
+  std::string BackendUsed;
   double OutputInterval = 0.01;
   int NumberOfOutputs = 100;
   bool OutputPressure = true;

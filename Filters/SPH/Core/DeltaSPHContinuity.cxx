@@ -120,9 +120,7 @@ void DeltaSPHSolver::updatePressure(SimulationParts& sim)
 #pragma omp parallel for simd schedule(static) num_threads(threadCount(sim.parameters()))
   for (std::int64_t i = 0; i < n; ++i)
   {
-    const float ratio = s.density[i] * inverseRho0;
-    const float r2 = ratio * ratio;
-    s.pressure[i] = b * (r2 * r2 * r2 * ratio - 1.0f);
+    s.pressure[i] = taitPressure(s.density[i], b, inverseRho0);
   }
 }
 

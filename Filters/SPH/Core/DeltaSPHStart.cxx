@@ -41,13 +41,7 @@ void DeltaSPHSolver::start(SimulationParts& sim)
 {
   ParticleState& s = sim.state();
   this->SoundSpeed = automaticSoundSpeed(sim.parameters(), s);
-  // The slow part of the density's departure follows it over the fluid's free-fall time over its
-  // own height: ten sqrt(2) times the time sound crosses that height at the automatic c0, and 3.5
-  // times the slowest acoustic period (4 H / c0), so acoustic noise stays in the fast part; a
-  // departure held longer than that (a truncated kernel's at a free surface at rest) counts as slow.
-  // Without gravity nothing holds the surface off hydrostatic, and the whole departure diffuses.
-  const double g = gravityMagnitude(sim.parameters());
-  this->SlowDepartureTime = g > 0.0 ? std::sqrt(fluidHeight(sim.parameters(), s) / g) : 0.0;
+  this->SlowDepartureTime = slowDepartureTime(sim.parameters(), s);
   this->PressureCorrection =
     latticeGradientCorrection(sim.particleSpacing(), sim.parameters().smoothingLength, DensityKernel::WendlandC2);
   // Density is state here: a given one (a prepared initial condition) is kept; otherwise the
@@ -56,7 +50,7 @@ void DeltaSPHSolver::start(SimulationParts& sim)
                                                        [](float rho) { return std::isfinite(rho) && rho > 0.0f; });
   if (!given)
   {
-    this->startHydrostatic(sim);
+    hydrostaticDensity(sim.parameters(), this->SoundSpeed, sim.particleSpacing(), s);
   }
   this->DensityRate.assign(s.size(), 0.0f);
   this->startSlowDeparture(sim);
@@ -73,10 +67,19 @@ void DeltaSPHSolver::start(SimulationParts& sim)
   this->computeAccelerations(sim);
 }
 
-void DeltaSPHSolver::startHydrostatic(SimulationParts& sim)
+double DeltaSPHSolver::slowDepartureTime(const SPHParameters& p, const ParticleState& s)
 {
-  ParticleState& s = sim.state();
-  const SPHParameters& p = sim.parameters();
+  // The slow part of the density's departure follows it over the fluid's free-fall time over its
+  // own height: ten sqrt(2) times the time sound crosses that height at the automatic c0, and 3.5
+  // times the slowest acoustic period (4 H / c0), so acoustic noise stays in the fast part; a
+  // departure held longer than that (a truncated kernel's at a free surface at rest) counts as slow.
+  // Without gravity nothing holds the surface off hydrostatic, and the whole departure diffuses.
+  const double g = gravityMagnitude(p);
+  return g > 0.0 ? std::sqrt(fluidHeight(p, s) / g) : 0.0;
+}
+
+void DeltaSPHSolver::hydrostaticDensity(const SPHParameters& p, double soundSpeed, float spacing, ParticleState& s)
+{
   std::fill(s.density.begin(), s.density.end(), p.restDensity);
   // Gravity along one axis only (the usual case); otherwise rest density, which settles acoustically.
   int down = -1;
@@ -97,7 +100,7 @@ void DeltaSPHSolver::startHydrostatic(SimulationParts& sim)
   const int b = (down + 1) % 3, c = (down + 2) % 3;
   const float* position[3] = { s.x.data(), s.y.data(), s.z.data() };
   const float sign = p.gravity[down] < 0.0f ? 1.0f : -1.0f; // height grows against gravity
-  const float d = sim.particleSpacing();
+  const float d = spacing;
   std::unordered_map<std::int64_t, float> top;
   auto key = [&](std::size_t i)
   {
@@ -115,7 +118,7 @@ void DeltaSPHSolver::startHydrostatic(SimulationParts& sim)
     }
   }
   const double g = std::fabs(p.gravity[down]);
-  const double bulk = this->SoundSpeed * this->SoundSpeed * p.restDensity / kGamma;
+  const double bulk = soundSpeed * soundSpeed * p.restDensity / kGamma;
   for (std::size_t i = 0; i < s.size(); ++i)
   {
     const double depth = top[key(i)] - sign * position[down][i] + 0.5 * d;

@@ -1,9 +1,14 @@
 #include "parafluid/sph/SPHSolver.h"
 
+#include "parafluid/sph/InitialState.h"
+
 #include "parafluid/common/TriangleBoundary.h"
 #include "parafluid/sph/SolverRegistry.h"
+#include "parafluid/sph/TimeStepControl.h"
+#include "private/BoxWalls.h"
 #include "private/MeshWall.h"
 #include "private/NeighbourCandidates.h"
+#include "private/OutputFields.h"
 #include "private/SimulationParts.h"
 
 #include <algorithm>
@@ -30,9 +35,9 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial,
   {
     throw std::invalid_argument("SPH: " + problem);
   }
-  this->completeInitialState();
-  this->checkCoincident();
-  this->SpeedLimit = this->sceneSpeedLimit();
+  completeInitialState(this->State);
+  checkCoincident(this->State);
+  this->SpeedLimit = sceneSpeedLimit(this->Parameters, this->State);
   // Particles that start outside the domain are reflected inside, as the walls would do.
   this->drift(0.0f);
   this->sortByCell();
@@ -69,117 +74,32 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial,
   this->measureCompression();
 }
 
-void SPHSolver::completeInitialState()
-{
-  const std::size_t n = this->State.x.size();
-  if (this->State.y.size() != n || this->State.z.size() != n)
-  {
-    throw std::invalid_argument("SPH: position arrays have different lengths");
-  }
-  const bool hasVelocity = this->State.vx.size() == n && this->State.vy.size() == n && this->State.vz.size() == n;
-  const bool hasId = this->State.id.size() == n;
-  const bool hasIndex = this->State.originalIndex.size() == n;
-  if (!hasVelocity && !(this->State.vx.empty() && this->State.vy.empty() && this->State.vz.empty()))
-  {
-    throw std::invalid_argument("SPH: velocity arrays do not match the particle count");
-  }
-  std::vector<std::int64_t> ids;
-  std::vector<std::uint32_t> indices;
-  if (hasId)
-  {
-    ids.swap(this->State.id);
-  }
-  if (hasIndex)
-  {
-    indices.swap(this->State.originalIndex);
-  }
-  this->State.resize(n); // zero velocity when none was given; ids and indices default to the index
-  if (hasId)
-  {
-    this->State.id.swap(ids);
-  }
-  if (hasIndex)
-  {
-    this->State.originalIndex.swap(indices);
-  }
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const float s = this->State.x[i] + this->State.y[i] + this->State.z[i] + this->State.vx[i] + this->State.vy[i] +
-                    this->State.vz[i];
-    if (!std::isfinite(s))
-    {
-      throw std::invalid_argument("SPH: particle " + std::to_string(i) + " (id " + std::to_string(this->State.id[i]) +
-                                  ") has a NaN or infinite position or velocity");
-    }
-  }
-}
-
-double SPHSolver::sceneSpeedLimit() const
-{
-  // The scene's own speed scale: free fall over the domain's largest extent, and the fastest
-  // particle at the start.
-  const SPHParameters& p = this->Parameters;
-  double extent = 0.0, g = 0.0, v0 = 0.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    extent = std::max(extent, static_cast<double>(p.domainBounds[2 * a + 1] - p.domainBounds[2 * a]));
-    g += static_cast<double>(p.gravity[a]) * p.gravity[a];
-  }
-  const ParticleState& s = this->State;
-  for (std::size_t i = 0; i < s.size(); ++i)
-  {
-    v0 = std::max(v0, std::sqrt(static_cast<double>(s.vx[i]) * s.vx[i] + static_cast<double>(s.vy[i]) * s.vy[i] +
-                                static_cast<double>(s.vz[i]) * s.vz[i]));
-  }
-  // 1 m/s floor: a weightless scene at rest may still start to move (surface tension).
-  return 10.0 * (std::sqrt(2.0 * std::sqrt(g) * extent) + v0) + 1.0;
-}
-
 SPHSolver::~SPHSolver() = default;
 SPHSolver::SPHSolver(SPHSolver&&) noexcept = default;
 SPHSolver& SPHSolver::operator=(SPHSolver&&) noexcept = default;
 
 std::int64_t SPHSolver::advance(double duration, const std::function<bool(double)>& progress)
 {
-  if (!(duration >= 0.0) || !std::isfinite(duration))
-  {
-    throw std::invalid_argument("SPH: the time to advance must be a non-negative number of seconds");
-  }
-  const double begin = this->Time, end = this->Time + duration;
-  std::int64_t taken = 0;
+  checkAdvanceDuration(duration);
+  const double begin = this->Time;
   ParticleState& s = this->State;
   const auto n = static_cast<std::int64_t>(s.size());
   const int threads = threadCount(this->Parameters);
   this->PressureImpulse.assign(s.size(), 0.0f);
-  // A step this much shorter than the longest allowed one means forces have blown up; stop rather
-  // than crawl forever.
-  const double smallest = 1e-7 * std::min(this->Parameters.maxTimeStep, this->Parameters.timeStep);
-  while (this->Time < end)
-  {
-    const double remaining = end - this->Time;
-    const double dt = this->step(remaining);
-    ++taken;
-    const auto weight = static_cast<float>(dt);
+  const std::int64_t taken = advanceInSteps(
+    this->Parameters, this->Time, duration,
+    [&](double remaining)
+    {
+      const double dt = this->step(remaining);
+      const auto weight = static_cast<float>(dt);
 #pragma omp parallel for schedule(static) num_threads(threads)
-    for (std::int64_t i = 0; i < n; ++i)
-    {
-      this->PressureImpulse[i] += weight * s.pressure[i];
-    }
-    if (dt >= remaining)
-    {
-      this->Time = end; // exactly, whatever the rounding of the sum
-    }
-    if (dt < smallest && dt < remaining)
-    {
-      throw std::runtime_error("SPH became unstable at t = " + std::to_string(this->Time) +
-                               " s: the adaptive time step fell to " + std::to_string(dt) + " s; " +
-                               this->stabilityAdvice());
-    }
-    if (progress && taken % 8 == 0 && !progress(duration > 0.0 ? 1.0 - (end - this->Time) / duration : 1.0))
-    {
-      break;
-    }
-  }
+      for (std::int64_t i = 0; i < n; ++i)
+      {
+        this->PressureImpulse[i] += weight * s.pressure[i];
+      }
+      return dt;
+    },
+    progress, [this] { return this->stabilityAdvice(); });
   const double elapsed = this->Time - begin;
   if (elapsed > 0.0)
   {
@@ -217,47 +137,12 @@ double SPHSolver::step(double maxStep)
 void SPHSolver::addParticles(const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z,
                              const std::vector<float>& vx, const std::vector<float>& vy, const std::vector<float>& vz)
 {
-  const std::size_t added = x.size();
-  if (y.size() != added || z.size() != added || vx.size() != added || vy.size() != added || vz.size() != added)
-  {
-    throw std::invalid_argument("SPH: the added particles' arrays have different lengths");
-  }
-  for (std::size_t i = 0; i < added; ++i)
-  {
-    if (!std::isfinite(x[i] + y[i] + z[i] + vx[i] + vy[i] + vz[i]))
-    {
-      throw std::invalid_argument("SPH: added particle " + std::to_string(i) +
-                                  " has a NaN or infinite position or velocity");
-    }
-  }
+  ParticleState& s = this->State;
+  const std::size_t n = s.size();
+  const std::size_t added = appendParticles(s, x, y, z, vx, vy, vz, this->Parameters.restDensity);
   if (added == 0)
   {
     return;
-  }
-  ParticleState& s = this->State;
-  const std::size_t n = s.size();
-  std::int64_t nextId = 0;
-  std::uint32_t nextIndex = 0;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    nextId = std::max(nextId, s.id[i] + 1);
-    nextIndex = std::max(nextIndex, s.originalIndex[i] + 1);
-  }
-  s.x.insert(s.x.end(), x.begin(), x.end());
-  s.y.insert(s.y.end(), y.begin(), y.end());
-  s.z.insert(s.z.end(), z.begin(), z.end());
-  s.vx.insert(s.vx.end(), vx.begin(), vx.end());
-  s.vy.insert(s.vy.end(), vy.begin(), vy.end());
-  s.vz.insert(s.vz.end(), vz.begin(), vz.end());
-  for (auto* a : { &s.ax, &s.ay, &s.az, &s.pressure })
-  {
-    a->resize(n + added, 0.0f);
-  }
-  s.density.resize(n + added, this->Parameters.restDensity);
-  for (std::size_t i = 0; i < added; ++i)
-  {
-    s.id.push_back(nextId + static_cast<std::int64_t>(i));
-    s.originalIndex.push_back(nextIndex + static_cast<std::uint32_t>(i));
   }
   if (!this->PressureImpulse.empty())
   {
@@ -344,71 +229,19 @@ double SPHSolver::maxAcceleration() const
 
 double SPHSolver::proposedTimeStep() const
 {
-  const SPHParameters& p = this->Parameters;
-  if (!p.adaptiveTimeStep)
+  if (!this->Parameters.adaptiveTimeStep)
   {
-    return p.timeStep;
+    return this->Parameters.timeStep;
   }
   const ParticleState& s = this->State;
-  const double fastest = this->largestLength(s.vx, s.vy, s.vz);
-  const double h = p.smoothingLength;
-  double dt = p.maxTimeStep;
-  // CFL: information (sound for WCSPH, the flow itself for incompressible DFSPH) may cross only a
-  // fraction lambda of the kernel radius per step.
-  const double c = this->Pressure->signalSpeed(p);
-  const double speed = c + fastest;
-  if (speed > 0.0)
-  {
-    dt = std::min(dt, p.cflNumber * h / speed);
-  }
-  const SolverEntry& solver = solverEntry(p.pressureSolver);
-  if (p.viscosity > 0.0f && solver.separateExtraViscosity)
-  {
-    // Explicit diffusion is stable for dt nu S < 1, S the sum of Müller's Laplacian weights over a
-    // neighbourhood: about 15 / h^2, up to twice that beside a wall's mirror images. Kept at 0.75.
-    dt = std::min(dt, h * h * p.restDensity / (40.0 * p.viscosity));
-  }
-  // A solver without a term of its own for Müller's extra viscosity folds it into its laminar term.
-  const double nu = p.kinematicViscosity + (solver.separateExtraViscosity ? 0.0 : p.viscosity / p.restDensity);
-  if (nu > 0.0 && solver.explicitLaminarViscosity)
-  {
-    // The explicit laminar term: nu dt / (h/2)^2 <= 0.125 (Morris et al. 1997), with nu scaled by
-    // the operator's lattice correction and halved again beside no-slip walls, whose images double
-    // the term; an implicit one has no such limit.
-    dt = std::min(dt, 0.015 * h * h / (nu * this->LaplacianCorrection));
-  }
-  const double a = this->maxAcceleration();
-  if (a > 0.0) // a particle may not move more than ~h/16 from its acceleration alone
-  {
-    dt = std::min(dt, 0.25 * std::sqrt(h / a));
-  }
-  if (p.surfaceTension > 0.0f) // capillary waves (Brackbill et al. 1992)
-  {
-    dt = std::min(dt, std::sqrt(p.restDensity * h * h * h / (2.0 * kPiF * p.surfaceTension)));
-  }
-  return dt;
+  return sph::proposedTimeStep(this->Parameters, solverEntry(this->Parameters.pressureSolver),
+                               this->Pressure->signalSpeed(this->Parameters), this->largestLength(s.vx, s.vy, s.vz),
+                               this->maxAcceleration(), this->LaplacianCorrection);
 }
 
 double SPHSolver::chooseTimeStep(double remaining) const
 {
-  const double dt = this->proposedTimeStep();
-  if (!this->Parameters.adaptiveTimeStep)
-  {
-    // Fixed steps: equal steps that fit the remaining time exactly (TimeStep 2e-4 over 4e-3 s is
-    // 20 steps of exactly 2e-4, whatever the float rounding of 2e-4).
-    const double steps = std::max(1.0, std::ceil(remaining / dt - 1e-6));
-    return remaining / steps;
-  }
-  // Land exactly on the end time without a sliver of a last step: split the last two evenly.
-  if (remaining <= dt)
-  {
-    return remaining;
-  }
-  if (remaining < 2.0 * dt)
-  {
-    return 0.5 * remaining;
-  }
-  return dt;
+  return timeStepFor(this->Parameters, this->proposedTimeStep(), remaining);
 }
 
 void SPHSolver::checkFinite() const
@@ -475,34 +308,6 @@ void SPHSolver::checkPhysical() const
                              " m/s this scene allows (ten times free fall across the domain plus the fastest start): "
                              "the run has blown up; " +
                              this->stabilityAdvice());
-  }
-}
-
-void SPHSolver::checkCoincident() const
-{
-  const ParticleState& s = this->State;
-  std::vector<std::uint32_t> order(s.size());
-  std::iota(order.begin(), order.end(), 0u);
-  auto key = [&](std::uint32_t i) { return std::make_tuple(s.x[i], s.y[i], s.z[i]); };
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
-  std::size_t shared = 0;
-  std::uint32_t first = 0, second = 0;
-  for (std::size_t k = 1; k < order.size(); ++k)
-  {
-    if (key(order[k]) == key(order[k - 1]) && shared++ == 0)
-    {
-      first = std::min(order[k], order[k - 1]);
-      second = std::max(order[k], order[k - 1]);
-    }
-  }
-  if (shared > 0)
-  {
-    throw std::invalid_argument(
-      "SPH: " + std::to_string(shared) + " particles share their position with another (first: particles " +
-      std::to_string(first) + " and " + std::to_string(second) + " at (" + std::to_string(s.x[first]) + ", " +
-      std::to_string(s.y[first]) + ", " + std::to_string(s.z[first]) +
-      ")); SPH forces vanish at zero distance, so they would never separate: remove the duplicates upstream (the "
-      "Clean filter) or move them apart");
   }
 }
 
@@ -630,31 +435,9 @@ void SPHSolver::drift(float dt)
     float v[3];
     for (int a = 0; a < 3; ++a)
     {
-      float xa = from[a] + dt * velocity[a][i];
-      float va = velocity[a][i];
-      // Damped reflection: a particle that left the box has its overshoot mirrored back inside and
-      // its normal velocity reversed and scaled, so walls take energy out instead of adding it.
-      // Not clamped onto the wall: a particle on the plane would coincide with its own mirror
-      // image, which then could not push it.
-      if (periodic[a])
-      {
-        // Through the face and back in through the opposite one (fmod keeps a far jump inside too).
-        const float length = b[2 * a + 1] - b[2 * a];
-        xa = b[2 * a] + std::fmod(xa - b[2 * a], length);
-        xa = xa < b[2 * a] ? xa + length : (xa >= b[2 * a + 1] ? xa - length : xa);
-      }
-      else if (xa < b[2 * a])
-      {
-        xa = std::min(b[2 * a] + restitution * (b[2 * a] - xa), b[2 * a + 1]);
-        va = va < 0.0f ? -restitution * va : va;
-      }
-      else if (xa > b[2 * a + 1])
-      {
-        xa = std::max(b[2 * a + 1] - restitution * (xa - b[2 * a + 1]), b[2 * a]);
-        va = va > 0.0f ? -restitution * va : va;
-      }
-      to[a] = xa;
-      v[a] = va;
+      to[a] = from[a];
+      v[a] = velocity[a][i];
+      detail::moveAlongAxis(to[a], v[a], dt, b[2 * a], b[2 * a + 1], periodic[a], restitution);
     }
     // The box is convex and both ends of the move are inside it, so the mesh can only move the end
     // point back towards the start, except by the small offset, which the clamp takes care of.
@@ -686,10 +469,15 @@ void SPHSolver::drift(float dt)
 
 std::vector<std::uint32_t> SPHSolver::neighbourCounts() const
 {
-  const ParticleState& s = this->State;
+  return detail::neighbourCountsOnGrid(this->Grid, this->State, this->Parameters);
+}
+
+std::vector<std::uint32_t> detail::neighbourCountsOnGrid(const NeighbourGrid& grid, const ParticleState& s,
+                                                         const SPHParameters& p)
+{
   std::vector<std::uint32_t> counts(s.size(), 0);
-  const float h2 = this->Parameters.smoothingLength * this->Parameters.smoothingLength;
-  detail::forEachParticleByCell(this->Grid, s, this->Parameters.smoothingLength, threadCount(this->Parameters), {},
+  const float h2 = p.smoothingLength * p.smoothingLength;
+  detail::forEachParticleByCell(grid, s, p.smoothingLength, threadCount(p), {},
                                 [&](detail::CandidateBuffer& candidates, std::uint32_t i)
                                 {
                                   const float q[3] = { s.x[i], s.y[i], s.z[i] };

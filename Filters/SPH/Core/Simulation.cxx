@@ -1,6 +1,7 @@
 #include "parafluid/sph/Simulation.h"
 
 #include "parafluid/common/TriangleBoundary.h"
+#include "parafluid/sph/CudaBackend.h"
 #include "parafluid/sph/SPHSolver.h"
 
 #include <stdexcept>
@@ -50,16 +51,49 @@ ParticleState Simulation::removeParticlesOutside(const std::array<double, 6>& re
 }
 
 std::unique_ptr<Simulation> makeSimulation(const SPHParameters& parameters, ParticleState initial,
-                                           std::shared_ptr<const TriangleBoundary> boundary, Backend backend)
+                                           std::shared_ptr<const TriangleBoundary> boundary, Backend backend,
+                                           std::string* choice)
 {
-  switch (backend)
+  const bool mesh = boundary && boundary->triangleCount() > 0;
+  auto onCpu = [&](const std::string& why)
   {
-    case Backend::Automatic:
-    case Backend::CPU:
-      return std::make_unique<SPHSolver>(parameters, std::move(initial), std::move(boundary));
-    case Backend::CUDA:
-      break;
+    if (choice)
+    {
+      *choice = "CPU" + (why.empty() ? std::string() : ": " + why);
+    }
+    return std::make_unique<SPHSolver>(parameters, std::move(initial), std::move(boundary));
+  };
+  if (backend == Backend::CPU)
+  {
+    return onCpu("");
   }
-  throw std::invalid_argument("SPH: Backend CUDA: this build has no CUDA simulation; choose CPU or Automatic");
+  std::string unusable;
+  const bool usable = cudaBackendUsable(&unusable);
+  const std::string lacking = cudaBackendLacks(parameters, mesh);
+  if (backend == Backend::CUDA)
+  {
+    if (!usable)
+    {
+      throw std::invalid_argument("SPH: Backend CUDA: " + unusable + "; choose Backend CPU or Automatic");
+    }
+    if (!lacking.empty())
+    {
+      throw std::invalid_argument("SPH: Backend CUDA does not run " + lacking +
+                                  " yet; choose Backend CPU or Automatic (which runs such a scene on the CPU)");
+    }
+  }
+  else if (!usable)
+  {
+    return onCpu(unusable);
+  }
+  else if (!lacking.empty())
+  {
+    return onCpu("the CUDA backend does not run " + lacking + " yet");
+  }
+  if (choice)
+  {
+    *choice = "CUDA (" + cudaDeviceName() + ")";
+  }
+  return makeCudaSimulation(parameters, std::move(initial));
 }
 } // namespace parafluid::sph

@@ -10,6 +10,7 @@
 #include "parafluid/sph/SPHSolver.h"
 
 #include "private/NeighbourCandidates.h"
+#include "private/OutputFields.h"
 #include "private/WallImages.h"
 
 #include "parafluid/common/SimdDispatch.h"
@@ -125,8 +126,12 @@ PARAFLUID_SIMD_DISPATCH(fitSums, (const FitInput& in, float* out), (in, out), fi
 
 std::vector<float> SPHSolver::smoothedPressure() const
 {
-  const ParticleState& s = this->State;
-  const SPHParameters& p = this->Parameters;
+  return detail::smoothedPressureOnGrid(this->Grid, this->State, this->Parameters);
+}
+
+std::vector<float> detail::smoothedPressureOnGrid(const NeighbourGrid& grid, const ParticleState& s,
+                                                  const SPHParameters& p)
+{
   std::vector<float> volume(s.size()), smoothed(s.size());
   for (std::size_t i = 0; i < s.size(); ++i)
   {
@@ -136,7 +141,7 @@ std::vector<float> SPHSolver::smoothedPressure() const
   const float inverseH = 1.0f / p.smoothingLength;
   const float* g = p.gravity.data();
   detail::forEachParticleByCell(
-    this->Grid, s, p.smoothingLength, detail::threadCount(p), { volume.data(), s.pressure.data(), s.density.data() },
+    grid, s, p.smoothingLength, detail::threadCount(p), { volume.data(), s.pressure.data(), s.density.data() },
     [&](detail::CandidateBuffer& c, std::uint32_t i)
     {
       const float x[3] = { s.x[i], s.y[i], s.z[i] };

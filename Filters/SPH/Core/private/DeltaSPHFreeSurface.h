@@ -19,7 +19,8 @@ struct SurfaceMeasure
 /// The measure of a particle whose queries' first moments summed to `moment` (xx, xy, xz, yy, yz,
 /// zz) and whose neighbours' smallest fullness was `leastNeighbourFullness`; C is the lattice's
 /// gradient correction.
-inline SurfaceMeasure measureSurface(const float moment[6], float leastNeighbourFullness, float pressureCorrection)
+PARAFLUID_HOST_DEVICE inline SurfaceMeasure measureSurface(const float moment[6], float leastNeighbourFullness,
+                                                           float pressureCorrection)
 {
   SurfaceMeasure m;
   m.fullness = detail::neighbourhoodFullness(moment, pressureCorrection);

@@ -16,7 +16,7 @@ namespace parafluid::sph::delta
 /// stays at its value there (Thomas & Couchman 1992), because a push growing to zero distance
 /// throws back drops that arrive fast. Only for supports over 2.2 spacings
 /// (see ownImageStiffened). Returns (dW/dr) / r.
-inline float ownImageGradient(const Constants& k, float r)
+PARAFLUID_HOST_DEVICE inline float ownImageGradient(const Constants& k, float r)
 {
   if (!(r > 0.0f) || r >= k.w.h)
   {
@@ -30,7 +30,7 @@ inline float ownImageGradient(const Constants& k, float r)
 
 /// How much the pair of particle i (at x) and its own image (at q) changes its gradient, from the
 /// kernel's to ownImageGradient; 0 where it does not. r is |q - x|.
-inline float ownImageChange(const float* q, const float* x, const Constants& k, float& r)
+PARAFLUID_HOST_DEVICE inline float ownImageChange(const float* q, const float* x, const Constants& k, float& r)
 {
   if (!k.ownImageStiffened)
   {
@@ -54,7 +54,8 @@ inline float ownImageChange(const float* q, const float* x, const Constants& k, 
 }
 
 /// The same change of particle i's continuity sum.
-inline float ownImageDensityRate(const float* q, const float* vq, const float* x, const float* v, const Constants& k)
+PARAFLUID_HOST_DEVICE inline float ownImageDensityRate(const float* q, const float* vq, const float* x, const float* v,
+                                                       const Constants& k)
 {
   float r = 0.0f;
   const float change = ownImageChange(q, x, k, r);

@@ -2,6 +2,7 @@
 // δ-SPH's pieces shared by its passes (DeltaSPH*.cxx): the constants of a pass, the Wendland pair,
 // the candidates' arrays as the vectorised pair loops read them, and the fluid's hydrostatic
 // reference.
+#include "parafluid/common/HostDevice.h"
 #include "parafluid/common/Kernels.h"
 #include "parafluid/common/ParticleState.h"
 #include "parafluid/sph/SPHParameters.h"
@@ -35,7 +36,7 @@ enum Channel
 
 struct Constants
 {
-  explicit Constants(float supportRadius)
+  PARAFLUID_HOST_DEVICE explicit Constants(float supportRadius)
     : w(supportRadius)
   {
   }
@@ -101,11 +102,12 @@ inline Constants makeConstants(const SPHParameters& p, double soundSpeed, float 
 }
 
 /// (dW/dr) / r of the Wendland kernel, and the kernel itself, at distance r. (Builtins only: it is
-/// inlined into the pair loops' AVX-512 copies, which inline no ordinary function.)
+/// inlined into the pair loops' AVX-512 copies, which inline no ordinary function; the CUDA
+/// backend's pair loops call it too.)
 struct WendlandPair
 {
   float gradient, value;
-  __attribute__((always_inline)) WendlandPair(const WendlandC2Kernel& w, float r)
+  PARAFLUID_HOST_DEVICE __attribute__((always_inline)) WendlandPair(const WendlandC2Kernel& w, float r)
   {
     const float q = r * w.inverseH;
     const float d = 1.0f - q > 0.0f ? 1.0f - q : 0.0f;
@@ -144,12 +146,26 @@ struct PairInput
   }
 };
 
-/// rho_i - rho^H(x_i), up to a constant: rho^H = rho0 (1 + g . x / c0^2), the linearised hydrostatic
-/// density the diffusion leaves alone (densityRateBody).
+/// rho - rho^H(x), up to a constant: rho^H = rho0 (1 + g . x / c0^2), the linearised hydrostatic
+/// density the diffusion leaves alone (densityRateBody), of density rho at (x, y, z).
+PARAFLUID_HOST_DEVICE inline float departureFromHydrostatic(const Constants& k, float x, float y, float z, float rho)
+{
+  const float height = k.gravity[0] * x + k.gravity[1] * y + k.gravity[2] * z;
+  return rho - k.rho0 - k.rho0 * height * k.inverseC0Squared;
+}
+
+/// The same of particle i.
 inline float departureFromHydrostatic(const Constants& k, const ParticleState& s, std::size_t i)
 {
-  const float height = k.gravity[0] * s.x[i] + k.gravity[1] * s.y[i] + k.gravity[2] * s.z[i];
-  return s.density[i] - k.rho0 - k.rho0 * height * k.inverseC0Squared;
+  return departureFromHydrostatic(k, s.x[i], s.y[i], s.z[i], s.density[i]);
+}
+
+/// Tait's equation of state p = B ((rho / rho0)^7 - 1) [Pa], with B = c0^2 rho0 / 7 and 1 / rho0.
+PARAFLUID_HOST_DEVICE inline float taitPressure(float rho, float bulk, float inverseRho0)
+{
+  const float ratio = rho * inverseRho0;
+  const float r2 = ratio * ratio;
+  return bulk * (r2 * r2 * r2 * ratio - 1.0f);
 }
 
 inline double gravityMagnitude(const SPHParameters& p)

@@ -1,6 +1,8 @@
 #pragma once
 // Internal to the SPH solver: the kernel gradient correction of a particle (Bonet & Lok 1999) from
 // the first moment of its neighbourhood (δ-SPH's; apart from its pair loops, and any solver's to use).
+#include "parafluid/common/HostDevice.h"
+
 #include <algorithm>
 
 namespace parafluid::sph::detail
@@ -13,7 +15,7 @@ constexpr double kFullMoment = 0.97;
 
 /// The first moment M = sum_j V_j (x_j - x_i) (x) grad W_ij (symmetric: xx, xy, xz, yy, yz, zz)
 /// of a query's wall image, mapped back to the particle: R M R with R = diag(scale).
-inline void addImageMoment(const float* moment, const float* scale, float* total)
+PARAFLUID_HOST_DEVICE inline void addImageMoment(const float* moment, const float* scale, float* total)
 {
   total[0] += moment[0];
   total[1] += scale[0] * scale[1] * moment[1];
@@ -26,14 +28,14 @@ inline void addImageMoment(const float* moment, const float* scale, float* total
 /// How full a particle's neighbourhood is, from the determinant of its first moment M (wall images
 /// included) and the rest lattice's scalar correction c: 1 where det(c M) >= kFullMoment, 0 up to
 /// kPartialMoment (the first two layers under a free surface), linear between.
-inline double neighbourhoodFullness(double det, double c)
+PARAFLUID_HOST_DEVICE inline double neighbourhoodFullness(double det, double c)
 {
   const double full = det * c * c * c;
   return std::min(1.0, std::max(0.0, (full - kPartialMoment) / (kFullMoment - kPartialMoment)));
 }
 
 /// The same from M itself (xx, xy, xz, yy, yz, zz).
-inline float neighbourhoodFullness(const float* m, float c)
+PARAFLUID_HOST_DEVICE inline float neighbourhoodFullness(const float* m, float c)
 {
   const double xx = m[0], xy = m[1], xz = m[2], yy = m[3], yz = m[4], zz = m[5];
   const double det = xx * (yy * zz - yz * yz) + xy * (xz * yz - xy * zz) + xz * (xy * yz - xz * yy);
@@ -47,7 +49,7 @@ inline float neighbourhoodFullness(const float* m, float c)
 /// whose p_i + p_j form holds a surface together, is kept; blended in between kPartialMoment and
 /// kFullMoment so that a particle nearing a surface is not kicked. (Correcting the second layer
 /// under a surface too, from 0.7-0.8, set δ-SPH's still water moving at 4e-2 sqrt(gH).)
-inline void gradientCorrection(const float* m, float c, float* out)
+PARAFLUID_HOST_DEVICE inline void gradientCorrection(const float* m, float c, float* out)
 {
   const double xx = m[0], xy = m[1], xz = m[2], yy = m[3], yz = m[4], zz = m[5];
   const double cofXX = yy * zz - yz * yz, cofXY = xz * yz - xy * zz, cofXZ = xy * yz - xz * yy;
@@ -55,7 +57,10 @@ inline void gradientCorrection(const float* m, float c, float* out)
   const double weight = neighbourhoodFullness(det, c);
   if (weight <= 0.0)
   {
-    std::fill(out, out + 6, 0.0f);
+    for (int e = 0; e < 6; ++e)
+    {
+      out[e] = 0.0f;
+    }
     return;
   }
   const double inverse[6] = { cofXX / det,
@@ -72,7 +77,7 @@ inline void gradientCorrection(const float* m, float c, float* out)
 }
 
 /// a -= E d for the symmetric correction E (xx, xy, xz, yy, yz, zz) and a difference sum d.
-inline void applyGradientCorrection(const float* e, const float* d, float* a)
+PARAFLUID_HOST_DEVICE inline void applyGradientCorrection(const float* e, const float* d, float* a)
 {
   a[0] -= e[0] * d[0] + e[1] * d[1] + e[2] * d[2];
   a[1] -= e[1] * d[0] + e[3] * d[1] + e[4] * d[2];

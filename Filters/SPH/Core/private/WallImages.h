@@ -1,5 +1,6 @@
 #pragma once
 // Internal to the SPH solver: a particle and its wall images as queries of a pair sum.
+#include "parafluid/common/HostDevice.h"
 #include "parafluid/sph/SPHParameters.h"
 #include "parafluid/sph/WallMirrors.h"
 
@@ -32,8 +33,8 @@ void forEachWallImage(const float position[3], const float velocity[3], const SP
 /// rest): the image R x_j of particle j carries p_j + rho_j g . (R x_j - x_j). With R x = s x + o
 /// (s the mirror's scale, o = q - s x_i for the query q = R x_i), g . (R x_j - x_j) is linear in
 /// x_j: lift[0..2] . x_j + lift[3].
-inline void hydrostaticImageLift(const float* q, const float* x, const float* scale, const float* gravity,
-                                 float lift[4])
+PARAFLUID_HOST_DEVICE inline void hydrostaticImageLift(const float* q, const float* x, const float* scale,
+                                                       const float* gravity, float lift[4])
 {
   lift[3] = 0.0f;
   for (int a = 0; a < 3; ++a)

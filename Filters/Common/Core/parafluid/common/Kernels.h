@@ -2,6 +2,7 @@
 // Smoothing kernels of Müller, Charypar & Gross, "Particle-Based Fluid Simulation for Interactive
 // Applications" (SCA 2003). All have compact support radius h and integrate to 1 over R^3.
 // Each kernel keeps its normalisation constants so the hot loops only multiply.
+#include "parafluid/common/HostDevice.h"
 #include "parafluid/common/MathConstants.h"
 
 #include <algorithm>
@@ -163,14 +164,14 @@ struct CubicSplineKernel
 /// (δ-SPH, DualSPHysics).
 struct WendlandC2Kernel
 {
-  explicit WendlandC2Kernel(float h)
+  PARAFLUID_HOST_DEVICE explicit WendlandC2Kernel(float h)
     : h(h)
     , h2(h * h)
     , inverseH(1.0f / h)
     , coefficient(21.0f / (2.0f * kPiF * h * h * h))
   {
   }
-  float value(float r) const
+  PARAFLUID_HOST_DEVICE float value(float r) const
   {
     const float q = r * inverseH;
     if (q >= 1.0f)
@@ -181,7 +182,7 @@ struct WendlandC2Kernel
     return coefficient * d * d * d * d * (1.0f + 4.0f * q);
   }
   /// dW/dr = −20 c q (1 − q)³ / h.
-  float radialDerivative(float r) const
+  PARAFLUID_HOST_DEVICE float radialDerivative(float r) const
   {
     const float q = r * inverseH;
     if (q >= 1.0f)
@@ -192,7 +193,7 @@ struct WendlandC2Kernel
     return -20.0f * coefficient * inverseH * q * d * d * d;
   }
   /// (dW/dr) / r = −20 c (1 − q)³ / h²: finite at r = 0, so no division in the pair loops.
-  float gradientFactor(float r) const
+  PARAFLUID_HOST_DEVICE float gradientFactor(float r) const
   {
     const float d = std::max(1.0f - r * inverseH, 0.0f);
     return -20.0f * coefficient * inverseH * inverseH * d * d * d;

@@ -62,9 +62,14 @@ public:
   /// times the fastest initial speed and (with surface tension) the speed of its cohesive pressure.
   static double automaticSoundSpeed(const SPHParameters& p, const ParticleState& s);
 
+  /// Density of hydrostatic equilibrium under gravity along an axis at sound speed c0 [m/s] (rest
+  /// density otherwise), each particle's depth counted in columns one particle spacing [m] wide.
+  static void hydrostaticDensity(const SPHParameters& p, double soundSpeed, float spacing, ParticleState& s);
+  /// [s] the time over which the slow part of the density's departure follows it (SlowDeparture):
+  /// sqrt(H / g) of the fluid's height H; 0 without gravity.
+  static double slowDepartureTime(const SPHParameters& p, const ParticleState& s);
+
 private:
-  /// Density of hydrostatic equilibrium under gravity along an axis (rest density otherwise).
-  void startHydrostatic(SimulationParts& sim);
   /// Pressure from density by the equation of state.
   void updatePressure(SimulationParts& sim);
   /// Accelerations into State.a*: pressure, viscosities, gravity, surface tension.

@@ -99,11 +99,6 @@ public:
   std::string stabilityAdvice() const override;
 
 private:
-  /// Checks the initial arrays' sizes and values and gives particles without velocities, ids or
-  /// original indices zero velocity and their index.
-  void completeInitialState();
-  /// See speedLimit().
-  double sceneSpeedLimit() const;
   void sortByCell();
   /// Each particle's nearest point of the boundary mesh (when the solver adds the mesh's wall to
   /// its sums, SPHParameters::meshWallDensity); after every sort and every move that follows one.
@@ -121,9 +116,6 @@ private:
   /// Throws when the density or a speed is far beyond what the scene allows (a blown-up run
   /// that has not reached NaN yet).
   void checkPhysical() const;
-  /// Throws when two particles share a position: SPH forces vanish at zero distance, so they
-  /// would never separate.
-  void checkCoincident() const;
 
   /// Viscosity, surface tension, gravity and (when withPressure) the equation-of-state pressure
   /// into State.a*; each pass is compiled in only when its coefficient is non-zero (SPHForces.cxx).

@@ -91,9 +91,12 @@ public:
 };
 
 /// The simulation of the initial state (positions, velocities, ids; the rest is computed) with an
-/// optional boundary mesh, on `backend`. Throws std::invalid_argument for bad parameters,
-/// non-finite input, or a backend this build does not have.
+/// optional boundary mesh, on `backend`: Automatic takes the GPU when the CUDA backend is usable
+/// here and runs the scene, else the CPU. `choice`, when given, gets which backend runs and, for
+/// the CPU under Automatic, why not the GPU. Throws std::invalid_argument for bad parameters,
+/// non-finite input, or Backend CUDA where it cannot run (the message says why), and
+/// std::runtime_error when the GPU lacks the memory.
 std::unique_ptr<Simulation> makeSimulation(const SPHParameters& parameters, ParticleState initial,
                                            std::shared_ptr<const TriangleBoundary> boundary = nullptr,
-                                           Backend backend = Backend::Automatic);
+                                           Backend backend = Backend::Automatic, std::string* choice = nullptr);
 } // namespace parafluid::sph

@@ -13,6 +13,7 @@
 //
 // No extra neighbour search is needed: for i and j on the same side of a plane,
 // |x_i − R x_j| >= |x_i − x_j|, so every image within h of i belongs to an ordinary neighbour.
+#include "parafluid/common/HostDevice.h"
 #include "parafluid/sph/SPHParameters.h"
 
 #include <array>
@@ -29,7 +30,7 @@ struct WallMirrors
   float velocityScale[7][3];
 
   /// The position of image k of point p.
-  void image(int k, const float p[3], float out[3]) const
+  PARAFLUID_HOST_DEVICE void image(int k, const float p[3], float out[3]) const
   {
     for (int a = 0; a < 3; ++a)
     {
@@ -47,8 +48,9 @@ struct WallMirrors
   /// The images a particle at `position` needs: one per subset of the walls within h, taking on
   /// each axis only the nearer wall. noSlip flags the walls xmin, xmax, ymin, ymax, zmin, zmax;
   /// a periodic axis has no walls.
-  static WallMirrors around(const float position[3], const std::array<float, 6>& bounds, float h,
-                            const std::array<bool, 6>& noSlip = {}, const std::array<bool, 3>& periodic = {})
+  PARAFLUID_HOST_DEVICE static WallMirrors around(const float position[3], const std::array<float, 6>& bounds, float h,
+                                                  const std::array<bool, 6>& noSlip = {},
+                                                  const std::array<bool, 3>& periodic = {})
   {
     WallMirrors m;
     int axes[3];

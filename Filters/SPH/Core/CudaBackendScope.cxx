@@ -1,0 +1,39 @@
+// What the CUDA backend runs of SPH Step's options (see CudaBackend.h); checked before any GPU call.
+#include "parafluid/sph/CudaBackend.h"
+
+#include <vector>
+
+namespace parafluid::sph
+{
+std::string cudaBackendLacks(const SPHParameters& p, bool hasBoundaryMesh)
+{
+  std::vector<std::string> lacking;
+  if (p.pressureSolver != PressureSolverType::DeltaSPH)
+  {
+    lacking.emplace_back(std::string("PressureSolver ") +
+                         (p.pressureSolver == PressureSolverType::DFSPH ? "DFSPH" : "WCSPH"));
+  }
+  if (hasBoundaryMesh)
+  {
+    lacking.emplace_back("Boundary (a triangle mesh or height image)");
+  }
+  if (p.surfaceTension > 0.0f)
+  {
+    lacking.emplace_back("SurfaceTension");
+  }
+  if (p.particleShifting)
+  {
+    lacking.emplace_back("ParticleShifting");
+  }
+  if (p.wallFriction == WallFriction::LogLaw)
+  {
+    lacking.emplace_back("WallFriction LogLaw");
+  }
+  std::string text;
+  for (const std::string& what : lacking)
+  {
+    text += (text.empty() ? "" : ", ") + what;
+  }
+  return text;
+}
+} // namespace parafluid::sph

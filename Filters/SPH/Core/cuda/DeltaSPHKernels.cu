@@ -1,0 +1,474 @@
+// δ-SPH's passes on the GPU (see DeltaSPHKernels.cuh): the CPU passes' formulas, one thread a particle.
+#include "cuda/CudaCheck.h"
+#include "cuda/DeltaSPHKernels.cuh"
+#include "parafluid/sph/WallMirrors.h"
+#include "private/BoxWalls.h"
+#include "private/DeltaSPHFreeSurface.h"
+#include "private/DeltaSPHMomentum.h"
+#include "private/DeltaSPHOwnImage.h"
+#include "private/GradientCorrection.h"
+#include "private/WallImages.h"
+
+namespace parafluid::sph::cuda
+{
+using namespace delta;
+
+namespace
+{
+constexpr int kThreads = 128;
+
+unsigned int blocksFor(std::uint32_t n)
+{
+  return (n + kThreads - 1) / kThreads;
+}
+
+void checkLaunch(const char* what)
+{
+  check(cudaGetLastError(), what);
+}
+
+/// Runs f(q, vq, scale, t, image) for particle i's queries: the particle itself, then its wall
+/// images (forEachWallImage, no-slip walls included), whose mirrors are made only after the
+/// particle's own sums, so that loop runs without them in registers.
+template<class F>
+__device__ void forEachQuery(const float position[3], const float velocity[3], const DeviceWalls& w, F&& f)
+{
+  const float ones[3] = { 1.0f, 1.0f, 1.0f };
+  f(position, velocity, ones, ones, false);
+  const WallMirrors mirrors = WallMirrors::around(position, w.bounds, w.support, w.noSlip, w.periodic);
+  for (int m = 0; m < mirrors.count; ++m)
+  {
+    float q[3], vq[3], scale[3], t[3];
+    mirrors.image(m, position, q);
+    for (int d = 0; d < 3; ++d)
+    {
+      scale[d] = mirrors.scale[m][d];
+      t[d] = mirrors.scale[m][d] * mirrors.velocityScale[m][d];
+      vq[d] = scale[d] * velocity[d];
+    }
+    f(q, vq, scale, t, true);
+  }
+}
+
+__global__ void kick(DeltaArrays a, float dt)
+{
+  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= a.n)
+  {
+    return;
+  }
+  a.vx[i] += dt * a.ax[i];
+  a.vy[i] += dt * a.ay[i];
+  a.vz[i] += dt * a.az[i];
+}
+
+__global__ void drift(DeltaArrays a, DeviceWalls w, float dt)
+{
+  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= a.n)
+  {
+    return;
+  }
+  float* position[3] = { a.x, a.y, a.z };
+  float* velocity[3] = { a.vx, a.vy, a.vz };
+  for (int d = 0; d < 3; ++d)
+  {
+    float x = position[d][i], v = velocity[d][i];
+    detail::moveAlongAxis(x, v, dt, w.bounds[2 * d], w.bounds[2 * d + 1], w.periodic[d], w.restitution);
+    position[d][i] = x;
+    velocity[d][i] = v;
+  }
+}
+
+__global__ void continuity(DeltaArrays a, DeviceGrid g, DeviceWalls w, Constants k)
+{
+  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= a.n)
+  {
+    return;
+  }
+  const float position[3] = { a.x[i], a.y[i], a.z[i] }, velocity[3] = { a.vx[i], a.vy[i], a.vz[i] };
+  const float rhoI = a.rho[i], fullnessI = a.fullness[i], slowI = a.slow[i];
+  float rate = 0.0f, moment[6] = { 0, 0, 0, 0, 0, 0 }, push[3] = { 0, 0, 0 }, least = 1.0f;
+  forEachQuery(position, velocity, w,
+               [&](const float* q, const float* vq, const float* scale, const float*, bool image)
+               {
+                 // Diffusion between real neighbours only (densityRateBody).
+                 const float diffusion = image ? 0.0f : k.delta * k.hSmooth * k.c0 * 2.0f * k.mass;
+                 float r = 0.0f, s[6] = { 0, 0, 0, 0, 0, 0 }, gx = 0.0f, gy = 0.0f, gz = 0.0f, l = 1.0f;
+                 g.forEachNeighbour(
+                   position,
+                   [&](std::uint32_t j, const float* shift)
+                   {
+                     const float dx = q[0] - (__ldg(a.x + j) + shift[0]), dy = q[1] - (__ldg(a.y + j) + shift[1]),
+                                 dz = q[2] - (__ldg(a.z + j) + shift[2]);
+                     const float rr = dx * dx + dy * dy + dz * dz;
+                     if (!(rr < k.h2))
+                     {
+                       return;
+                     }
+                     const WendlandPair wp(k.w, sqrtf(rr));
+                     const float approach =
+                       (vq[0] - __ldg(a.vx + j)) * dx + (vq[1] - __ldg(a.vy + j)) * dy + (vq[2] - __ldg(a.vz + j)) * dz;
+                     const float hydrostatic =
+                       -k.rho0 * (k.gravity[0] * dx + k.gravity[1] * dy + k.gravity[2] * dz) * k.inverseC0Squared;
+                     const float rhoJ = __ldg(a.rho + j), fullnessJ = __ldg(a.fullness + j);
+                     const float psi =
+                       (rhoJ - rhoI) - hydrostatic - (1.0f - fullnessI * fullnessJ) * (__ldg(a.slow + j) - slowI);
+                     r += wp.gradient * (k.mass * approach - diffusion * psi * (rr / (rhoJ * (rr + k.eta2))));
+                     const float v = -k.mass * wp.gradient / rhoJ;
+                     s[0] += v * dx * dx;
+                     s[1] += v * dx * dy;
+                     s[2] += v * dx * dz;
+                     s[3] += v * dy * dy;
+                     s[4] += v * dy * dz;
+                     s[5] += v * dz * dz;
+                     const float gj = k.mass * wp.gradient;
+                     gx += gj * dx;
+                     gy += gj * dy;
+                     gz += gj * dz;
+                     l = fullnessJ < l ? fullnessJ : l;
+                   });
+                 rate += r;
+                 detail::addImageMoment(s, scale, moment);
+                 push[0] += scale[0] * gx;
+                 push[1] += scale[1] * gy;
+                 push[2] += scale[2] * gz;
+                 least = l < least ? l : least;
+                 if (image)
+                 {
+                   rate += ownImageDensityRate(q, vq, position, velocity, k);
+                 }
+               });
+  a.rate[i] = rate;
+  if (a.correction)
+  {
+    detail::gradientCorrection(moment, k.pressureCorrection, a.correction + 6 * static_cast<std::size_t>(i));
+  }
+  const SurfaceMeasure surface = measureSurface(moment, least, k.pressureCorrection);
+  a.nextFullness[i] = surface.fullness;
+  a.interior[i] = surface.interior;
+  for (int d = 0; d < 3; ++d)
+  {
+    a.push[static_cast<std::size_t>(d) * a.n + i] = surface.interior * push[d];
+  }
+}
+
+__global__ void integrateDensity(DeltaArrays a, Constants k, float dt, float follow, float bulk)
+{
+  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= a.n)
+  {
+    return;
+  }
+  const float rho = a.rho[i] + dt * a.rate[i];
+  a.rho[i] = rho;
+  if (follow > 0.0f)
+  {
+    a.slow[i] += follow * (departureFromHydrostatic(k, a.x[i], a.y[i], a.z[i], rho) - a.slow[i]);
+  }
+  a.p[i] = taitPressure(rho, bulk, 1.0f / k.rho0);
+}
+
+template<bool Laminar>
+__global__ void forces(DeltaArrays a, DeviceGrid g, DeviceWalls w, Constants k)
+{
+  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= a.n)
+  {
+    return;
+  }
+  const float position[3] = { a.x[i], a.y[i], a.z[i] }, velocity[3] = { a.vx[i], a.vy[i], a.vz[i] };
+  const float rhoI = a.rho[i], pI = a.p[i];
+  const float inverseRhoI = 1.0f / rhoI;
+  const float termI = pI * inverseRhoI * inverseRhoI;
+  const float tensileI = pI < 0.0f ? -kTensileCoefficient * termI : 0.0f;
+  const float massOverRhoI = k.mass * inverseRhoI;
+  const float* pushX = a.push;
+  const float* pushY = a.push + a.n;
+  const float* pushZ = a.push + 2 * static_cast<std::size_t>(a.n);
+  float acc[3] = { w.gravity[0], w.gravity[1], w.gravity[2] };
+  float difference[3] = { 0, 0, 0 }, shepard = 0.0f, shepardPush[3] = { 0, 0, 0 };
+  forEachQuery(position, velocity, w,
+               [&](const float* q, const float* vq, const float* scale, const float* t, bool image)
+               {
+                 float lift[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+                 if (image && k.correctGradient)
+                 {
+                   detail::hydrostaticImageLift(q, position, scale, k.gravity, lift);
+                 }
+                 float sa[3] = { 0, 0, 0 }, sd[3] = { 0, 0, 0 }, sw = 0.0f, sp[3] = { 0, 0, 0 };
+                 g.forEachNeighbour(
+                   position,
+                   [&](std::uint32_t j, const float* shift)
+                   {
+                     const float xj = __ldg(a.x + j) + shift[0], yj = __ldg(a.y + j) + shift[1],
+                                 zj = __ldg(a.z + j) + shift[2];
+                     const float dx = q[0] - xj, dy = q[1] - yj, dz = q[2] - zj;
+                     const float rr = dx * dx + dy * dy + dz * dz;
+                     if (!(rr < k.h2))
+                     {
+                       return;
+                     }
+                     const WendlandPair wp(k.w, sqrtf(rr));
+                     const float rhoJ = __ldg(a.rho + j), pj = __ldg(a.p + j);
+                     const float pJ = image ? pj + rhoJ * (lift[0] * xj + lift[1] * yj + lift[2] * zj + lift[3]) : pj;
+                     const float vxj = __ldg(a.vx + j), vyj = __ldg(a.vy + j), vzj = __ldg(a.vz + j);
+                     float laminar = 0.0f, inverseRhoJ;
+                     const float scalar =
+                       momentumFactor<Laminar>(dx, dy, dz, rr, wp.value, vq, vxj, vyj, vzj, rhoI, termI, tensileI, rhoJ,
+                                               pJ, k, &laminar, &inverseRhoJ) *
+                       (k.mass * wp.gradient);
+                     sa[0] += scalar * dx;
+                     sa[1] += scalar * dy;
+                     sa[2] += scalar * dz;
+                     const float diff = (pJ - pI) * (massOverRhoI * inverseRhoJ) * wp.gradient;
+                     sd[0] += diff * dx;
+                     sd[1] += diff * dy;
+                     sd[2] += diff * dz;
+                     const float smoothing = k.mass * inverseRhoJ * wp.value;
+                     sw += smoothing;
+                     sp[0] += smoothing * __ldg(pushX + j);
+                     sp[1] += smoothing * __ldg(pushY + j);
+                     sp[2] += smoothing * __ldg(pushZ + j);
+                     if (Laminar)
+                     {
+                       float wx, wy, wz;
+                       laminarVelocity<true>(vq, vxj, vyj, vzj, t, wx, wy, wz); // t is all ones for the particle itself
+                       const float viscous = laminar * (k.mass * wp.gradient);
+                       sa[0] += viscous * wx;
+                       sa[1] += viscous * wy;
+                       sa[2] += viscous * wz;
+                     }
+                   });
+                 if (image)
+                 {
+                   addOwnImageForce<Laminar>(q, vq, t, position, velocity, rhoI, pI, k, sa);
+                 }
+                 for (int d = 0; d < 3; ++d)
+                 {
+                   acc[d] += scale[d] * sa[d];
+                   difference[d] += scale[d] * sd[d];
+                   shepardPush[d] += scale[d] * sp[d];
+                 }
+                 shepard += sw;
+               });
+  if (k.highPass && shepard > 0.0f)
+  {
+    // The push's high pass (SPHParameters::pushHighPass), as the CPU's force pass applies it.
+    const float factor = 2.0f * k.pressureCorrection * pI / (rhoI * rhoI) * a.interior[i] / shepard;
+    for (int d = 0; d < 3; ++d)
+    {
+      acc[d] += factor * shepardPush[d];
+    }
+  }
+  if (a.correction)
+  {
+    detail::applyGradientCorrection(a.correction + 6 * static_cast<std::size_t>(i), difference, acc);
+  }
+  a.ax[i] = acc[0];
+  a.ay[i] = acc[1];
+  a.az[i] = acc[2];
+}
+
+__device__ void combine(StepMeasures& into, const StepMeasures& m)
+{
+  into.compression += m.compression;
+  into.speedSquaredSum += m.speedSquaredSum;
+  into.fastestSquared = fmaxf(into.fastestSquared, m.fastestSquared);
+  into.largestAccelerationSquared = fmaxf(into.largestAccelerationSquared, m.largestAccelerationSquared);
+  into.densest = fmaxf(into.densest, m.densest);
+  into.nonFinite += m.nonFinite;
+  for (int d = 0; d < 3; ++d)
+  {
+    into.lo[d] = fminf(into.lo[d], m.lo[d]);
+    into.hi[d] = fmaxf(into.hi[d], m.hi[d]);
+  }
+}
+
+__device__ StepMeasures emptyMeasures()
+{
+  StepMeasures m;
+  m.compression = m.speedSquaredSum = 0.0;
+  m.fastestSquared = m.largestAccelerationSquared = m.densest = 0.0f;
+  m.nonFinite = 0;
+  for (int d = 0; d < 3; ++d)
+  {
+    m.lo[d] = 3.0e38f;
+    m.hi[d] = -3.0e38f;
+  }
+  return m;
+}
+
+constexpr int kMeasureThreads = 256;
+
+/// The block's measures combined in a fixed tree (so the sums' order never changes) into out.
+__device__ void reduceBlock(StepMeasures mine, StepMeasures* out)
+{
+  __shared__ StepMeasures shared[kMeasureThreads];
+  shared[threadIdx.x] = mine;
+  __syncthreads();
+  for (int half = kMeasureThreads / 2; half > 0; half /= 2)
+  {
+    if (static_cast<int>(threadIdx.x) < half)
+    {
+      combine(shared[threadIdx.x], shared[threadIdx.x + half]);
+    }
+    __syncthreads();
+  }
+  if (threadIdx.x == 0)
+  {
+    *out = shared[0];
+  }
+}
+
+__global__ void measure(DeltaArrays a, float rho0, float weight, StepMeasures* partials)
+{
+  StepMeasures m = emptyMeasures();
+  for (std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x; i < a.n; i += gridDim.x * blockDim.x)
+  {
+    const float v2 = a.vx[i] * a.vx[i] + a.vy[i] * a.vy[i] + a.vz[i] * a.vz[i];
+    const float a2 = a.ax[i] * a.ax[i] + a.ay[i] * a.ay[i] + a.az[i] * a.az[i];
+    const float position[3] = { a.x[i], a.y[i], a.z[i] };
+    const bool finite = isfinite(v2) && isfinite(position[0] + position[1] + position[2]);
+    m.nonFinite += finite ? 0u : 1u;
+    m.speedSquaredSum += static_cast<double>(a.vx[i]) * a.vx[i] + static_cast<double>(a.vy[i]) * a.vy[i] +
+                         static_cast<double>(a.vz[i]) * a.vz[i];
+    m.fastestSquared = fmaxf(m.fastestSquared, v2);
+    m.largestAccelerationSquared = fmaxf(m.largestAccelerationSquared, a2);
+    const float rho = a.rho[i];
+    m.compression += rho > rho0 ? rho - rho0 : 0.0f;
+    m.densest = fmaxf(m.densest, rho);
+    for (int d = 0; d < 3; ++d)
+    {
+      m.lo[d] = fminf(m.lo[d], position[d]);
+      m.hi[d] = fmaxf(m.hi[d], position[d]);
+    }
+    if (weight > 0.0f)
+    {
+      a.impulse[i] += weight * a.p[i];
+    }
+  }
+  reduceBlock(m, partials + blockIdx.x);
+}
+
+__global__ void measureTotal(const StepMeasures* partials, int count, StepMeasures* result)
+{
+  StepMeasures m = emptyMeasures();
+  for (int b = threadIdx.x; b < count; b += blockDim.x)
+  {
+    combine(m, partials[b]);
+  }
+  reduceBlock(m, result);
+}
+
+__global__ void meanPressure(DeltaArrays a, float scale)
+{
+  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i < a.n)
+  {
+    a.p[i] = scale * a.impulse[i];
+  }
+}
+
+template<class T>
+__global__ void gather(const T* src, T* dst, const std::uint32_t* order, std::uint32_t n)
+{
+  const std::uint32_t k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k < n)
+  {
+    dst[k] = src[order[k]];
+  }
+}
+} // namespace
+
+void launchKick(const DeltaArrays& a, float dt, cudaStream_t stream)
+{
+  if (a.n == 0)
+    return;
+  kick<<<blocksFor(a.n), kThreads, 0, stream>>>(a, dt);
+  checkLaunch("the kick kernel");
+}
+
+void launchDrift(const DeltaArrays& a, const DeviceWalls& walls, float dt, cudaStream_t stream)
+{
+  if (a.n == 0)
+    return;
+  drift<<<blocksFor(a.n), kThreads, 0, stream>>>(a, walls, dt);
+  checkLaunch("the drift kernel");
+}
+
+void launchContinuity(const DeltaArrays& a, const DeviceGrid& grid, const DeviceWalls& walls, const Constants& k,
+                      cudaStream_t stream)
+{
+  if (a.n == 0)
+    return;
+  continuity<<<blocksFor(a.n), kThreads, 0, stream>>>(a, grid, walls, k);
+  checkLaunch("the continuity kernel");
+}
+
+void launchIntegrateDensity(const DeltaArrays& a, const Constants& k, float dt, float follow, float bulk,
+                            cudaStream_t stream)
+{
+  if (a.n == 0)
+    return;
+  integrateDensity<<<blocksFor(a.n), kThreads, 0, stream>>>(a, k, dt, follow, bulk);
+  checkLaunch("the density kernel");
+}
+
+void launchForces(const DeltaArrays& a, const DeviceGrid& grid, const DeviceWalls& walls, const Constants& k,
+                  bool laminar, cudaStream_t stream)
+{
+  if (a.n == 0)
+    return;
+  if (laminar)
+    forces<true><<<blocksFor(a.n), kThreads, 0, stream>>>(a, grid, walls, k);
+  else
+    forces<false><<<blocksFor(a.n), kThreads, 0, stream>>>(a, grid, walls, k);
+  checkLaunch("the force kernel");
+}
+
+void launchMeasure(const DeltaArrays& a, float rho0, float weight, StepMeasures* partials, StepMeasures* result,
+                   cudaStream_t stream)
+{
+  const unsigned int blocks =
+    std::max(1u, std::min<unsigned int>(kMeasureBlocks, (a.n + kMeasureThreads - 1) / kMeasureThreads));
+  measure<<<blocks, kMeasureThreads, 0, stream>>>(a, rho0, weight, partials);
+  measureTotal<<<1, kMeasureThreads, 0, stream>>>(partials, static_cast<int>(blocks), result);
+  checkLaunch("the measure kernels");
+}
+
+void launchMeanPressure(const DeltaArrays& a, float scale, cudaStream_t stream)
+{
+  if (a.n == 0)
+    return;
+  meanPressure<<<blocksFor(a.n), kThreads, 0, stream>>>(a, scale);
+  checkLaunch("the mean-pressure kernel");
+}
+
+void launchGather(const float* src, float* dst, const std::uint32_t* order, std::uint32_t n, cudaStream_t stream)
+{
+  if (n == 0)
+    return;
+  gather<<<blocksFor(n), kThreads, 0, stream>>>(src, dst, order, n);
+  checkLaunch("the gather kernel");
+}
+
+void launchGather(const std::int64_t* src, std::int64_t* dst, const std::uint32_t* order, std::uint32_t n,
+                  cudaStream_t stream)
+{
+  if (n == 0)
+    return;
+  gather<<<blocksFor(n), kThreads, 0, stream>>>(src, dst, order, n);
+  checkLaunch("the gather kernel");
+}
+
+void launchGather(const std::uint32_t* src, std::uint32_t* dst, const std::uint32_t* order, std::uint32_t n,
+                  cudaStream_t stream)
+{
+  if (n == 0)
+    return;
+  gather<<<blocksFor(n), kThreads, 0, stream>>>(src, dst, order, n);
+  checkLaunch("the gather kernel");
+}
+} // namespace parafluid::sph::cuda

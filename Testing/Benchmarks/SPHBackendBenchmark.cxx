@@ -1,0 +1,98 @@
+// Steps per second and particle-steps per second of SPH Step's backends (CPU, CUDA) against the
+// particle count, on a dam break in a tank (SPHERIC Test 2's tank and column, Kleefsman et al.
+// 2005, without its obstacle, which needs a boundary mesh the CUDA backend does not run yet).
+// Usage: ParaFluidSPHBackendBenchmark [spacing [m] ...] (default 0.03 0.015 0.008 0.006); each
+// backend runs `steps` adaptive steps after a warm-up of 5; CPU rows stop above 2 M particles.
+#include "parafluid/common/ParticleLattice.h"
+#include "parafluid/sph/CudaBackend.h"
+#include "parafluid/sph/SPHParameters.h"
+#include "parafluid/sph/Simulation.h"
+#include "parafluid/sph/SolverRegistry.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <thread>
+#include <vector>
+
+using namespace parafluid;
+using namespace parafluid::sph;
+
+namespace
+{
+struct Row
+{
+  std::size_t particles;
+  double stepsPerSecond, bytesPerParticle, simulatedSecondsPerHour;
+};
+
+Row run(double spacing, Backend backend, int steps)
+{
+  SPHParameters p;
+  p.pressureSolver = PressureSolverType::DeltaSPH;
+  p.smoothingLength = defaultSmoothingLength(solverEntry(p.pressureSolver), spacing, 0.0);
+  p.particleMass = latticeParticleMass(spacing, p.smoothingLength, p.restDensity, p.densityKernel());
+  p.domainBounds = { 0, 3.22f, 0, 1.0f, 0, 1.0f };
+  auto lattice = fillBoxWithLattice({ 3.22 - 1.228, 3.22, 0, 1.0, 0, 0.55 }, spacing);
+  auto sim = makeSimulation(p, ParticleState::atRest(std::move(lattice.x), std::move(lattice.y), std::move(lattice.z)),
+                            nullptr, backend);
+  const double dt = sim->proposedTimeStep();
+  for (int k = 0; k < 5; ++k)
+  {
+    sim->advance(dt);
+  }
+  const double simulatedBefore = sim->time();
+  const std::int64_t before = sim->stepCount();
+  const auto start = std::chrono::steady_clock::now();
+  while (sim->stepCount() - before < steps)
+  {
+    sim->advance(sim->proposedTimeStep());
+  }
+  sim->hostState(); // the GPU's work is done once its state is on the host
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double taken = static_cast<double>(sim->stepCount() - before);
+  return { sim->particleCount(), taken / seconds, sim->bytesPerParticle(),
+           (sim->time() - simulatedBefore) / seconds * 3600.0 };
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::vector<double> spacings;
+  for (int a = 1; a < argc; ++a)
+  {
+    spacings.push_back(std::atof(argv[a]));
+  }
+  if (spacings.empty())
+  {
+    spacings = { 0.03, 0.015, 0.008, 0.006 };
+  }
+  std::string why;
+  const bool gpu = cudaBackendUsable(&why);
+  std::printf("# CPU threads: %u; GPU: %s\n", std::thread::hardware_concurrency(),
+              gpu ? cudaDeviceName().c_str() : ("none (" + why + ")").c_str());
+  std::printf("backend,spacing_m,particles,steps_per_s,particle_steps_per_s,bytes_per_particle,simulated_s_per_hour\n");
+  for (double spacing : spacings)
+  {
+    for (Backend backend : { Backend::CPU, Backend::CUDA })
+    {
+      if (backend == Backend::CUDA && !gpu)
+      {
+        continue;
+      }
+      const bool large = 1.228 * 0.55 / (spacing * spacing * spacing) > 2.0e6;
+      if (backend == Backend::CPU && large)
+      {
+        continue;
+      }
+      const int steps = backend == Backend::CUDA ? 200 : (spacing < 0.01 ? 5 : 20);
+      const Row r = run(spacing, backend, steps);
+      std::printf("%s,%g,%zu,%.1f,%.4g,%.1f,%.1f\n", backend == Backend::CUDA ? "CUDA" : "CPU", spacing, r.particles,
+                  r.stepsPerSecond, r.stepsPerSecond * static_cast<double>(r.particles), r.bytesPerParticle,
+                  r.simulatedSecondsPerHour);
+      std::fflush(stdout);
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,339 @@
+// The CUDA backend through the Simulation interface SPH Step uses: the choice of backend and its
+// errors everywhere; on a machine with a GPU, the GPU's δ-SPH against the CPU's on the same scenes
+// (skipped, with the reason, where no GPU is usable).
+#include "parafluid/sph/CudaBackend.h"
+#include "parafluid/common/ParticleLattice.h"
+#include "parafluid/sph/SPHParameters.h"
+#include "parafluid/sph/Simulation.h"
+#include "parafluid/sph/SolverRegistry.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+namespace
+{
+using namespace parafluid;
+using namespace parafluid::sph;
+
+constexpr double kSpacing = 0.01; // [m]
+
+/// Water in a 2.5 x 0.25 x 0.3 m tank, δ-SPH, at kSpacing.
+SPHParameters tank()
+{
+  SPHParameters p;
+  p.pressureSolver = PressureSolverType::DeltaSPH;
+  p.smoothingLength = defaultSmoothingLength(solverEntry(p.pressureSolver), kSpacing, 0.0);
+  p.particleMass = latticeParticleMass(kSpacing, p.smoothingLength, p.restDensity, p.densityKernel());
+  p.domainBounds = { 0, 2.5f, 0, 0.25f, 0, 0.3f };
+  return p;
+}
+
+/// A dam break: a column 0.2 m long, 0.25 m wide and 0.2 m high against the tank's x = 0 wall
+/// (10 000 particles at 0.01 m).
+ParticleState column(double length = 0.2, double width = 0.25, double height = 0.2)
+{
+  auto lattice = fillBoxWithLattice({ 0, length, 0, width, 0, height }, kSpacing);
+  return ParticleState::atRest(std::move(lattice.x), std::move(lattice.y), std::move(lattice.z));
+}
+
+bool gpuHere(std::string& why)
+{
+  return cudaBackendUsable(&why);
+}
+
+#define PARAFLUID_NEEDS_GPU()                                                                                          \
+  do                                                                                                                   \
+  {                                                                                                                    \
+    std::string why;                                                                                                   \
+    if (!gpuHere(why))                                                                                                 \
+    {                                                                                                                  \
+      GTEST_SKIP() << "no GPU for the CUDA backend: " << why;                                                          \
+    }                                                                                                                  \
+  } while (0)
+
+/// The largest distance between the two states' particles of the same original index [m].
+double largestDisplacement(const ParticleState& a, const ParticleState& b)
+{
+  EXPECT_EQ(a.size(), b.size());
+  std::vector<std::size_t> slotOfB(b.size());
+  for (std::size_t k = 0; k < b.size(); ++k)
+  {
+    slotOfB[b.originalIndex[k]] = k;
+  }
+  double largest = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+  {
+    const std::size_t k = slotOfB[a.originalIndex[i]];
+    const double d = std::hypot(a.x[i] - b.x[k], a.y[i] - b.y[k], a.z[i] - b.z[k]);
+    largest = std::max(largest, d);
+  }
+  return largest;
+}
+
+double front(const ParticleState& s)
+{
+  return *std::max_element(s.x.begin(), s.x.end());
+}
+
+double meanDensityError(const ParticleState& s, double rho0)
+{
+  double sum = 0.0;
+  for (float rho : s.density)
+  {
+    sum += std::fabs(rho - rho0) / rho0;
+  }
+  return sum / static_cast<double>(s.size());
+}
+
+TEST(CudaBackend, NamesWhatItDoesNotRunYet)
+{
+  SPHParameters p = tank();
+  EXPECT_EQ(cudaBackendLacks(p, false), "");
+  EXPECT_NE(cudaBackendLacks(p, true).find("Boundary"), std::string::npos);
+  p.pressureSolver = PressureSolverType::DFSPH;
+  EXPECT_NE(cudaBackendLacks(p, false).find("PressureSolver DFSPH"), std::string::npos);
+  p = tank();
+  p.surfaceTension = 0.07f;
+  p.particleShifting = true;
+  p.wallFriction = WallFriction::LogLaw;
+  const std::string lacking = cudaBackendLacks(p, false);
+  for (const char* what : { "SurfaceTension", "ParticleShifting", "WallFriction LogLaw" })
+  {
+    EXPECT_NE(lacking.find(what), std::string::npos) << lacking;
+  }
+}
+
+TEST(CudaBackend, AutomaticSaysWhichBackendRanAndWhy)
+{
+  std::string choice;
+  const auto sim = makeSimulation(tank(), column(), nullptr, Backend::Automatic, &choice);
+  std::string why;
+  if (cudaBackendUsable(&why))
+  {
+    EXPECT_STREQ(sim->backendName(), "CUDA");
+    EXPECT_EQ(choice.rfind("CUDA (", 0), 0u) << choice;
+  }
+  else
+  {
+    EXPECT_STREQ(sim->backendName(), "CPU");
+    EXPECT_EQ(choice, "CPU: " + why);
+  }
+  // A scene the GPU does not run yet goes to the CPU under Automatic, saying what it lacks.
+  SPHParameters dfsph = tank();
+  dfsph.pressureSolver = PressureSolverType::DFSPH;
+  dfsph.smoothingLength = defaultSmoothingLength(solverEntry(dfsph.pressureSolver), kSpacing, 0.0);
+  dfsph.particleMass = latticeParticleMass(kSpacing, dfsph.smoothingLength, dfsph.restDensity, dfsph.densityKernel());
+  const auto cpu = makeSimulation(dfsph, column(), nullptr, Backend::Automatic, &choice);
+  EXPECT_STREQ(cpu->backendName(), "CPU");
+  EXPECT_EQ(choice.rfind("CPU: ", 0), 0u) << choice;
+}
+
+TEST(CudaBackend, BackendCudaWhereItCannotRunIsAnErrorThatSaysWhy)
+{
+  std::string why;
+  SPHParameters p = tank();
+  if (cudaBackendUsable(&why))
+  {
+    p.particleShifting = true; // runs on the GPU machine only as a scene the backend lacks
+  }
+  try
+  {
+    makeSimulation(p, column(), nullptr, Backend::CUDA);
+    FAIL() << "a CUDA simulation was made";
+  }
+  catch (const std::invalid_argument& error)
+  {
+    const std::string text = error.what();
+    EXPECT_NE(text.find("Backend CUDA"), std::string::npos) << text;
+    EXPECT_NE(text.find("Backend CPU"), std::string::npos) << text;
+  }
+}
+
+TEST(CudaBackend, MatchesTheCpuAfterTenFixedSteps)
+{
+  PARAFLUID_NEEDS_GPU();
+  for (bool viscous : { false, true })
+  {
+    SPHParameters p = tank();
+    p.adaptiveTimeStep = false;
+    p.timeStep = 2e-4f;
+    if (viscous)
+    {
+      p.kinematicViscosity = 1e-3f;
+      p.wallFriction = WallFriction::NoSlip;
+    }
+    else
+    {
+      p.kinematicViscosity = 0.0f;
+    }
+    const auto cpu = makeSimulation(p, column(), nullptr, Backend::CPU);
+    const auto gpu = makeSimulation(p, column(), nullptr, Backend::CUDA);
+    ASSERT_STREQ(gpu->backendName(), "CUDA");
+    EXPECT_EQ(cpu->advance(10 * 2e-4), 10);
+    EXPECT_EQ(gpu->advance(10 * 2e-4), 10);
+    EXPECT_LE(largestDisplacement(cpu->hostState(), gpu->hostState()), 1e-5) << "viscous " << viscous;
+    EXPECT_NEAR(gpu->kineticEnergy(), cpu->kineticEnergy(), 1e-3 * cpu->kineticEnergy());
+  }
+}
+
+TEST(CudaBackend, MatchesTheCpuAfterHalfASecondOfDamBreak)
+{
+  PARAFLUID_NEEDS_GPU();
+  const SPHParameters p = tank();
+  const auto cpu = makeSimulation(p, column(), nullptr, Backend::CPU);
+  const auto gpu = makeSimulation(p, column(), nullptr, Backend::CUDA);
+  cpu->advance(0.5);
+  gpu->advance(0.5);
+  const ParticleState &c = cpu->hostState(), &g = gpu->hostState();
+  ASSERT_EQ(c.size(), g.size());
+  EXPECT_NEAR(front(g), front(c), 0.01 * front(c));
+  const double cpuError = meanDensityError(c, p.restDensity), gpuError = meanDensityError(g, p.restDensity);
+  EXPECT_NEAR(gpuError, cpuError, 0.01 * cpuError + 1e-6);
+  EXPECT_NEAR(gpu->kineticEnergy(), cpu->kineticEnergy(), 0.01 * cpu->kineticEnergy());
+  std::cout << "front " << front(c) << " / " << front(g) << " m, density error " << cpuError << " / " << gpuError
+            << ", kinetic energy " << cpu->kineticEnergy() << " / " << gpu->kineticEnergy() << " J (CPU / GPU)\n";
+}
+
+TEST(CudaBackend, RerunsAreBitIdentical)
+{
+  PARAFLUID_NEEDS_GPU();
+  const SPHParameters p = tank();
+  const auto first = makeSimulation(p, column(), nullptr, Backend::CUDA);
+  const auto second = makeSimulation(p, column(), nullptr, Backend::CUDA);
+  first->advance(0.1);
+  second->advance(0.1);
+  const ParticleState &a = first->hostState(), &b = second->hostState();
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(first->stepCount(), second->stepCount());
+  for (auto member : { &ParticleState::x, &ParticleState::y, &ParticleState::z, &ParticleState::vx,
+                       &ParticleState::density, &ParticleState::pressure })
+  {
+    EXPECT_EQ(std::memcmp((a.*member).data(), (b.*member).data(), a.size() * sizeof(float)), 0);
+  }
+  EXPECT_EQ(a.id, b.id);
+}
+
+TEST(CudaBackend, StillWaterRestsAsOnTheCpu)
+{
+  PARAFLUID_NEEDS_GPU();
+  SPHParameters p = tank();
+  p.domainBounds = { 0, 0.1f, 0, 0.1f, 0, 0.3f };
+  const double height = 0.2;
+  const auto cpu = makeSimulation(p, column(0.1, 0.1, height), nullptr, Backend::CPU);
+  const auto gpu = makeSimulation(p, column(0.1, 0.1, height), nullptr, Backend::CUDA);
+  cpu->advance(1.0);
+  gpu->advance(1.0);
+  auto fastest = [](const ParticleState& s)
+  {
+    double v = 0.0;
+    for (std::size_t i = 0; i < s.size(); ++i)
+    {
+      v = std::max(v, static_cast<double>(std::hypot(s.vx[i], s.vy[i], s.vz[i])));
+    }
+    return v;
+  };
+  const double scale = std::sqrt(9.81 * height);
+  const double cpuFastest = fastest(cpu->hostState()) / scale, gpuFastest = fastest(gpu->hostState()) / scale;
+  EXPECT_LE(gpuFastest, 1.5 * cpuFastest + 1e-3) << "CPU " << cpuFastest << " sqrt(gH)";
+  // The bottom layer's smoothed pressure against rho g H.
+  const std::vector<float> pressure = gpu->smoothedPressure();
+  const ParticleState& s = gpu->hostState();
+  double sum = 0.0;
+  int count = 0;
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    if (s.z[i] < kSpacing)
+    {
+      sum += pressure[i] / (p.restDensity * 9.81 * (height - s.z[i]));
+      ++count;
+    }
+  }
+  ASSERT_GT(count, 0);
+  EXPECT_NEAR(sum / count, 1.0, 0.02);
+}
+
+TEST(CudaBackend, PeriodicAxisMatchesTheCpu)
+{
+  PARAFLUID_NEEDS_GPU();
+  SPHParameters p = tank();
+  p.periodic = { true, false, false };
+  p.domainBounds = { 0, 0.2f, 0, 0.1f, 0, 0.3f };
+  p.adaptiveTimeStep = false;
+  p.timeStep = 2e-4f;
+  ParticleState s = column(0.2, 0.1, 0.1);
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    s.vx[i] = 0.5f; // a uniform current through the periodic faces
+  }
+  const auto cpu = makeSimulation(p, s, nullptr, Backend::CPU);
+  const auto gpu = makeSimulation(p, s, nullptr, Backend::CUDA);
+  cpu->advance(20 * 2e-4);
+  gpu->advance(20 * 2e-4);
+  EXPECT_LE(largestDisplacement(cpu->hostState(), gpu->hostState()), 1e-5);
+}
+
+TEST(CudaBackend, AddsAndRemovesParticlesAsTheCpuDoes)
+{
+  PARAFLUID_NEEDS_GPU();
+  SPHParameters p = tank();
+  p.adaptiveTimeStep = false;
+  p.timeStep = 2e-4f;
+  const auto cpu = makeSimulation(p, column(), nullptr, Backend::CPU);
+  const auto gpu = makeSimulation(p, column(), nullptr, Backend::CUDA);
+  std::vector<float> x, y, z, vx, vy, vz;
+  for (int k = 0; k < 50; ++k)
+  {
+    x.push_back(0.4f + 0.01f * (k % 10));
+    y.push_back(0.125f);
+    z.push_back(0.25f + 0.01f * (k / 10));
+    vx.push_back(0.0f);
+    vy.push_back(0.0f);
+    vz.push_back(-1.0f);
+  }
+  for (Simulation* sim : { cpu.get(), gpu.get() })
+  {
+    sim->advance(5 * 2e-4);
+    sim->addParticles(x, y, z, vx, vy, vz);
+    sim->advance(5 * 2e-4);
+    // Take out every particle above 0.15 m.
+    const ParticleState& s = sim->hostState();
+    std::vector<std::uint8_t> remove(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i)
+    {
+      remove[i] = s.z[i] > 0.15f;
+    }
+    EXPECT_GT(sim->removeParticles(remove), 50u);
+    sim->advance(5 * 2e-4);
+  }
+  EXPECT_EQ(cpu->particleCount(), gpu->particleCount());
+  EXPECT_LE(largestDisplacement(cpu->hostState(), gpu->hostState()), 1e-5);
+}
+
+TEST(CudaBackend, TwoThousandStepsWithoutNaNOrLostParticles)
+{
+  PARAFLUID_NEEDS_GPU();
+  const SPHParameters p = tank();
+  const ParticleState start = column();
+  const auto gpu = makeSimulation(p, start, nullptr, Backend::CUDA);
+  while (gpu->stepCount() < 2000)
+  {
+    gpu->advance(0.05);
+  }
+  const ParticleState& s = gpu->hostState();
+  ASSERT_EQ(s.size(), start.size());
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    ASSERT_TRUE(std::isfinite(s.x[i] + s.y[i] + s.z[i] + s.vx[i] + s.vy[i] + s.vz[i] + s.density[i]));
+    ASSERT_GE(s.x[i], p.domainBounds[0]);
+    ASSERT_LE(s.x[i], p.domainBounds[1]);
+    ASSERT_GE(s.z[i], p.domainBounds[4]);
+  }
+  std::vector<std::int64_t> ids = s.id;
+  std::sort(ids.begin(), ids.end());
+  EXPECT_EQ(std::adjacent_find(ids.begin(), ids.end()), ids.end());
+}
+} // namespace
