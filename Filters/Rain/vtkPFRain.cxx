@@ -105,6 +105,15 @@ void vtkPFRain::SetPressureSolver(int solver)
   this->Set(this->Water.sph.pressureSolver, entry->type);
 }
 
+void vtkPFRain::SetBackend(int backend)
+{
+  if (parafluid::vtk::isChoice(this, "Backend", backend, { "Automatic", "CPU", "CUDA" },
+                               static_cast<int>(this->Water.backend)))
+  {
+    this->Set(this->Water.backend, static_cast<parafluid::sph::Backend>(backend));
+  }
+}
+
 void vtkPFRain::SetWallFriction(int friction)
 {
   if (parafluid::vtk::isChoice(this, "WallFriction", friction,

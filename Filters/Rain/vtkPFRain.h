@@ -65,6 +65,8 @@ public:
   void SetMaxParticles(int value) { this->Set(this->MaxParticlesValue, value); }
   /// SPH Step's solver settings (parafluid/sph/SPHParameters.h).
   void SetPressureSolver(int solver);
+  /// Where the runoff's SPH runs, as SPH Step's Backend: 0 Automatic, 1 CPU, 2 CUDA.
+  void SetBackend(int backend);
   void SetKinematicViscosity(double value) { this->Set(this->Water.sph.kinematicViscosity, static_cast<float>(value)); }
   void SetSurfaceTension(double value) { this->Set(this->Water.sph.surfaceTension, static_cast<float>(value)); }
   void SetCFLNumber(double value) { this->Set(this->Water.sph.cflNumber, static_cast<float>(value)); }

@@ -55,4 +55,20 @@ pftest.check(any("Backend" in e for e in refused.errors), "Backend 7 was not ref
 printed = str(cpu.GetClientSideObject())
 pftest.check("Backend: 1 (used: CPU)" in printed, "Backend 7 replaced Backend CPU: %s" %
              [line for line in printed.splitlines() if "Backend" in line])
+# The Rain filter's runoff has the same choice; its terrain is a boundary surface, which the GPU does
+# not run yet, so CUDA is refused by name everywhere and Automatic runs on the CPU.
+terrain = ProceduralTerrain(Resolution=[9, 9], Extent=[2, 2], HeightScale=0.2)
+rain_settings = dict(Terrain=terrain, Cells=[4, 4], PrecipitationHeight=1.0, RainfallRate=5000, ParticleSpacing=0.1,
+                     OutputInterval=0.5, NumberOfOutputs=2)
+rain_cuda = Rain(Backend="CUDA", **rain_settings)
+rain_messages = pftest.Messages(rain_cuda.GetClientSideObject())
+pftest.fetch(rain_cuda, 1.0)
+text = "\n".join(rain_messages.errors)
+pftest.check("Backend CUDA" in text, "Rain with Backend CUDA must be refused by name: %r" % text)
+rain_cpu = Rain(Backend="CPU", **rain_settings)
+cpu_messages = pftest.Messages(rain_cpu.GetClientSideObject())
+pftest.fetch(rain_cpu, 1.0)
+rain_cpu.UpdatePropertyInformation()
+pftest.check(not cpu_messages.errors, "Rain with Backend CPU: %r" % cpu_messages.errors)
+pftest.check(rain_cpu.GetPropertyValue("WaterVolume") > 0, "Rain with Backend CPU made no water")
 print("ok")
