@@ -370,8 +370,7 @@ void Runoff::addToWater(NewParticles& born)
     ParticleState state;
     state.x = std::move(n.x), state.y = std::move(n.y), state.z = std::move(n.z);
     state.vx = std::move(n.vx), state.vy = std::move(n.vy), state.vz = std::move(n.vz);
-    this->Water =
-      sph::makeSimulation(this->Resolved, std::move(state), this->Boundary, this->Parameters.backend);
+    this->Water = sph::makeSimulation(this->Resolved, std::move(state), this->Boundary, this->Parameters.backend);
     this->WaterTime = this->Time;
   }
   else
