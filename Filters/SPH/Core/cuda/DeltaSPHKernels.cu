@@ -16,6 +16,10 @@ using namespace delta;
 namespace
 {
 constexpr int kThreads = 128;
+// The pair loops are held to 64 registers (8 blocks of 128 threads an SM): the occupancy that hides
+// their loads' latency outweighs the few spilled values (30 % faster a step on the H200 than at the
+// 105-111 registers the compiler picks alone).
+constexpr int kPairBlocksPerSM = 8;
 
 unsigned int blocksFor(std::uint32_t n)
 {
@@ -80,7 +84,8 @@ __global__ void drift(DeltaArrays a, DeviceWalls w, float dt)
   }
 }
 
-__global__ void continuity(DeltaArrays a, DeviceGrid g, DeviceWalls w, Constants k)
+__global__ void __launch_bounds__(kThreads, kPairBlocksPerSM)
+  continuity(DeltaArrays a, DeviceGrid g, DeviceWalls w, Constants k)
 {
   const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= a.n)
@@ -171,7 +176,8 @@ __global__ void integrateDensity(DeltaArrays a, Constants k, float dt, float fol
 }
 
 template<bool Laminar>
-__global__ void forces(DeltaArrays a, DeviceGrid g, DeviceWalls w, Constants k)
+__global__ void __launch_bounds__(kThreads, kPairBlocksPerSM)
+  forces(DeltaArrays a, DeviceGrid g, DeviceWalls w, Constants k)
 {
   const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= a.n)
