@@ -32,8 +32,11 @@ public:
   const char* backendName() const override { return "CUDA"; }
 
 private:
-  /// The GPU's bytes per particle, for the check before the arrays are made.
-  static constexpr std::size_t kBytesPerParticle = 4 * 30 + 8 * 2 + 4 * 2;
+  /// The GPU's bytes per particle, for the check before the arrays are made: 27 floats (the state,
+  /// δ-SPH's arrays, the 6 of the gradient correction, the 3 of the push, a scratch), the id and
+  /// index with their scratches, and the sort's keys and values, in and out (the cells' starts
+  /// and the sort's scratch come on top, a few bytes a particle).
+  static constexpr std::size_t kBytesPerParticle = 4 * 27 + (8 + 4) * 2 + (8 + 4) * 2;
   /// Uploads `s` (and each particle's fullness and slow departure: NaN for none) and starts:
   /// sound speed, density (hydrostatic unless s has one), pressures and accelerations
   /// (DeltaSPHSolver::start).

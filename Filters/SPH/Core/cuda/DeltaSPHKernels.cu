@@ -452,7 +452,8 @@ void launchMeanPressure(const DeltaArrays& a, float scale, cudaStream_t stream)
   checkLaunch("the mean-pressure kernel");
 }
 
-void launchGather(const float* src, float* dst, const std::uint32_t* order, std::uint32_t n, cudaStream_t stream)
+template<class T>
+void launchGather(const T* src, T* dst, const std::uint32_t* order, std::uint32_t n, cudaStream_t stream)
 {
   if (n == 0)
     return;
@@ -460,21 +461,7 @@ void launchGather(const float* src, float* dst, const std::uint32_t* order, std:
   checkLaunch("the gather kernel");
 }
 
-void launchGather(const std::int64_t* src, std::int64_t* dst, const std::uint32_t* order, std::uint32_t n,
-                  cudaStream_t stream)
-{
-  if (n == 0)
-    return;
-  gather<<<blocksFor(n), kThreads, 0, stream>>>(src, dst, order, n);
-  checkLaunch("the gather kernel");
-}
-
-void launchGather(const std::uint32_t* src, std::uint32_t* dst, const std::uint32_t* order, std::uint32_t n,
-                  cudaStream_t stream)
-{
-  if (n == 0)
-    return;
-  gather<<<blocksFor(n), kThreads, 0, stream>>>(src, dst, order, n);
-  checkLaunch("the gather kernel");
-}
+template void launchGather(const float*, float*, const std::uint32_t*, std::uint32_t, cudaStream_t);
+template void launchGather(const std::int64_t*, std::int64_t*, const std::uint32_t*, std::uint32_t, cudaStream_t);
+template void launchGather(const std::uint32_t*, std::uint32_t*, const std::uint32_t*, std::uint32_t, cudaStream_t);
 } // namespace parafluid::sph::cuda

@@ -68,10 +68,7 @@ void launchMeasure(const DeltaArrays& a, float rho0, float weight, StepMeasures*
                    cudaStream_t stream);
 /// p = scale impulse: each particle's time-weighted mean pressure over an advance.
 void launchMeanPressure(const DeltaArrays& a, float scale, cudaStream_t stream);
-/// dst[k] = src[order[k]] for k < n.
-void launchGather(const float* src, float* dst, const std::uint32_t* order, std::uint32_t n, cudaStream_t stream);
-void launchGather(const std::int64_t* src, std::int64_t* dst, const std::uint32_t* order, std::uint32_t n,
-                  cudaStream_t stream);
-void launchGather(const std::uint32_t* src, std::uint32_t* dst, const std::uint32_t* order, std::uint32_t n,
-                  cudaStream_t stream);
+/// dst[k] = src[order[k]] for k < n (float, std::int64_t and std::uint32_t).
+template<class T>
+void launchGather(const T* src, T* dst, const std::uint32_t* order, std::uint32_t n, cudaStream_t stream);
 } // namespace parafluid::sph::cuda
