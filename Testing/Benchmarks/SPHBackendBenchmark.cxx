@@ -1,9 +1,11 @@
 // Steps per second and particle-steps per second of SPH Step's backends (CPU, CUDA) against the
-// particle count, on a dam break in a tank (SPHERIC Test 2's tank and column, Kleefsman et al.
-// 2005, without its obstacle, which needs a boundary mesh the CUDA backend does not run yet).
+// particle count, on SPHERIC Test 2 (Kleefsman et al. 2005): the MARIN tank, its water column
+// against the far wall and its box obstacle on the floor as a boundary mesh.
 // Usage: ParaFluidSPHBackendBenchmark [spacing [m] ...] (default 0.03 0.015 0.008 0.006); each
 // backend runs `steps` adaptive steps after a warm-up of 5; CPU rows stop above 2 M particles.
+#include "ClosedBoxMesh.h"
 #include "parafluid/common/ParticleLattice.h"
+#include "parafluid/common/TriangleBoundary.h"
 #include "parafluid/sph/CudaBackend.h"
 #include "parafluid/sph/SPHParameters.h"
 #include "parafluid/sph/Simulation.h"
@@ -27,6 +29,17 @@ struct Row
   double stepsPerSecond, bytesPerParticle, simulatedSecondsPerHour;
 };
 
+/// The obstacle: 0.161 x 0.403 x 0.161 m at x = 0.6635 to 0.8245 m, centred across the tank, its
+/// foot a centimetre under the floor (so its bottom face lies outside the water's box).
+std::shared_ptr<const TriangleBoundary> obstacle()
+{
+  const float lo[3] = { 0.6635f, 0.2985f, -0.01f }, hi[3] = { 0.8245f, 0.7015f, 0.161f };
+  std::vector<float> points;
+  std::vector<std::uint32_t> triangles;
+  testing::appendClosedBox(points, triangles, lo, hi);
+  return std::make_shared<TriangleBoundary>(std::move(points), std::move(triangles));
+}
+
 Row run(double spacing, Backend backend, int steps)
 {
   SPHParameters p;
@@ -36,7 +49,7 @@ Row run(double spacing, Backend backend, int steps)
   p.domainBounds = { 0, 3.22f, 0, 1.0f, 0, 1.0f };
   auto lattice = fillBoxWithLattice({ 3.22 - 1.228, 3.22, 0, 1.0, 0, 0.55 }, spacing);
   auto sim = makeSimulation(p, ParticleState::atRest(std::move(lattice.x), std::move(lattice.y), std::move(lattice.z)),
-                            nullptr, backend);
+                            obstacle(), backend);
   const double dt = sim->proposedTimeStep();
   for (int k = 0; k < 5; ++k)
   {

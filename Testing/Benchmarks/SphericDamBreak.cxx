@@ -4,6 +4,7 @@
 // as the peer (pysph_peer.sh runs pysph). Prints steps, wall time, particle-steps per second and
 // simulated seconds per second for each solver.
 // Usage: ParaFluidSphericDamBreak [spacing=0.02] [simulated seconds=0.01]
+#include "ClosedBoxMesh.h"
 #include "parafluid/common/ParticleLattice.h"
 #include "parafluid/common/TriangleBoundary.h"
 #include "parafluid/sph/DeltaSPHSolver.h"
@@ -21,19 +22,10 @@ namespace
 {
 std::shared_ptr<TriangleBoundary> obstacle()
 {
-  const float box[6] = { 2.42f, 2.58f, 0.3f, 0.7f, -0.01f, 0.161f }; // pokes through the floor
+  const float lo[3] = { 2.42f, 0.3f, -0.01f }, hi[3] = { 2.58f, 0.7f, 0.161f }; // pokes through the floor
   std::vector<float> p;
-  for (int k = 0; k < 8; ++k)
-  {
-    p.insert(p.end(), { box[(k & 1) ? 1 : 0], box[(k & 2) ? 3 : 2], box[(k & 4) ? 5 : 4] });
-  }
-  const std::uint32_t quads[6][4] = { { 0, 4, 6, 2 }, { 1, 3, 7, 5 }, { 0, 1, 5, 4 },
-                                      { 2, 6, 7, 3 }, { 0, 2, 3, 1 }, { 4, 5, 7, 6 } };
   std::vector<std::uint32_t> t;
-  for (const auto& q : quads)
-  {
-    t.insert(t.end(), { q[0], q[1], q[2], q[0], q[2], q[3] });
-  }
+  testing::appendClosedBox(p, t, lo, hi);
   return std::make_shared<TriangleBoundary>(std::move(p), std::move(t));
 }
 } // namespace

@@ -1,4 +1,5 @@
 #include "parafluid/common/TriangleBoundary.h"
+#include "ClosedBoxMesh.h"
 
 #include <gtest/gtest.h>
 
@@ -224,18 +225,9 @@ TEST(TriangleBoundary, ReflectsVelocityAboutTheInterpolatedVertexNormal)
 TriangleBoundary closedBox(float lo, float hi)
 {
   std::vector<float> points;
-  for (int k = 0; k < 8; ++k)
-  {
-    points.insert(points.end(), { (k & 1) ? hi : lo, (k & 2) ? hi : lo, (k & 4) ? hi : lo });
-  }
-  // Each face as a quad (a, b, c, d) counter-clockwise seen from outside.
-  const std::uint32_t quads[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 },
-                                      { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
   std::vector<std::uint32_t> triangles;
-  for (const auto& q : quads)
-  {
-    triangles.insert(triangles.end(), { q[0], q[1], q[2], q[0], q[2], q[3] });
-  }
+  const float from[3] = { lo, lo, lo }, to[3] = { hi, hi, hi };
+  parafluid::testing::appendClosedBox(points, triangles, from, to);
   return TriangleBoundary(std::move(points), std::move(triangles));
 }
 

@@ -2,12 +2,15 @@
 // water running down a slope and never under it, and infiltration.
 #include "parafluid/rain/Runoff.h"
 #include "parafluid/rain/GroundSurface.h"
+#include "parafluid/sph/CudaBackend.h"
 #include "parafluid/sph/SPHSolver.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <iostream>
 #include <memory>
 #include <string>
 
@@ -217,6 +220,56 @@ TEST(Runoff, WaterRunsDownATiltedPlaneAndNeverUnderIt)
     EXPECT_GT(lowest, -1e-6) << "a particle got under the terrain";
     EXPECT_GT(lastX, firstX + 0.2) << "the water should run down the slope (towards +x)";
   }
+}
+
+TEST(Runoff, DeltaSPHRunoffOnTheGpuFollowsTheCpu)
+{
+  // The tilted plane's rain with δ-SPH on both backends for 1 s: the same particles arrive (the
+  // drops do not depend on the SPH), none gets under the terrain on the GPU, and the water's
+  // centre is where the CPU's is, within a spacing.
+  std::string why;
+  if (!parafluid::sph::cudaBackendUsable(&why))
+  {
+    GTEST_SKIP() << "no GPU for the CUDA backend: " << why;
+  }
+  const double size = 1.2;
+  auto ground = groundOf(size, 25, [&](double x, double) { return 0.3 * (1.0 - x / size); });
+  RainParameters rain = cloudburst(size, 3000.0);
+  rain.bounds = { 0.0, 0.4, 0.0, size };
+  rain.height = 0.7;
+  RunoffParameters p = water(0.02);
+  p.sph.pressureSolver = parafluid::sph::PressureSolverType::DeltaSPH;
+  p.backend = parafluid::sph::Backend::CPU;
+  Runoff cpu(rain, p, ground);
+  p.backend = parafluid::sph::Backend::CUDA;
+  Runoff gpu(rain, p, ground);
+  double lowest = 1e30;
+  auto centre = [](const Runoff& r)
+  {
+    const auto& s = r.water()->hostState();
+    double x = 0.0, z = 0.0;
+    for (std::size_t i = 0; i < s.size(); ++i)
+    {
+      x += s.x[i];
+      z += s.z[i];
+    }
+    return std::array<double, 2>{ x / static_cast<double>(s.size()), z / static_cast<double>(s.size()) };
+  };
+  for (int frame = 0; frame < 50; ++frame)
+  {
+    cpu.advance(0.02);
+    gpu.advance(0.02);
+    lowest = std::min(lowest, lowestClearance(gpu, *ground));
+  }
+  ASSERT_GT(gpu.particleCount(), 30u);
+  ASSERT_STREQ(gpu.water()->backendName(), "CUDA");
+  EXPECT_EQ(gpu.particleCount(), cpu.particleCount());
+  EXPECT_GT(lowest, -1e-6) << "a particle got under the terrain on the GPU";
+  const auto c = centre(cpu), g = centre(gpu);
+  EXPECT_NEAR(g[0], c[0], 0.02);
+  EXPECT_NEAR(g[1], c[1], 0.02);
+  std::cout << gpu.particleCount() << " particles; centre x, z " << c[0] << ", " << c[1] << " m on the CPU, " << g[0]
+            << ", " << g[1] << " m on the GPU\n";
 }
 
 TEST(Runoff, InfiltrationTakesTheRainUntilTheRainOutpacesIt)

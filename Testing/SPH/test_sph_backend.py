@@ -55,8 +55,8 @@ pftest.check(any("Backend" in e for e in refused.errors), "Backend 7 was not ref
 printed = str(cpu.GetClientSideObject())
 pftest.check("Backend: 1 (used: CPU)" in printed, "Backend 7 replaced Backend CPU: %s" %
              [line for line in printed.splitlines() if "Backend" in line])
-# The Rain filter's runoff has the same choice; its terrain is a boundary surface, which the GPU does
-# not run yet, so CUDA is refused by name everywhere and Automatic runs on the CPU.
+# The Rain filter's runoff has the same choice; its default DFSPH does not run on the GPU yet, so
+# CUDA is refused by name everywhere and Automatic runs on the CPU.
 terrain = ProceduralTerrain(Resolution=[9, 9], Extent=[2, 2], HeightScale=0.2)
 rain_settings = dict(Terrain=terrain, Cells=[4, 4], PrecipitationHeight=1.0, RainfallRate=5000, ParticleSpacing=0.1,
                      OutputInterval=0.5, NumberOfOutputs=2)
@@ -71,4 +71,16 @@ pftest.fetch(rain_cpu, 1.0)
 rain_cpu.UpdatePropertyInformation()
 pftest.check(not cpu_messages.errors, "Rain with Backend CPU: %r" % cpu_messages.errors)
 pftest.check(rain_cpu.GetPropertyValue("WaterVolume") > 0, "Rain with Backend CPU made no water")
+# With δ-SPH the runoff (on the terrain, a boundary surface) runs on the GPU where there is one.
+rain_delta = Rain(Backend="CUDA", PressureSolver="δ-SPH", **rain_settings)
+delta_messages = pftest.Messages(rain_delta.GetClientSideObject())
+pftest.fetch(rain_delta, 1.0)
+rain_delta.UpdatePropertyInformation()
+if where.startswith("CPU"):
+    text = "\n".join(delta_messages.errors)
+    pftest.check("Backend CUDA" in text and "PressureSolver" not in text,
+                 "Rain with δ-SPH and Backend CUDA without a GPU must say why (not the solver): %r" % text)
+else:
+    pftest.check(not delta_messages.errors, "Rain with δ-SPH on the GPU: %r" % delta_messages.errors)
+    pftest.check(rain_delta.GetPropertyValue("WaterVolume") > 0, "Rain with δ-SPH on the GPU made no water")
 print("ok")

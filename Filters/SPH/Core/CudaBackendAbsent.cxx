@@ -25,7 +25,8 @@ std::string cudaDeviceName()
   return {};
 }
 
-std::unique_ptr<Simulation> makeCudaSimulation(const SPHParameters&, ParticleState)
+std::unique_ptr<Simulation> makeCudaSimulation(const SPHParameters&, ParticleState,
+                                               std::shared_ptr<const TriangleBoundary>)
 {
   throw std::invalid_argument(std::string("SPH: Backend CUDA: ") + kNoCuda + "; choose Backend CPU or Automatic");
 }

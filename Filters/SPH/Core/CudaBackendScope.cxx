@@ -5,17 +5,13 @@
 
 namespace parafluid::sph
 {
-std::string cudaBackendLacks(const SPHParameters& p, bool hasBoundaryMesh)
+std::string cudaBackendLacks(const SPHParameters& p)
 {
   std::vector<std::string> lacking;
   if (p.pressureSolver != PressureSolverType::DeltaSPH)
   {
     lacking.emplace_back(std::string("PressureSolver ") +
                          (p.pressureSolver == PressureSolverType::DFSPH ? "DFSPH" : "WCSPH"));
-  }
-  if (hasBoundaryMesh)
-  {
-    lacking.emplace_back("Boundary (a triangle mesh or height image)");
   }
   if (p.surfaceTension > 0.0f)
   {

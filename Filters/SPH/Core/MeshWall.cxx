@@ -61,19 +61,18 @@ MeshWallTable::MeshWallTable(DensityKernel kernel, float h, float spacing)
   }
 }
 
-MeshWallTable::Weight MeshWallTable::at(float d) const
+MeshWallTableView MeshWallTable::view() const
 {
-  Weight out;
-  if (this->Sum.empty() || !(d < this->Reach))
+  MeshWallTableView v;
+  if (!this->Sum.empty())
   {
-    return out;
+    v.sum = this->Sum.data();
+    v.slope = this->Slope.data();
+    v.count = this->Count.data();
+    v.samples = kSamples;
+    v.reach = this->Reach;
+    v.inverseStep = this->InverseStep;
   }
-  const float x = std::max(d, 0.0f) * this->InverseStep;
-  const int k = std::min(static_cast<int>(x), kSamples - 1);
-  const float f = x - static_cast<float>(k);
-  out.sum = this->Sum[k] + f * (this->Sum[k + 1] - this->Sum[k]);
-  out.slope = this->Slope[k] + f * (this->Slope[k + 1] - this->Slope[k]);
-  out.neighbours = this->Count[k] + f * (this->Count[k + 1] - this->Count[k]);
-  return out;
+  return v;
 }
 } // namespace parafluid::sph::detail

@@ -5,10 +5,10 @@
 #include "parafluid/common/TriangleBoundary.h"
 #include "parafluid/sph/SolverRegistry.h"
 #include "parafluid/sph/TimeStepControl.h"
-#include "private/BoxWalls.h"
 #include "private/MeshWall.h"
 #include "private/NeighbourCandidates.h"
 #include "private/OutputFields.h"
+#include "private/ParticleDrift.h"
 #include "private/SimulationParts.h"
 
 #include <algorithm>
@@ -368,30 +368,12 @@ void SPHSolver::findMeshWalls()
   // No hint for particles new since the last search (added ones, or the first search).
   c.triangle.resize(s.size(), std::numeric_limits<std::uint32_t>::max());
   const float reach = this->Wall->table.reach();
-  const TriangleBoundary& mesh = *this->Boundary;
+  const TriangleMeshView mesh = this->Boundary->view();
 #pragma omp parallel for schedule(dynamic, 512) num_threads(threadCount(this->Parameters))
   for (std::int64_t i = 0; i < n; ++i)
   {
     const float p[3] = { s.x[i], s.y[i], s.z[i] };
-    float distance = reach;
-    float* normal = &c.normal[3 * i];
-    std::uint32_t triangle = c.triangle[i];
-    // The fluid's side of a mesh is the one its faces' normals point to (a terrain's top, an
-    // obstacle's outside). A particle behind it (on a container's mesh that faces out, or pushed
-    // through) gets no wall: the wall would push it further in.
-    bool near = mesh.nearest(p, reach, distance, normal, &triangle, triangle);
-    if (near)
-    {
-      const float* face = mesh.faceNormal(triangle);
-      near = normal[0] * face[0] + normal[1] * face[1] + normal[2] * face[2] > 0.0f;
-    }
-    if (!near)
-    {
-      distance = reach;
-      normal[0] = normal[1] = normal[2] = 0.0f;
-    }
-    c.distance[i] = distance;
-    c.triangle[i] = triangle;
+    detail::findMeshWall(mesh, p, reach, c.distance[i], &c.normal[3 * i], c.triangle[i]);
   }
 }
 
@@ -418,50 +400,34 @@ void SPHSolver::drift(float dt)
 {
   ParticleState& s = this->State;
   const auto n = static_cast<std::int64_t>(s.size());
-  const auto& b = this->Parameters.domainBounds;
-  const float restitution = this->Parameters.wallRestitution;
-  const TriangleBoundary* mesh = this->Boundary && this->Boundary->triangleCount() > 0 ? this->Boundary.get() : nullptr;
-  const float damping = this->Parameters.boundaryDamping;
-  const std::array<bool, 3> periodic = this->Parameters.periodic;
-  // Particles are put back this far off a mesh, so the next step starts on a definite side of it.
-  const float offset = 1e-3f * this->Parameters.smoothingLength;
+  const SPHParameters& p = this->Parameters;
+  const TriangleBoundary* boundary =
+    this->Boundary && this->Boundary->triangleCount() > 0 ? this->Boundary.get() : nullptr;
+  const TriangleMeshView mesh = boundary ? boundary->view() : TriangleMeshView{};
+  detail::DriftWalls walls{};
+  for (int a = 0; a < 6; ++a)
+  {
+    walls.bounds[a] = p.domainBounds[a];
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    walls.periodic[a] = p.periodic[a];
+  }
+  walls.restitution = p.wallRestitution;
+  walls.mesh = boundary ? &mesh : nullptr;
+  walls.damping = p.boundaryDamping;
+  walls.offset = 1e-3f * p.smoothingLength;
   float* position[3] = { s.x.data(), s.y.data(), s.z.data() };
   float* velocity[3] = { s.vx.data(), s.vy.data(), s.vz.data() };
 #pragma omp parallel for schedule(static) num_threads(threadCount(this->Parameters))
   for (std::int64_t i = 0; i < n; ++i)
   {
-    const float from[3] = { position[0][i], position[1][i], position[2][i] };
-    float to[3];
-    float v[3];
+    float x[3] = { position[0][i], position[1][i], position[2][i] };
+    float v[3] = { velocity[0][i], velocity[1][i], velocity[2][i] };
+    detail::driftParticle(x, v, dt, walls);
     for (int a = 0; a < 3; ++a)
     {
-      to[a] = from[a];
-      v[a] = velocity[a][i];
-      detail::moveAlongAxis(to[a], v[a], dt, b[2 * a], b[2 * a + 1], periodic[a], restitution);
-    }
-    // The box is convex and both ends of the move are inside it, so the mesh can only move the end
-    // point back towards the start, except by the small offset, which the clamp takes care of.
-    if (mesh && mesh->resolve(from, to, v, damping, offset))
-    {
-      float clamped[3];
-      bool moved = false;
-      for (int a = 0; a < 3; ++a)
-      {
-        clamped[a] = periodic[a] ? to[a] : std::clamp(to[a], b[2 * a], b[2 * a + 1]);
-        moved = moved || clamped[a] != to[a];
-      }
-      // Clamping into the box can push a particle back across the mesh where the mesh leaves the
-      // box (a sphere cut by a wall); then it stays where it was, which is on the right side.
-      parafluid::TriangleBoundary::Crossing crossing;
-      if (moved && mesh->firstCrossing(from, clamped, crossing))
-      {
-        std::copy(from, from + 3, clamped);
-      }
-      std::copy(clamped, clamped + 3, to);
-    }
-    for (int a = 0; a < 3; ++a)
-    {
-      position[a][i] = to[a];
+      position[a][i] = x[a];
       velocity[a][i] = v[a];
     }
   }

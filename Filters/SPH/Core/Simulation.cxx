@@ -54,7 +54,6 @@ std::unique_ptr<Simulation> makeSimulation(const SPHParameters& parameters, Part
                                            std::shared_ptr<const TriangleBoundary> boundary, Backend backend,
                                            std::string* choice)
 {
-  const bool mesh = boundary && boundary->triangleCount() > 0;
   auto onCpu = [&](const std::string& why)
   {
     if (choice)
@@ -69,7 +68,7 @@ std::unique_ptr<Simulation> makeSimulation(const SPHParameters& parameters, Part
   }
   std::string unusable;
   const bool usable = cudaBackendUsable(&unusable);
-  const std::string lacking = cudaBackendLacks(parameters, mesh);
+  const std::string lacking = cudaBackendLacks(parameters);
   if (backend == Backend::CUDA)
   {
     if (!usable)
@@ -94,6 +93,6 @@ std::unique_ptr<Simulation> makeSimulation(const SPHParameters& parameters, Part
   {
     *choice = "CUDA (" + cudaDeviceName() + ")";
   }
-  return makeCudaSimulation(parameters, std::move(initial));
+  return makeCudaSimulation(parameters, std::move(initial), std::move(boundary));
 }
 } // namespace parafluid::sph

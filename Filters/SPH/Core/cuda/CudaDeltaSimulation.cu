@@ -28,7 +28,8 @@ void uploadTo(DeviceBuffer<T>& buffer, const std::vector<T>& values, cudaStream_
 }
 } // namespace
 
-CudaDeltaSimulation::CudaDeltaSimulation(const SPHParameters& parameters, ParticleState initial)
+CudaDeltaSimulation::CudaDeltaSimulation(const SPHParameters& parameters, ParticleState initial,
+                                         std::shared_ptr<const TriangleBoundary> boundary)
   : Parameters(parameters)
   , K(parameters.smoothingLength)
 {
@@ -50,12 +51,23 @@ CudaDeltaSimulation::CudaDeltaSimulation(const SPHParameters& parameters, Partic
   this->Walls.noSlip = p.noSlipWalls();
   this->Walls.periodic = p.periodic;
   this->Walls.restitution = p.wallRestitution;
+  this->Walls.damping = p.boundaryDamping;
   for (int a = 0; a < 3; ++a)
   {
     this->Walls.gravity[a] = p.gravity[a];
   }
-  requireDeviceMemory(initial.size() * kBytesPerParticle, std::to_string(initial.size()) + " particles");
+  const bool mesh = boundary && boundary->triangleCount() > 0;
+  this->MeshWall = mesh && p.meshWallDensity && solverEntry(PressureSolverType::DeltaSPH).meshWallInSums;
+  requireDeviceMemory(initial.size() * this->bytesNeededPerParticle(), std::to_string(initial.size()) + " particles");
   this->Stream = this->Gpu.stream;
+  if (mesh)
+  {
+    // The table of the wall's sums for this kernel and lattice (SPHSolver's, from the same code).
+    const detail::MeshWallTable table(DensityKernel::WendlandC2, p.smoothingLength, this->Spacing);
+    this->MeshWall = this->MeshWall && !table.empty();
+    this->Mesh.upload(*boundary, this->MeshWall ? &table : nullptr, this->Stream);
+    check(cudaStreamSynchronize(this->Stream), "copying the boundary mesh to the GPU"); // the table is on the stack
+  }
   this->Pinned = this->Gpu.pinned;
   this->Partials.reserve(kMeasureBlocks);
   this->Result.reserve(1);
@@ -104,6 +116,14 @@ DeltaArrays CudaDeltaSimulation::arrays() const
   a.push = this->Push.data();
   a.interior = this->Interior.data();
   a.impulse = this->Impulse.data();
+  if (this->MeshWall)
+  {
+    a.wall.table = this->Mesh.table();
+    a.wall.distance = this->WallDistance.data();
+    a.wall.normal = this->WallNormal.data();
+    a.wall.triangle = this->WallTriangle.data();
+    a.wall.wallSum = this->WallSum.data();
+  }
   return a;
 }
 
@@ -126,7 +146,7 @@ void CudaDeltaSimulation::start(ParticleState s, std::vector<float> fullness, st
   uploadTo(this->VX, s.vx, stream);
   uploadTo(this->VY, s.vy, stream);
   uploadTo(this->VZ, s.vz, stream);
-  launchDrift(this->arrays(), this->Walls, 0.0f, stream);
+  launchDrift(this->arrays(), this->Walls, this->Mesh.view(), 0.0f, stream);
   for (auto [buffer, host] : { std::pair{ &this->X, &s.x },
                                { &this->Y, &s.y },
                                { &this->Z, &s.z },
@@ -173,6 +193,20 @@ void CudaDeltaSimulation::start(ParticleState s, std::vector<float> fullness, st
   }
   this->IdScratch.reserve(n);
   this->IndexScratch.reserve(n);
+  if (this->MeshWall)
+  {
+    for (auto* buffer : { &this->WallDistance, &this->WallSum })
+    {
+      buffer->reserve(n);
+    }
+    this->WallNormal.reserve(3 * n);
+    this->WallTriangle.reserve(n);
+    if (n > 0)
+    {
+      // No triangle hint: every particle's first search covers the whole reach.
+      check(cudaMemsetAsync(this->WallTriangle.data(), 0xff, n * sizeof(std::uint32_t), stream), "clearing hints");
+    }
+  }
   const std::size_t bytes = n * sizeof(float);
   for (auto* buffer : { &this->AX, &this->AY, &this->AZ, &this->Rate, &this->Impulse })
   {
@@ -183,6 +217,10 @@ void CudaDeltaSimulation::start(ParticleState s, std::vector<float> fullness, st
   }
   this->measure(0.0f); // the bounding box the first sort's grid covers
   this->sortByCell();
+  if (this->MeshWall)
+  {
+    launchStartWallSums(this->arrays().wall, this->N, stream); // density counts from where each particle starts
+  }
   const DeltaArrays a = this->arrays();
   const auto bulk = static_cast<float>(this->SoundSpeed * this->SoundSpeed * p.restDensity / delta::kGamma);
   launchIntegrateDensity(a, this->K, 0.0f, 0.0f, bulk, stream); // the pressure from the start's density
@@ -266,6 +304,20 @@ void CudaDeltaSimulation::sortByCell()
   this->Id.swap(this->IdScratch);
   launchGather(this->Index.data(), this->IndexScratch.data(), order, this->N, stream);
   this->Index.swap(this->IndexScratch);
+  if (this->MeshWall)
+  {
+    // Each particle's wall sum and last triangle (the next search's hint) go with it.
+    permute(this->WallSum);
+    launchGather(this->WallTriangle.data(), this->IndexScratch.data(), order, this->N, stream);
+    this->WallTriangle.swap(this->IndexScratch);
+    launchFindMeshWalls(this->X.data(), this->Y.data(), this->Z.data(), this->N, this->Mesh.view(), this->arrays().wall,
+                        stream);
+  }
+}
+
+std::size_t CudaDeltaSimulation::bytesNeededPerParticle() const
+{
+  return kBytesPerParticle + (this->MeshWall ? kMeshWallBytesPerParticle : 0);
 }
 
 double CudaDeltaSimulation::proposedTimeStep() const
@@ -284,7 +336,7 @@ double CudaDeltaSimulation::step(double remaining)
   const auto h = static_cast<float>(dt);
   const cudaStream_t stream = this->Stream;
   launchKick(this->arrays(), 0.5f * h, stream);
-  launchDrift(this->arrays(), this->Walls, h, stream);
+  launchDrift(this->arrays(), this->Walls, this->Mesh.view(), h, stream);
   this->sortByCell();
   launchContinuity(this->arrays(), this->Grid, this->Walls, this->K, stream);
   this->Fullness.swap(this->NextFullness);
@@ -407,7 +459,7 @@ void CudaDeltaSimulation::addParticles(const std::vector<float>& x, const std::v
     appendParticles(this->Host, x, y, z, vx, vy, vz, this->Parameters.restDensity); // checks the sizes
     return;
   }
-  requireDeviceMemory(x.size() * kBytesPerParticle, std::to_string(x.size()) + " more particles");
+  requireDeviceMemory(x.size() * this->bytesNeededPerParticle(), std::to_string(x.size()) + " more particles");
   ParticleState s = this->hostState();
   std::vector<float> fullness, slow;
   this->downloadSolverState(fullness, slow);
@@ -485,8 +537,9 @@ double CudaDeltaSimulation::bytesPerParticle() const
   {
     return 0.0;
   }
-  std::size_t total =
-    this->Sort.bytes() + this->Id.bytes() + this->IdScratch.bytes() + this->Index.bytes() + this->IndexScratch.bytes();
+  std::size_t total = this->Sort.bytes() + this->Id.bytes() + this->IdScratch.bytes() + this->Index.bytes() +
+                      this->IndexScratch.bytes() + this->Mesh.bytes() + this->WallDistance.bytes() +
+                      this->WallNormal.bytes() + this->WallSum.bytes() + this->WallTriangle.bytes();
   for (const auto* buffer : { &this->X,          &this->Y,    &this->Z,        &this->VX,           &this->VY,
                               &this->VZ,         &this->AX,   &this->AY,       &this->AZ,           &this->Rho,
                               &this->P,          &this->Rate, &this->Fullness, &this->NextFullness, &this->Slow,
@@ -503,18 +556,19 @@ std::string CudaDeltaSimulation::stabilityAdvice() const
 }
 } // namespace cuda
 
-std::unique_ptr<Simulation> makeCudaSimulation(const SPHParameters& parameters, ParticleState initial)
+std::unique_ptr<Simulation> makeCudaSimulation(const SPHParameters& parameters, ParticleState initial,
+                                               std::shared_ptr<const TriangleBoundary> boundary)
 {
   std::string reason;
   if (!cudaBackendUsable(&reason))
   {
     throw std::invalid_argument("SPH: Backend CUDA: " + reason + "; choose Backend CPU or Automatic");
   }
-  const std::string lacking = cudaBackendLacks(parameters, false);
+  const std::string lacking = cudaBackendLacks(parameters);
   if (!lacking.empty())
   {
     throw std::invalid_argument("SPH: Backend CUDA does not run " + lacking + " yet; choose Backend CPU");
   }
-  return std::make_unique<cuda::CudaDeltaSimulation>(parameters, std::move(initial));
+  return std::make_unique<cuda::CudaDeltaSimulation>(parameters, std::move(initial), std::move(boundary));
 }
 } // namespace parafluid::sph

@@ -5,6 +5,7 @@
 #include "cuda/CellSort.cuh"
 #include "cuda/DeltaSPHKernels.cuh"
 #include "cuda/DeviceBuffer.h"
+#include "cuda/DeviceMesh.cuh"
 #include "parafluid/sph/Simulation.h"
 
 namespace parafluid::sph::cuda
@@ -12,7 +13,9 @@ namespace parafluid::sph::cuda
 class CudaDeltaSimulation final : public Simulation
 {
 public:
-  CudaDeltaSimulation(const SPHParameters& parameters, ParticleState initial);
+  /// `boundary` (may be null) is copied to the GPU; it need not outlive the simulation.
+  CudaDeltaSimulation(const SPHParameters& parameters, ParticleState initial,
+                      std::shared_ptr<const TriangleBoundary> boundary);
 
   std::int64_t advance(double duration, const std::function<bool(double)>& progress = {}) override;
   void addParticles(const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z,
@@ -37,11 +40,15 @@ private:
   /// index with their scratches, and the sort's keys and values, in and out (the cells' starts
   /// and the sort's scratch come on top, a few bytes a particle).
   static constexpr std::size_t kBytesPerParticle = 4 * 27 + (8 + 4) * 2 + (8 + 4) * 2;
+  /// With a boundary mesh in the sums: each particle's distance, normal, triangle and wall sum.
+  static constexpr std::size_t kMeshWallBytesPerParticle = 4 * 6;
+  std::size_t bytesNeededPerParticle() const;
   /// Uploads `s` (and each particle's fullness and slow departure: NaN for none) and starts:
   /// sound speed, density (hydrostatic unless s has one), pressures and accelerations
   /// (DeltaSPHSolver::start).
   void start(ParticleState s, std::vector<float> fullness, std::vector<float> slow);
   double step(double remaining);
+  /// Sorts the state by cell and finds each particle's mesh wall where it now is.
   void sortByCell();
   /// The measures of the state into Measures and Last (impulse += weight p first).
   void measure(float weight);
@@ -70,6 +77,10 @@ private:
   DeviceBuffer<std::int64_t> Id, IdScratch;
   DeviceBuffer<std::uint32_t> Index, IndexScratch;
   DeviceBuffer<StepMeasures> Partials, Result;
+  DeviceMesh Mesh;       // triangleCount 0: no boundary mesh
+  bool MeshWall = false; // the mesh's wall is in the sums (SPHParameters::meshWallDensity)
+  DeviceBuffer<float> WallDistance, WallNormal, WallSum;
+  DeviceBuffer<std::uint32_t> WallTriangle;
   StepMeasures* Pinned = nullptr; // Gpu.pinned
   StepMeasures Measures{};
   CellSort Sort;

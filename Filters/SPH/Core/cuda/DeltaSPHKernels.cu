@@ -2,11 +2,11 @@
 #include "cuda/CudaCheck.h"
 #include "cuda/DeltaSPHKernels.cuh"
 #include "parafluid/sph/WallMirrors.h"
-#include "private/BoxWalls.h"
 #include "private/DeltaSPHFreeSurface.h"
 #include "private/DeltaSPHMomentum.h"
 #include "private/DeltaSPHOwnImage.h"
 #include "private/GradientCorrection.h"
+#include "private/ParticleDrift.h"
 #include "private/WallImages.h"
 
 namespace parafluid::sph::cuda
@@ -66,22 +66,34 @@ __global__ void kick(DeltaArrays a, float dt)
   a.vz[i] += dt * a.az[i];
 }
 
-__global__ void drift(DeltaArrays a, DeviceWalls w, float dt)
+__global__ void drift(DeltaArrays a, DeviceWalls w, TriangleMeshView mesh, float dt)
 {
   const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= a.n)
   {
     return;
   }
-  float* position[3] = { a.x, a.y, a.z };
-  float* velocity[3] = { a.vx, a.vy, a.vz };
+  detail::DriftWalls walls;
+  for (int d = 0; d < 6; ++d)
+  {
+    walls.bounds[d] = w.bounds[d];
+  }
   for (int d = 0; d < 3; ++d)
   {
-    float x = position[d][i], v = velocity[d][i];
-    detail::moveAlongAxis(x, v, dt, w.bounds[2 * d], w.bounds[2 * d + 1], w.periodic[d], w.restitution);
-    position[d][i] = x;
-    velocity[d][i] = v;
+    walls.periodic[d] = w.periodic[d];
   }
+  walls.restitution = w.restitution;
+  walls.mesh = mesh.triangleCount > 0 ? &mesh : nullptr;
+  walls.damping = w.damping;
+  walls.offset = 1e-3f * w.support; // SPHSolver::drift's
+  float position[3] = { a.x[i], a.y[i], a.z[i] }, velocity[3] = { a.vx[i], a.vy[i], a.vz[i] };
+  detail::driftParticle(position, velocity, dt, walls);
+  a.x[i] = position[0];
+  a.y[i] = position[1];
+  a.z[i] = position[2];
+  a.vx[i] = velocity[0];
+  a.vy[i] = velocity[1];
+  a.vz[i] = velocity[2];
 }
 
 __global__ void __launch_bounds__(kThreads, kPairBlocksPerSM)
@@ -166,7 +178,14 @@ __global__ void integrateDensity(DeltaArrays a, Constants k, float dt, float fol
   {
     return;
   }
-  const float rho = a.rho[i] + dt * a.rate[i];
+  float rho = a.rho[i] + dt * a.rate[i];
+  if (a.wall.distance)
+  {
+    // The mesh's wall moves density with the particle's position (DeltaSPHSolver::advanceDensity).
+    const float sum = a.wall.table.at(a.wall.distance[i]).sum;
+    rho += 2.0f * k.mass * (sum - a.wall.wallSum[i]);
+    a.wall.wallSum[i] = sum;
+  }
   a.rho[i] = rho;
   if (follow > 0.0f)
   {
@@ -271,6 +290,15 @@ __global__ void __launch_bounds__(kThreads, kPairBlocksPerSM)
   if (a.correction)
   {
     detail::applyGradientCorrection(a.correction + 6 * static_cast<std::size_t>(i), difference, acc);
+  }
+  if (a.wall.distance && a.wall.distance[i] < a.wall.table.reach)
+  {
+    // The mesh's lattice is the particle's mirror image, p_b = p_i (DeltaSPHForces.cxx).
+    const float scalar = -2.0f * k.pressureCorrection * termI * k.mass * a.wall.table.at(a.wall.distance[i]).slope;
+    for (int d = 0; d < 3; ++d)
+    {
+      acc[d] += scalar * a.wall.normal[static_cast<std::size_t>(d) * a.n + i];
+    }
   }
   a.ax[i] = acc[0];
   a.ay[i] = acc[1];
@@ -396,11 +424,12 @@ void launchKick(const DeltaArrays& a, float dt, cudaStream_t stream)
   checkLaunch("the kick kernel");
 }
 
-void launchDrift(const DeltaArrays& a, const DeviceWalls& walls, float dt, cudaStream_t stream)
+void launchDrift(const DeltaArrays& a, const DeviceWalls& walls, const TriangleMeshView& mesh, float dt,
+                 cudaStream_t stream)
 {
   if (a.n == 0)
     return;
-  drift<<<blocksFor(a.n), kThreads, 0, stream>>>(a, walls, dt);
+  drift<<<blocksFor(a.n), kThreads, 0, stream>>>(a, walls, mesh, dt);
   checkLaunch("the drift kernel");
 }
 

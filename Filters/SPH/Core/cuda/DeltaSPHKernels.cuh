@@ -3,6 +3,7 @@
 // sorted by cell, each the CPU pass's formulas (private/DeltaSPH*.h) in a plain loop over the
 // neighbouring cells. Every sum runs in a fixed order, so a rerun gives the same bits.
 #include "cuda/DeviceGrid.cuh"
+#include "cuda/DeviceMesh.cuh"
 #include "private/DeltaSPHPairs.h"
 
 #include <cuda_runtime.h>
@@ -27,6 +28,7 @@ struct DeltaArrays
   float* push;         // 3 n: x, y and z of DeltaSPHSolver::FullPush
   float* interior;     // DeltaSPHSolver::Interior
   float* impulse;      // sum of p dt over an advance [Pa s]
+  MeshContacts wall;   // the boundary mesh's wall in the sums (distance null: none)
 };
 
 /// The box and what its walls do (SPHParameters).
@@ -37,6 +39,7 @@ struct DeviceWalls
   std::array<bool, 6> noSlip;
   std::array<bool, 3> periodic;
   float restitution;
+  float damping;    // SPHParameters::boundaryDamping, at the mesh
   float gravity[3]; // [m/s^2], as given (Constants::gravity drops it along periodic axes)
 };
 
@@ -51,11 +54,14 @@ struct StepMeasures
 };
 
 void launchKick(const DeltaArrays& a, float dt, cudaStream_t stream);
-void launchDrift(const DeltaArrays& a, const DeviceWalls& walls, float dt, cudaStream_t stream);
+/// The moves of a step (detail::driftParticle): through the box and past `mesh` (triangleCount 0: none).
+void launchDrift(const DeltaArrays& a, const DeviceWalls& walls, const TriangleMeshView& mesh, float dt,
+                 cudaStream_t stream);
 /// D rho / D t into rate, the gradient correction, nextFullness, interior and push (DeltaSPHContinuity.cxx).
 void launchContinuity(const DeltaArrays& a, const DeviceGrid& grid, const DeviceWalls& walls, const delta::Constants& k,
                       cudaStream_t stream);
-/// rho += dt rate, the slow departure follows by `follow` (0: not at all), p from Tait's equation.
+/// rho += dt rate and the mesh wall's change since the last step, the slow departure follows by
+/// `follow` (0: not at all), p from Tait's equation (DeltaSPHSolver::advanceDensity, updatePressure).
 void launchIntegrateDensity(const DeltaArrays& a, const delta::Constants& k, float dt, float follow, float bulk,
                             cudaStream_t stream);
 /// The accelerations (DeltaSPHForces.cxx); laminar: the fluid's viscosity is on.

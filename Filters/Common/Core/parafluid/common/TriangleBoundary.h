@@ -5,8 +5,11 @@
 // is put back on the side it came from, its remaining travel is reflected across the triangle's
 // plane, and its velocity is reflected about the normal interpolated at the crossing point from the
 // vertex normals (so a smooth terrain deflects smoothly), keeping (1 - damping) of the normal speed.
+#include "parafluid/common/TriangleMeshView.h"
+
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace parafluid
@@ -20,63 +23,65 @@ public:
   TriangleBoundary(std::vector<float> points, std::vector<std::uint32_t> triangles,
                    std::vector<float> vertexNormals = {});
 
-  struct Crossing
-  {
-    float t = 0.0f; // fraction of the segment at which it crosses
-    std::uint32_t triangle = 0;
-    float barycentric[3] = { 0, 0, 0 };
-    float side = 1.0f; // +1 when the segment starts on the side the face normal points to
-  };
+  using Crossing = TriangleCrossing;
   /// The first triangle the segment a -> b crosses from one side to the other, or (skin > 0) ends
   /// closer than `skin` to from a's side; t is where it enters that skin. A start point exactly on
   /// a triangle's plane has no side and crosses nothing.
-  bool firstCrossing(const float a[3], const float b[3], Crossing& crossing, float skin = 0.0f) const;
+  bool firstCrossing(const float a[3], const float b[3], Crossing& crossing, float skin = 0.0f) const
+  {
+    return this->view().firstCrossing(a, b, crossing, skin);
+  }
 
   /// Keeps a particle moving from `from` to `to` on from's side of every triangle: on a crossing
   /// `to` becomes the damped reflection of the overshoot (at least `offset` metres off the plane) and
   /// `velocity` is reflected. A move that would end within offset / 2 of a triangle counts as a hit
   /// too, so a particle never comes to rest on a plane, where it would have no side. Returns true
   /// when the particle hit the mesh.
-  bool resolve(const float from[3], float to[3], float velocity[3], float damping, float offset) const;
+  bool resolve(const float from[3], float to[3], float velocity[3], float damping, float offset) const
+  {
+    return this->view().resolve(from, to, velocity, damping, offset);
+  }
 
   /// The point of the mesh nearest to p, if one lies within `radius` [m]: its distance, the unit
   /// vector from it to p (the face's normal, turned towards p, when p lies on the mesh) and, when
   /// asked, the triangle it lies on. A particle's wall in the SPH's sums.
   bool nearest(const float p[3], float radius, float& distance, float direction[3],
-               std::uint32_t* triangle = nullptr) const;
+               std::uint32_t* triangle = nullptr) const
+  {
+    return this->view().nearest(p, radius, distance, direction, triangle, std::numeric_limits<std::uint32_t>::max());
+  }
   /// The same, told a triangle that is probably near (the last one found for a particle that has
   /// moved a little): the search then covers only what lies as near as that triangle does.
   bool nearest(const float p[3], float radius, float& distance, float direction[3], std::uint32_t* triangle,
-               std::uint32_t hint) const;
+               std::uint32_t hint) const
+  {
+    return this->view().nearest(p, radius, distance, direction, triangle, hint);
+  }
 
   std::size_t triangleCount() const { return this->Triangles.size() / 3; }
-  const float* bounds() const { return this->Bounds; }
+  const float* bounds() const { return this->Grid.bounds; }
   /// Unit normal of triangle t (right-handed in its vertex order).
   const float* faceNormal(std::uint32_t t) const { return &this->FaceNormals[3 * t]; }
+  /// The queries over this mesh's arrays (valid while it lives).
+  TriangleMeshView view() const;
+  /// The arrays a view reads, for a copy on another device (the CUDA backend's).
+  const std::vector<float>& points() const { return this->Points; }
+  const std::vector<std::uint32_t>& triangles() const { return this->Triangles; }
+  const std::vector<float>& vertexNormals() const { return this->VertexNormals; }
+  const std::vector<float>& faceNormals() const { return this->FaceNormals; }
+  const std::vector<std::uint32_t>& cellStart() const { return this->CellStart; }
+  const std::vector<std::uint32_t>& cellTriangles() const { return this->CellTriangles; }
+  const TriangleGrid& grid() const { return this->Grid; }
 
 private:
-  /// The bounce sequence of resolve(), without its final check of the net move.
-  bool bounce(const float from[3], float to[3], float velocity[3], float damping, float offset) const;
   void buildGrid();
   void triangleBox(std::size_t t, float lo[3], float hi[3]) const;
-  bool cellRange(const float lo[3], const float hi[3], int first[3], int last[3]) const;
-  /// |q - point|^2, point the nearest point of triangle t to q.
-  double squaredDistanceTo(std::uint32_t t, const double q[3], double point[3]) const;
-  /// nearest() among the triangles of the cells within `radius` of p.
-  bool nearestWithin(const float p[3], float radius, float& distance, float direction[3],
-                     std::uint32_t* triangle) const;
-  /// Calls f(triangle) for each triangle listed in the cells first..last (once per cell it is in).
-  template<class F>
-  void forEachTriangleIn(const int first[3], const int last[3], F&& f) const;
 
   std::vector<float> Points;
   std::vector<std::uint32_t> Triangles;
   std::vector<float> VertexNormals;
   std::vector<float> FaceNormals;
-  float Bounds[6] = { 0, 0, 0, 0, 0, 0 };
-  float Origin[3] = { 0, 0, 0 };
-  float CellSize = 1.0f;
-  int Dims[3] = { 1, 1, 1 };
+  TriangleGrid Grid;
   std::vector<std::uint32_t> CellStart; // triangles of cell c: CellTriangles[CellStart[c] .. CellStart[c+1])
   std::vector<std::uint32_t> CellTriangles;
 };

@@ -61,8 +61,8 @@ struct RunoffParameters
   double rainStep = 1.0 / 60.0; // [s]
   double infiltration = 0.0;    // [mm/h]
   std::size_t maxParticles = 4000000;
-  /// Where the water's SPH runs (sph::makeSimulation; the terrain is a boundary mesh, which the
-  /// CUDA backend does not run yet, so Automatic runs it on the CPU).
+  /// Where the water's SPH runs (sph::makeSimulation; the CUDA backend runs δ-SPH, not yet the
+  /// default DFSPH, which Automatic runs on the CPU).
   sph::Backend backend = sph::Backend::Automatic;
 };
 

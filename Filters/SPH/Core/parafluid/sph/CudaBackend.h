@@ -3,6 +3,7 @@
 // can run it, what it runs, and its factory. The rest of the code calls makeSimulation, which
 // asks these.
 #include "parafluid/common/ParticleState.h"
+#include "parafluid/common/TriangleBoundary.h"
 #include "parafluid/sph/SPHParameters.h"
 #include "parafluid/sph/Simulation.h"
 
@@ -16,10 +17,12 @@ namespace parafluid::sph
 bool cudaBackendUsable(std::string* reason = nullptr);
 /// The GPU the CUDA backend runs on, for messages ("NVIDIA H200"); empty when none is usable.
 std::string cudaDeviceName();
-/// What of these parameters (and a boundary mesh, when hasBoundaryMesh) the CUDA backend does not
-/// run yet, named by SPH Step's properties; empty when it runs all of it.
-std::string cudaBackendLacks(const SPHParameters& parameters, bool hasBoundaryMesh);
-/// The simulation on the GPU. Throws std::invalid_argument as SPHSolver does, or std::runtime_error
-/// when the GPU fails or lacks the memory (the message gives the bytes asked and free).
-std::unique_ptr<Simulation> makeCudaSimulation(const SPHParameters& parameters, ParticleState initial);
+/// What of these parameters the CUDA backend does not run yet, named by SPH Step's properties;
+/// empty when it runs all of it.
+std::string cudaBackendLacks(const SPHParameters& parameters);
+/// The simulation on the GPU, with the boundary mesh when one is given. Throws
+/// std::invalid_argument as SPHSolver does, or std::runtime_error when the GPU fails or lacks the
+/// memory (the message gives the bytes asked and free).
+std::unique_ptr<Simulation> makeCudaSimulation(const SPHParameters& parameters, ParticleState initial,
+                                               std::shared_ptr<const TriangleBoundary> boundary = nullptr);
 } // namespace parafluid::sph
