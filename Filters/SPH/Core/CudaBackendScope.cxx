@@ -17,14 +17,6 @@ std::string cudaBackendLacks(const SPHParameters& p)
   {
     lacking.emplace_back("SurfaceTension");
   }
-  if (p.particleShifting)
-  {
-    lacking.emplace_back("ParticleShifting");
-  }
-  if (p.wallFriction == WallFriction::LogLaw)
-  {
-    lacking.emplace_back("WallFriction LogLaw");
-  }
   std::string text;
   for (const std::string& what : lacking)
   {

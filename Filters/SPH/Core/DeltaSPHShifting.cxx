@@ -3,6 +3,7 @@
 
 #include "parafluid/common/SimdDispatch.h"
 #include "private/DeltaSPHPairs.h"
+#include "private/DeltaSPHShift.h"
 #include "private/NeighbourCandidates.h"
 #include "private/SimulationParts.h"
 #include "private/WallImages.h"
@@ -38,9 +39,7 @@ __attribute__((always_inline)) inline void shiftingSumsBody(const float* px, con
     const int j = static_cast<int>(hits[n]); // signed: a gather sign-extends its 32-bit indices
     const float dx = q[0] - px[j], dy = q[1] - py[j], dz = q[2] - pz[j];
     const WendlandPair pair(w, __builtin_sqrtf(dx * dx + dy * dy + dz * dz));
-    const float f = pair.value * inverseWSpacing;
-    const float f2 = f * f;
-    const float weight = pair.gradient * (1.0f + 0.2f * f2 * f2);
+    const float weight = shiftingWeight(pair, inverseWSpacing);
     ws += pair.value;
     gx += weight * dx;
     gy += weight * dy;
@@ -86,36 +85,26 @@ void DeltaSPHSolver::shiftParticles(SimulationParts& sim, float dt)
     return;
   }
   const float diffusion = 2.0f * p.smoothingLength * fastest * dt * volume;
-  forEachParticleByCell(
-    sim.grid(), s, p.smoothingLength, threadCount(p), {},
-    [&](CandidateBuffer& c, std::uint32_t i)
-    {
-      const float position[3] = { s.x[i], s.y[i], s.z[i] };
-      float sum = 0.0f, g[3] = { 0.0f, 0.0f, 0.0f };
-      forEachWallImage(position, position, p,
-                       [&](const float* q, const float*, const float*, const float* scale, bool image)
-                       {
-                         // The pair loops' hits (an image's among its particle's own); no channel is read.
-                         const PairInput in(c, q, w.h2, image);
-                         ShiftingSums sums;
-                         shiftingSums(in.px, in.py, in.pz, in.hits, in.count, q, w, inverseWSpacing, &sums);
-                         sum += sums.kernelSum;
-                         g[0] += scale[0] * sums.gradient[0];
-                         g[1] += scale[1] * sums.gradient[1];
-                         g[2] += scale[2] * sums.gradient[2];
-                       });
-      if (volume * sum < 0.9f)
-      {
-        return;
-      }
-      float shift[3] = { -diffusion * g[0], -diffusion * g[1], -diffusion * g[2] };
-      const float length = std::sqrt(shift[0] * shift[0] + shift[1] * shift[1] + shift[2] * shift[2]);
-      const float scale = length > limit ? limit / length : 1.0f;
-      for (int a = 0; a < 3; ++a)
-      {
-        this->Shift[3 * i + a] = scale * shift[a];
-      }
-    });
+  forEachParticleByCell(sim.grid(), s, p.smoothingLength, threadCount(p), {},
+                        [&](CandidateBuffer& c, std::uint32_t i)
+                        {
+                          const float position[3] = { s.x[i], s.y[i], s.z[i] };
+                          float sum = 0.0f, g[3] = { 0.0f, 0.0f, 0.0f };
+                          forEachWallImage(
+                            position, position, p,
+                            [&](const float* q, const float*, const float*, const float* scale, bool image)
+                            {
+                              // The pair loops' hits (an image's among its particle's own); no channel is read.
+                              const PairInput in(c, q, w.h2, image);
+                              ShiftingSums sums;
+                              shiftingSums(in.px, in.py, in.pz, in.hits, in.count, q, w, inverseWSpacing, &sums);
+                              sum += sums.kernelSum;
+                              g[0] += scale[0] * sums.gradient[0];
+                              g[1] += scale[1] * sums.gradient[1];
+                              g[2] += scale[2] * sums.gradient[2];
+                            });
+                          particleShift(sum, g, volume, diffusion, limit, &this->Shift[3 * i]);
+                        });
   // Applied after the pass (it reads every neighbour's position), through the walls' rules.
   const auto& b = p.domainBounds;
 #pragma omp parallel for schedule(static) num_threads(threadCount(p))
@@ -124,17 +113,8 @@ void DeltaSPHSolver::shiftParticles(SimulationParts& sim, float dt)
     float* position[3] = { &s.x[i], &s.y[i], &s.z[i] };
     for (int a = 0; a < 3; ++a)
     {
-      float x = *position[a] + this->Shift[3 * i + a];
-      if (p.periodic[a])
-      {
-        const float length = b[2 * a + 1] - b[2 * a];
-        x = x < b[2 * a] ? x + length : (x >= b[2 * a + 1] ? x - length : x);
-      }
-      else
-      {
-        x = std::clamp(x, b[2 * a] + 0.01f * sim.particleSpacing(), b[2 * a + 1] - 0.01f * sim.particleSpacing());
-      }
-      *position[a] = x;
+      *position[a] = shiftedCoordinate(*position[a], this->Shift[3 * i + a], b[2 * a], b[2 * a + 1], p.periodic[a],
+                                       0.01f * sim.particleSpacing());
     }
   }
 }

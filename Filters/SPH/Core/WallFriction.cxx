@@ -1,20 +1,9 @@
-// Turbulent wall shear on the box walls (SPHParameters::wallFriction == LogLaw).
-//
-// The particles within one spacing s of a wall stand for the fluid layer above its unresolved
-// boundary layer. The wall's shear stress tau = rho u*^2, with u* from the law of the wall at the
-// particle's tangential speed, acts on the particle's share of the wall, s^2, so it decelerates
-// the particle (mass rho s^3) at u*^2 / s against its tangential velocity. Per unit of wall area
-// the force does not depend on s, so the braking converges with resolution.
-//
-// The update is implicit in the speed, v_t <- v_t / (1 + dt u*^2 / (|v_t| s)): it can stop a
-// particle but never reverse it, whatever the step.
+// Turbulent wall shear on the box walls (SPHParameters::wallFriction == LogLaw; see
+// private/LogLawFriction.h).
 #include "parafluid/sph/SPHSolver.h"
 
-#include "parafluid/sph/TurbulentWallLaw.h"
+#include "private/LogLawFriction.h"
 #include "private/NeighbourCandidates.h"
-
-#include <algorithm>
-#include <cmath>
 
 namespace parafluid::sph
 {
@@ -29,39 +18,16 @@ void SPHSolver::applyWallFriction(float dt)
   }
   ParticleState& s = this->State;
   const auto n = static_cast<std::int64_t>(s.size());
-  const float spacing = this->ParticleSpacing;
-  const float nu = p.wallKinematicViscosity;
-  const auto& b = p.domainBounds;
-  float* position[3] = { s.x.data(), s.y.data(), s.z.data() };
-  float* velocity[3] = { s.vx.data(), s.vy.data(), s.vz.data() };
+  const detail::LogLawWalls walls = detail::logLawWalls(p, this->ParticleSpacing);
 #pragma omp parallel for schedule(static) num_threads(threadCount(p))
   for (std::int64_t i = 0; i < n; ++i)
   {
-    for (int a = 0; a < 3; ++a)
-    {
-      const float toLow = position[a][i] - b[2 * a];
-      const float toHigh = b[2 * a + 1] - position[a][i];
-      const int wall = toLow <= toHigh ? 2 * a : 2 * a + 1;
-      const float distance = std::min(toLow, toHigh);
-      if (p.periodic[a] || !p.frictionWalls[wall] || distance >= spacing)
-      {
-        continue;
-      }
-      const int t0 = (a + 1) % 3, t1 = (a + 2) % 3;
-      const float u0 = velocity[t0][i], u1 = velocity[t1][i];
-      const float speed = std::sqrt(u0 * u0 + u1 * u1);
-      if (speed == 0.0f)
-      {
-        continue;
-      }
-      // The particle's velocity is its layer's, centred half a spacing off the wall; one pressed
-      // closer is still measured there, so crowding against a wall does not inflate the stress.
-      const float y = std::max(distance, 0.5f * spacing);
-      const float ustar = TurbulentWallLaw::frictionVelocity(speed, y, nu);
-      const float keep = 1.0f / (1.0f + dt * ustar * ustar / (speed * spacing));
-      velocity[t0][i] = keep * u0;
-      velocity[t1][i] = keep * u1;
-    }
+    const float position[3] = { s.x[i], s.y[i], s.z[i] };
+    float velocity[3] = { s.vx[i], s.vy[i], s.vz[i] };
+    detail::brakeAtWalls(position, velocity, dt, walls);
+    s.vx[i] = velocity[0];
+    s.vy[i] = velocity[1];
+    s.vz[i] = velocity[2];
   }
 }
 } // namespace parafluid::sph

@@ -338,6 +338,19 @@ double CudaDeltaSimulation::step(double remaining)
   launchKick(this->arrays(), 0.5f * h, stream);
   launchDrift(this->arrays(), this->Walls, this->Mesh.view(), h, stream);
   this->sortByCell();
+  if (p.particleShifting)
+  {
+    // As the CPU's step: shifted by the speeds of now, then sorted again (finding the mesh walls anew).
+    launchMeasure(this->arrays(), p.restDensity, 0.0f, this->Partials.data(), this->Result.data(), stream);
+    ShiftConstants shift;
+    shift.inverseWSpacing = 1.0f / this->K.w.value(std::min(this->Spacing, 0.99f * p.smoothingLength));
+    shift.volume = p.particleMass / p.restDensity;
+    shift.limit = 0.2f * this->Spacing;
+    shift.margin = 0.01f * this->Spacing;
+    shift.twiceSupportDt = 2.0f * p.smoothingLength * h;
+    launchShift(this->arrays(), this->Grid, this->Walls, this->K, shift, this->Result.data(), stream);
+    this->sortByCell();
+  }
   launchContinuity(this->arrays(), this->Grid, this->Walls, this->K, stream);
   this->Fullness.swap(this->NextFullness);
   const float follow = p.densityDiffusion > 0.0f && this->SlowDepartureTime > 0.0
@@ -348,6 +361,10 @@ double CudaDeltaSimulation::step(double remaining)
   launchForces(this->arrays(), this->Grid, this->Walls, this->K, p.kinematicViscosity > 0.0f || p.viscosity > 0.0f,
                stream);
   launchKick(this->arrays(), 0.5f * h, stream);
+  if (p.wallFriction == WallFriction::LogLaw && h > 0.0f)
+  {
+    launchWallFriction(this->arrays(), detail::logLawWalls(p, this->Spacing), h, stream);
+  }
   this->HostFresh = false;
   this->measure(this->Accumulating ? h : 0.0f);
   this->Last.timeStep = dt;

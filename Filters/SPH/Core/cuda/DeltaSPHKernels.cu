@@ -5,6 +5,7 @@
 #include "private/DeltaSPHFreeSurface.h"
 #include "private/DeltaSPHMomentum.h"
 #include "private/DeltaSPHOwnImage.h"
+#include "private/DeltaSPHShift.h"
 #include "private/GradientCorrection.h"
 #include "private/ParticleDrift.h"
 #include "private/WallImages.h"
@@ -305,6 +306,82 @@ __global__ void __launch_bounds__(kThreads, kPairBlocksPerSM)
   a.az[i] = acc[2];
 }
 
+__global__ void wallFriction(DeltaArrays a, detail::LogLawWalls w, float dt)
+{
+  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= a.n)
+  {
+    return;
+  }
+  const float position[3] = { a.x[i], a.y[i], a.z[i] };
+  float velocity[3] = { a.vx[i], a.vy[i], a.vz[i] };
+  detail::brakeAtWalls(position, velocity, dt, w);
+  a.vx[i] = velocity[0];
+  a.vy[i] = velocity[1];
+  a.vz[i] = velocity[2];
+}
+
+__global__ void __launch_bounds__(kThreads, kPairBlocksPerSM)
+  shiftSums(DeltaArrays a, DeviceGrid g, DeviceWalls w, Constants k, ShiftConstants c, const StepMeasures* measured)
+{
+  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  const float fastest = sqrtf(measured->fastestSquared);
+  if (i >= a.n || fastest == 0.0f)
+  {
+    return;
+  }
+  const float position[3] = { a.x[i], a.y[i], a.z[i] };
+  float sum = 0.0f, gradient[3] = { 0, 0, 0 };
+  forEachQuery(position, position, w,
+               [&](const float* q, const float*, const float* scale, const float*, bool)
+               {
+                 float ws = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f;
+                 g.forEachNeighbour(position,
+                                    [&](std::uint32_t j, const float* shift)
+                                    {
+                                      const float dx = q[0] - (__ldg(a.x + j) + shift[0]),
+                                                  dy = q[1] - (__ldg(a.y + j) + shift[1]),
+                                                  dz = q[2] - (__ldg(a.z + j) + shift[2]);
+                                      const float rr = dx * dx + dy * dy + dz * dz;
+                                      if (!(rr < k.h2))
+                                      {
+                                        return;
+                                      }
+                                      const WendlandPair pair(k.w, sqrtf(rr));
+                                      const float weight = shiftingWeight(pair, c.inverseWSpacing);
+                                      ws += pair.value;
+                                      gx += weight * dx;
+                                      gy += weight * dy;
+                                      gz += weight * dz;
+                                    });
+                 sum += ws;
+                 gradient[0] += scale[0] * gx;
+                 gradient[1] += scale[1] * gy;
+                 gradient[2] += scale[2] * gz;
+               });
+  float shift[3];
+  particleShift(sum, gradient, c.volume, c.twiceSupportDt * fastest * c.volume, c.limit, shift);
+  for (int d = 0; d < 3; ++d)
+  {
+    a.push[static_cast<std::size_t>(d) * a.n + i] = shift[d];
+  }
+}
+
+__global__ void applyShift(DeltaArrays a, DeviceWalls w, ShiftConstants c, const StepMeasures* measured)
+{
+  const std::uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i >= a.n || measured->fastestSquared == 0.0f)
+  {
+    return;
+  }
+  float* position[3] = { a.x, a.y, a.z };
+  for (int d = 0; d < 3; ++d)
+  {
+    position[d][i] = shiftedCoordinate(position[d][i], a.push[static_cast<std::size_t>(d) * a.n + i], w.bounds[2 * d],
+                                       w.bounds[2 * d + 1], w.periodic[d], c.margin);
+  }
+}
+
 __device__ void combine(StepMeasures& into, const StepMeasures& m)
 {
   into.compression += m.compression;
@@ -461,6 +538,24 @@ void launchForces(const DeltaArrays& a, const DeviceGrid& grid, const DeviceWall
   else
     forces<false><<<blocksFor(a.n), kThreads, 0, stream>>>(a, grid, walls, k);
   checkLaunch("the force kernel");
+}
+
+void launchWallFriction(const DeltaArrays& a, const detail::LogLawWalls& walls, float dt, cudaStream_t stream)
+{
+  if (a.n == 0)
+    return;
+  wallFriction<<<blocksFor(a.n), kThreads, 0, stream>>>(a, walls, dt);
+  checkLaunch("the wall-friction kernel");
+}
+
+void launchShift(const DeltaArrays& a, const DeviceGrid& grid, const DeviceWalls& walls, const Constants& k,
+                 const ShiftConstants& shift, const StepMeasures* measured, cudaStream_t stream)
+{
+  if (a.n == 0)
+    return;
+  shiftSums<<<blocksFor(a.n), kThreads, 0, stream>>>(a, grid, walls, k, shift, measured);
+  applyShift<<<blocksFor(a.n), kThreads, 0, stream>>>(a, walls, shift, measured);
+  checkLaunch("the shifting kernels");
 }
 
 void launchMeasure(const DeltaArrays& a, float rho0, float weight, StepMeasures* partials, StepMeasures* result,

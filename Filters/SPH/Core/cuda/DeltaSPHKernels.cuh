@@ -5,6 +5,7 @@
 #include "cuda/DeviceGrid.cuh"
 #include "cuda/DeviceMesh.cuh"
 #include "private/DeltaSPHPairs.h"
+#include "private/LogLawFriction.h"
 
 #include <cuda_runtime.h>
 
@@ -67,6 +68,20 @@ void launchIntegrateDensity(const DeltaArrays& a, const delta::Constants& k, flo
 /// The accelerations (DeltaSPHForces.cxx); laminar: the fluid's viscosity is on.
 void launchForces(const DeltaArrays& a, const DeviceGrid& grid, const DeviceWalls& walls, const delta::Constants& k,
                   bool laminar, cudaStream_t stream);
+/// The law of the wall's braking near the box walls (detail::brakeAtWalls).
+void launchWallFriction(const DeltaArrays& a, const detail::LogLawWalls& walls, float dt, cudaStream_t stream);
+/// Particle shifting's constants (DeltaSPHSolver::shiftParticles): 1 / W(spacing), a particle's
+/// volume m / rho0 [m^3], the longest shift (0.2 spacings) and the walls' margin (0.01) [m], and
+/// 2 H dt [m s], which times the fastest speed and the volume gives the diffusion coefficient.
+struct ShiftConstants
+{
+  float inverseWSpacing, volume, limit, margin, twiceSupportDt;
+};
+/// Shifts each interior particle down its concentration gradient through the box's rules, with the
+/// fastest speed read from measured->fastestSquared (device memory; no shift when it is 0). a.push
+/// (3 n) holds the shifts meanwhile: the continuity pass that follows writes it anew.
+void launchShift(const DeltaArrays& a, const DeviceGrid& grid, const DeviceWalls& walls, const delta::Constants& k,
+                 const ShiftConstants& shift, const StepMeasures* measured, cudaStream_t stream);
 /// The measures into *result (device memory), `partials` room for kMeasureBlocks; impulse += weight p
 /// when weight > 0.
 constexpr int kMeasureBlocks = 1024;
