@@ -25,6 +25,7 @@
 #include "parafluid/sph/SPHSolver.h"
 
 #include "parafluid/common/Kernels.h"
+#include "private/AkinciTension.h"
 #include "private/AnyKernel.h"
 #include "private/NeighbourCandidates.h"
 
@@ -35,32 +36,12 @@
 namespace parafluid::sph
 {
 using detail::CandidateBuffer;
+using detail::CohesionKernel;
 using detail::forEachParticleByCell;
 using detail::threadCount;
 
 namespace
 {
-/// Akinci's cohesion kernel C(r) = 32 / (pi h^9) { (h - r)^3 r^3 for h/2 < r <= h;
-/// 2 (h - r)^3 r^3 - h^6 / 64 for 0 < r <= h/2 } (negative = repulsive at short range), with its
-/// constants taken out of the pair loop.
-struct CohesionKernel
-{
-  explicit CohesionKernel(float h)
-    : h(h)
-    , coefficient(static_cast<float>(32.0 / (kPi * std::pow(static_cast<double>(h), 9.0))))
-    , core(static_cast<float>(std::pow(static_cast<double>(h), 6.0) / 64.0))
-  {
-  }
-  /// C(r) for 0 <= r <= h (0 beyond); branch-free for the vectorised loop.
-  float operator()(float r) const
-  {
-    const float e = std::max(h - r, 0.0f);
-    const float d = e * e * e * r * r * r;
-    return coefficient * (r > 0.5f * h ? d : 2.0f * d - core);
-  }
-  float h, coefficient, core;
-};
-
 /// Simpson's rule of f over [a, b] with n (even) intervals.
 template<class F>
 double simpson(F&& f, double a, double b, int n)
@@ -143,6 +124,17 @@ double curvatureShare(DensityKernel kernel, float h, float m, float rho0, double
 }
 } // namespace
 
+float detail::akinciGamma(const SPHParameters& p)
+{
+  // Kirkwood-Buff with phi'(r) = gamma m^2 C(r) and n m = rho0: sigma = pi rho0^2 gamma I / 8,
+  // shared with the curvature term in proportion to their surface tensions per unit gamma.
+  const float h = p.smoothingLength, m = p.particleMass, rho0 = p.restDensity;
+  const double moment = cohesionMoment(h);
+  const double curvature =
+    p.surfaceTensionModel == SurfaceTensionModel::Akinci ? curvatureShare(p.densityKernel(), h, m, rho0, moment) : 0.0;
+  return static_cast<float>(8.0 * p.surfaceTension / (kPi * rho0 * rho0 * moment * (1.0 + curvature)));
+}
+
 void SPHSolver::computeSurfaceNormals()
 {
   ParticleState& s = this->State;
@@ -202,16 +194,12 @@ void SPHSolver::addSurfaceTension()
   const float h = p.smoothingLength;
   const float m = p.particleMass;
   const float rho0 = p.restDensity;
-  // Kirkwood-Buff with phi'(r) = gamma m^2 C(r) and n m = rho0: sigma = pi rho0^2 gamma I / 8,
-  // shared with the curvature term in proportion to their surface tensions per unit gamma
-  // (computed once for a set of parameters: the integrals cost as much as a small scene's pass).
+  // Computed once for a set of parameters: the integrals cost as much as a small scene's pass.
   const std::array<float, 6> key = { static_cast<float>(p.surfaceTensionModel), p.surfaceTension, h, m, rho0,
                                      static_cast<float>(p.densityKernel()) };
   if (key != this->AkinciGammaKey)
   {
-    const double moment = cohesionMoment(h);
-    const double curvature = withCurvature ? curvatureShare(p.densityKernel(), h, m, rho0, moment) : 0.0;
-    this->AkinciGamma = static_cast<float>(8.0 * p.surfaceTension / (kPi * rho0 * rho0 * moment * (1.0 + curvature)));
+    this->AkinciGamma = detail::akinciGamma(p);
     this->AkinciGammaKey = key;
   }
   const float gamma = this->AkinciGamma;

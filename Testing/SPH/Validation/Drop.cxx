@@ -37,7 +37,7 @@ double elongation(const ParticleState& s)
 } // namespace
 
 Drop oscillatingDrop(PressureSolverType solver, int across, std::ostream* curves, sph::SurfaceTensionModel model,
-                     double stretch, double duration)
+                     double stretch, double duration, sph::Backend backend)
 {
   const double radius = 2.5e-3, spacing = radius / across;
   const auto box = static_cast<float>(4.0 * radius);
@@ -64,18 +64,19 @@ Drop oscillatingDrop(PressureSolverType solver, int across, std::ostream* curves
   const double r0 = std::cbrt(3.0 * volume / (4.0 * kPi));
   Drop r;
   r.rayleigh = 2.0 * kPi / std::sqrt(8.0 * kWaterSurfaceTension / (kRho0 * r0 * r0 * r0));
-  sph::SPHSolver s(p, ParticleState::atRest(std::move(x), std::move(y), std::move(z)));
-  r.cost.particles = static_cast<long long>(s.state().size());
+  const auto s =
+    sph::makeSimulation(p, ParticleState::atRest(std::move(x), std::move(y), std::move(z)), nullptr, backend);
+  r.cost.particles = static_cast<long long>(s->particleCount());
   // The period from the zero crossings of the elongation, read every 0.2 ms (1/160 of a period).
   const double dt = 2e-4;
   std::vector<double> crossings;
-  double previous = elongation(s.state());
+  double previous = elongation(s->hostState());
   const SceneTimer timer;
   for (int k = 1; k * dt <= duration + 1e-9; ++k)
   {
-    r.cost.steps += s.advance(dt);
-    r.largestDensity = std::max(r.largestDensity, static_cast<double>(s.lastStep().maxDensityRatio));
-    const double now = elongation(s.state());
+    r.cost.steps += s->advance(dt);
+    r.largestDensity = std::max(r.largestDensity, static_cast<double>(s->lastStep().maxDensityRatio));
+    const double now = elongation(s->hostState());
     if (curves)
     {
       *curves << solverName(solver) << "," << across << "," << k * dt << "," << now << "\n";

@@ -8,6 +8,7 @@
 #include "parafluid/common/ParticleState.h"
 #include "parafluid/sph/DeltaSPHSolver.h"
 #include "parafluid/sph/SPHParameters.h"
+#include "parafluid/sph/Simulation.h"
 
 #include <array>
 #include <ostream>
@@ -170,5 +171,5 @@ struct Drop
 };
 Drop oscillatingDrop(sph::PressureSolverType solver, int across, std::ostream* curves = nullptr,
                      sph::SurfaceTensionModel model = sph::SurfaceTensionModel::Akinci, double stretch = 0.1,
-                     double duration = 0.1);
+                     double duration = 0.1, sph::Backend backend = sph::Backend::CPU);
 } // namespace parafluid::validation

@@ -56,6 +56,15 @@ CudaDeltaSimulation::CudaDeltaSimulation(const SPHParameters& parameters, Partic
   {
     this->Walls.gravity[a] = p.gravity[a];
   }
+  if (p.surfaceTension > 0.0f)
+  {
+    this->Tension = AkinciConstants{ detail::CohesionKernel(p.smoothingLength),
+                                     WendlandC2Kernel(p.smoothingLength),
+                                     p.particleMass,
+                                     p.restDensity,
+                                     detail::akinciGamma(p),
+                                     p.surfaceTensionModel == SurfaceTensionModel::Akinci };
+  }
   const bool mesh = boundary && boundary->triangleCount() > 0;
   this->MeshWall = mesh && p.meshWallDensity && solverEntry(PressureSolverType::DeltaSPH).meshWallInSums;
   requireDeviceMemory(initial.size() * this->bytesNeededPerParticle(), std::to_string(initial.size()) + " particles");
@@ -226,8 +235,7 @@ void CudaDeltaSimulation::start(ParticleState s, std::vector<float> fullness, st
   launchIntegrateDensity(a, this->K, 0.0f, 0.0f, bulk, stream); // the pressure from the start's density
   launchContinuity(a, this->Grid, this->Walls, this->K, stream);
   this->Fullness.swap(this->NextFullness);
-  launchForces(this->arrays(), this->Grid, this->Walls, this->K, p.kinematicViscosity > 0.0f || p.viscosity > 0.0f,
-               stream);
+  this->accelerations();
   this->measure(0.0f);
 }
 
@@ -315,6 +323,17 @@ void CudaDeltaSimulation::sortByCell()
   }
 }
 
+void CudaDeltaSimulation::accelerations()
+{
+  const SPHParameters& p = this->Parameters;
+  launchForces(this->arrays(), this->Grid, this->Walls, this->K, p.kinematicViscosity > 0.0f || p.viscosity > 0.0f,
+               this->Stream);
+  if (this->Tension)
+  {
+    launchAkinciTension(this->arrays(), this->Grid, *this->Tension, this->Stream);
+  }
+}
+
 std::size_t CudaDeltaSimulation::bytesNeededPerParticle() const
 {
   return kBytesPerParticle + (this->MeshWall ? kMeshWallBytesPerParticle : 0);
@@ -358,8 +377,7 @@ double CudaDeltaSimulation::step(double remaining)
                          : 0.0f;
   const auto bulk = static_cast<float>(this->SoundSpeed * this->SoundSpeed * p.restDensity / delta::kGamma);
   launchIntegrateDensity(this->arrays(), this->K, h, follow, bulk, stream);
-  launchForces(this->arrays(), this->Grid, this->Walls, this->K, p.kinematicViscosity > 0.0f || p.viscosity > 0.0f,
-               stream);
+  this->accelerations();
   launchKick(this->arrays(), 0.5f * h, stream);
   if (p.wallFriction == WallFriction::LogLaw && h > 0.0f)
   {

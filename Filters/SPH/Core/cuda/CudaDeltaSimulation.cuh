@@ -6,7 +6,10 @@
 #include "cuda/DeltaSPHKernels.cuh"
 #include "cuda/DeviceBuffer.h"
 #include "cuda/DeviceMesh.cuh"
+#include "cuda/SurfaceTensionKernels.cuh"
 #include "parafluid/sph/Simulation.h"
+
+#include <optional>
 
 namespace parafluid::sph::cuda
 {
@@ -50,6 +53,8 @@ private:
   double step(double remaining);
   /// Sorts the state by cell and finds each particle's mesh wall where it now is.
   void sortByCell();
+  /// The accelerations of the state as it is: the force pass, then the surface tension.
+  void accelerations();
   /// The measures of the state into Measures and Last (impulse += weight p first).
   void measure(float weight);
   void checkStep() const;
@@ -77,8 +82,9 @@ private:
   DeviceBuffer<std::int64_t> Id, IdScratch;
   DeviceBuffer<std::uint32_t> Index, IndexScratch;
   DeviceBuffer<StepMeasures> Partials, Result;
-  DeviceMesh Mesh;       // triangleCount 0: no boundary mesh
-  bool MeshWall = false; // the mesh's wall is in the sums (SPHParameters::meshWallDensity)
+  DeviceMesh Mesh;                        // triangleCount 0: no boundary mesh
+  bool MeshWall = false;                  // the mesh's wall is in the sums (SPHParameters::meshWallDensity)
+  std::optional<AkinciConstants> Tension; // SPHParameters::surfaceTension > 0
   DeviceBuffer<float> WallDistance, WallNormal, WallSum;
   DeviceBuffer<std::uint32_t> WallTriangle;
   StepMeasures* Pinned = nullptr; // Gpu.pinned

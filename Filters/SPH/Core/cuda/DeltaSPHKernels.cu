@@ -336,24 +336,16 @@ __global__ void __launch_bounds__(kThreads, kPairBlocksPerSM)
                [&](const float* q, const float*, const float* scale, const float*, bool)
                {
                  float ws = 0.0f, gx = 0.0f, gy = 0.0f, gz = 0.0f;
-                 g.forEachNeighbour(position,
-                                    [&](std::uint32_t j, const float* shift)
-                                    {
-                                      const float dx = q[0] - (__ldg(a.x + j) + shift[0]),
-                                                  dy = q[1] - (__ldg(a.y + j) + shift[1]),
-                                                  dz = q[2] - (__ldg(a.z + j) + shift[2]);
-                                      const float rr = dx * dx + dy * dy + dz * dz;
-                                      if (!(rr < k.h2))
-                                      {
-                                        return;
-                                      }
-                                      const WendlandPair pair(k.w, sqrtf(rr));
-                                      const float weight = shiftingWeight(pair, c.inverseWSpacing);
-                                      ws += pair.value;
-                                      gx += weight * dx;
-                                      gy += weight * dy;
-                                      gz += weight * dz;
-                                    });
+                 g.forEachWithin(a.x, a.y, a.z, position, q, k.h2,
+                                 [&](std::uint32_t, const float* d, float rr)
+                                 {
+                                   const WendlandPair pair(k.w, sqrtf(rr));
+                                   const float weight = shiftingWeight(pair, c.inverseWSpacing);
+                                   ws += pair.value;
+                                   gx += weight * d[0];
+                                   gy += weight * d[1];
+                                   gz += weight * d[2];
+                                 });
                  sum += ws;
                  gradient[0] += scale[0] * gx;
                  gradient[1] += scale[1] * gy;

@@ -7,6 +7,17 @@
 
 namespace parafluid::sph::cuda
 {
+/// d = q - (x_j + shift), the offset from neighbour j (shifted by forEachNeighbour's periodic
+/// shift) to the query q; returns |d|^2.
+__device__ inline float offsetFrom(const float* x, const float* y, const float* z, std::uint32_t j, const float* shift,
+                                   const float q[3], float d[3])
+{
+  d[0] = q[0] - (__ldg(x + j) + shift[0]);
+  d[1] = q[1] - (__ldg(y + j) + shift[1]);
+  d[2] = q[2] - (__ldg(z + j) + shift[2]);
+  return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+}
+
 struct DeviceGrid
 {
   float origin[3];      // the lower corner of cell (0, 0, 0) [m]
@@ -37,6 +48,24 @@ struct DeviceGrid
   __device__ std::uint32_t cellOf(float x, float y, float z) const
   {
     return index(coordinate(0, x), coordinate(1, y), coordinate(2, z));
+  }
+
+  /// f(j, d, r^2) for each particle j within sqrt(h2) of q (d = q - x_j, periodic images
+  /// shifted), among the particles around `around` (forEachNeighbour).
+  template<class F>
+  __device__ void forEachWithin(const float* x, const float* y, const float* z, const float around[3], const float q[3],
+                                float h2, F&& f) const
+  {
+    this->forEachNeighbour(around,
+                           [&](std::uint32_t j, const float* shift)
+                           {
+                             float d[3];
+                             const float rr = offsetFrom(x, y, z, j, shift, q, d);
+                             if (rr < h2)
+                             {
+                               f(j, d, rr);
+                             }
+                           });
   }
 
   /// f(j, shift) for every particle j of the cells within the support radius of position p (a
