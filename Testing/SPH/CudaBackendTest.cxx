@@ -12,6 +12,10 @@
 
 #include <gtest/gtest.h>
 
+#if PARAFLUID_TEST_CUDA
+#include <cuda_runtime.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -610,6 +614,85 @@ TEST(CudaBackend, AddsAndRemovesParticlesAsTheCpuDoes)
   EXPECT_EQ(cpu->particleCount(), gpu->particleCount());
   EXPECT_LE(largestDisplacement(cpu->hostState(), gpu->hostState()), 1e-5);
 }
+
+#if PARAFLUID_TEST_CUDA
+/// Takes all but `left` bytes of the GPU's free memory while it lives.
+struct GpuMemoryFiller
+{
+  void* block = nullptr;
+  explicit GpuMemoryFiller(std::size_t left)
+  {
+    std::size_t free = 0, total = 0;
+    if (cudaMemGetInfo(&free, &total) == cudaSuccess && free > left)
+    {
+      if (cudaMalloc(&block, free - left) != cudaSuccess)
+      {
+        cudaGetLastError();
+        block = nullptr;
+      }
+    }
+  }
+  ~GpuMemoryFiller() { cudaFree(block); }
+};
+
+TEST(CudaBackend, RunningOutOfGpuMemoryIsAnErrorWithTheBytesAndLosesNothing)
+{
+  PARAFLUID_NEEDS_GPU();
+  const SPHParameters p = tank();
+  const auto gpu = makeSimulation(p, column(), nullptr, Backend::CUDA);
+  gpu->advance(0.01);
+  const ParticleState before = gpu->hostState();
+  std::vector<float> x, y, z, v;
+  for (int k = 0; k < 200000; ++k)
+  {
+    x.push_back(1.0f + 0.005f * (k % 200));
+    y.push_back(0.01f + 0.005f * ((k / 200) % 40));
+    z.push_back(0.05f + 0.005f * (k / 8000));
+    v.push_back(0.0f);
+  }
+  const double bytes = gpu->bytesPerParticle() * static_cast<double>(x.size());
+  for (double left : { 0.25, 1.0 })
+  {
+    // A quarter of what the added particles take (refused before anything changes), then about
+    // what they take (refused part way, or added).
+    const GpuMemoryFiller filler(static_cast<std::size_t>(left * bytes));
+    ASSERT_NE(filler.block, nullptr) << "could not fill the GPU's memory";
+    try
+    {
+      gpu->addParticles(x, y, z, v, v, v);
+      EXPECT_EQ(left, 1.0) << "200000 particles were added in a quarter of their memory";
+      EXPECT_EQ(gpu->particleCount(), before.size() + x.size());
+      std::cout << "with the memory they take left free, the particles were added\n";
+      break;
+    }
+    catch (const std::runtime_error& error)
+    {
+      const std::string text = error.what();
+      EXPECT_NE(text.find("bytes"), std::string::npos) << text;
+      EXPECT_NE(text.find("free"), std::string::npos) << text;
+      std::cout << "refused with " << left << " of the memory free: " << text << "\n";
+      const ParticleState& after = gpu->hostState();
+      ASSERT_EQ(after.size(), before.size());
+      EXPECT_LE(largestDisplacement(before, after), 0.0);
+    }
+  }
+  EXPECT_GT(gpu->advance(0.01), 0) << "the simulation goes on after running out of memory";
+  // A scene larger than the GPU's free memory is refused before any allocation.
+  auto lattice = fillBoxWithLattice({ 0, 0.2, 0, 0.25, 0, 0.2 }, 0.5 * kSpacing);
+  const ParticleState large = ParticleState::atRest(std::move(lattice.x), std::move(lattice.y), std::move(lattice.z));
+  const GpuMemoryFiller filler(static_cast<std::size_t>(0.5 * gpu->bytesPerParticle() * large.size()));
+  ASSERT_NE(filler.block, nullptr) << "could not fill the GPU's memory";
+  try
+  {
+    makeSimulation(p, large, nullptr, Backend::CUDA);
+    FAIL() << "a simulation was made in half the memory it needs";
+  }
+  catch (const std::runtime_error& error)
+  {
+    EXPECT_NE(std::string(error.what()).find("bytes of GPU memory"), std::string::npos) << error.what();
+  }
+}
+#endif
 
 TEST(CudaBackend, TwoThousandStepsWithoutNaNOrLostParticles)
 {

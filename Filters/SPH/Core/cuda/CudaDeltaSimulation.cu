@@ -502,9 +502,65 @@ void CudaDeltaSimulation::addParticles(const std::vector<float>& x, const std::v
   const std::size_t added = appendParticles(s, x, y, z, vx, vy, vz, this->Parameters.restDensity);
   // Added particles have full neighbourhoods until the next continuity pass says otherwise, and a
   // slow departure that the start takes from where they are (DeltaSPHSolver::resize).
+  std::vector<float> fullnessBefore(fullness.begin(), fullness.begin() + n), slowBefore(slow.begin(), slow.begin() + n);
   fullness.resize(n + added, 1.0f);
   slow.resize(n + added, kNone);
-  this->start(std::move(s), std::move(fullness), std::move(slow));
+  this->restartKeeping(std::move(s), std::move(fullness), std::move(slow), std::move(fullnessBefore),
+                       std::move(slowBefore));
+}
+
+void CudaDeltaSimulation::restartKeeping(ParticleState s, std::vector<float> fullness, std::vector<float> slow,
+                                         std::vector<float> fullnessBefore, std::vector<float> slowBefore)
+{
+  // The state before, from the host copy (the GPU's arrays are remade on a restart).
+  ParticleState before = this->hostState();
+  try
+  {
+    this->start(std::move(s), std::move(fullness), std::move(slow));
+  }
+  catch (const std::exception&)
+  {
+    // The GPU ran out of memory (or failed) part way: the simulation goes on from where it was,
+    // in the memory it had, and the caller hears why the change failed.
+    this->releaseArrays();
+    this->start(std::move(before), std::move(fullnessBefore), std::move(slowBefore));
+    throw;
+  }
+}
+
+void CudaDeltaSimulation::releaseArrays()
+{
+  for (auto* buffer : { &this->X,
+                        &this->Y,
+                        &this->Z,
+                        &this->VX,
+                        &this->VY,
+                        &this->VZ,
+                        &this->AX,
+                        &this->AY,
+                        &this->AZ,
+                        &this->Rho,
+                        &this->P,
+                        &this->Rate,
+                        &this->Fullness,
+                        &this->NextFullness,
+                        &this->Slow,
+                        &this->Correction,
+                        &this->Push,
+                        &this->Interior,
+                        &this->Impulse,
+                        &this->Scratch,
+                        &this->WallDistance,
+                        &this->WallNormal,
+                        &this->WallSum })
+  {
+    buffer->release();
+  }
+  this->Id.release();
+  this->IdScratch.release();
+  this->Index.release();
+  this->IndexScratch.release();
+  this->WallTriangle.release();
 }
 
 std::size_t CudaDeltaSimulation::removeParticles(const std::vector<std::uint8_t>& remove)
@@ -546,8 +602,11 @@ std::size_t CudaDeltaSimulation::removeParticles(const std::vector<std::uint8_t>
   }
   // As the CPU's restart after a removal: every neighbourhood counts as full, every slow
   // departure starts where the particle is.
+  std::vector<float> fullnessBefore, slowBefore;
+  this->downloadSolverState(fullnessBefore, slowBefore);
   const std::size_t m = kept.size();
-  this->start(std::move(kept), std::vector<float>(m, 1.0f), std::vector<float>(m, kNone));
+  this->restartKeeping(std::move(kept), std::vector<float>(m, 1.0f), std::vector<float>(m, kNone),
+                       std::move(fullnessBefore), std::move(slowBefore));
   return removed;
 }
 

@@ -50,6 +50,11 @@ private:
   /// sound speed, density (hydrostatic unless s has one), pressures and accelerations
   /// (DeltaSPHSolver::start).
   void start(ParticleState s, std::vector<float> fullness, std::vector<float> slow);
+  /// start() with s, or, when that fails (the GPU's memory ran out part way), start() again from
+  /// the state before (in the memory it had) and rethrow: a failed add or removal loses nothing.
+  void restartKeeping(ParticleState s, std::vector<float> fullness, std::vector<float> slow,
+                      std::vector<float> fullnessBefore, std::vector<float> slowBefore);
+  void releaseArrays();
   double step(double remaining);
   /// Sorts the state by cell and finds each particle's mesh wall where it now is.
   void sortByCell();

@@ -58,17 +58,32 @@ std::string cudaDeviceName()
 
 namespace cuda
 {
+namespace
+{
+[[noreturn]] void outOfMemory(std::size_t bytes, const std::string& what, std::size_t freeBytes, std::size_t totalBytes)
+{
+  throw std::runtime_error("SPH (CUDA): " + what + " needs " + std::to_string(bytes) +
+                           " bytes of GPU memory, and the " + cudaDeviceName() + " has " + std::to_string(freeBytes) +
+                           " bytes free (of " + std::to_string(totalBytes) +
+                           "): choose Backend CPU, or fewer particles");
+}
+} // namespace
+
 void requireDeviceMemory(std::size_t bytes, const std::string& what)
 {
   std::size_t freeBytes = 0, totalBytes = 0;
   check(cudaMemGetInfo(&freeBytes, &totalBytes), "asking the GPU's free memory");
   if (bytes > freeBytes)
   {
-    throw std::runtime_error("SPH (CUDA): " + what + " needs " + std::to_string(bytes) +
-                             " bytes of GPU memory, and the " + cudaDeviceName() + " has " + std::to_string(freeBytes) +
-                             " bytes free (of " + std::to_string(totalBytes) +
-                             "): choose Backend CPU, or fewer particles");
+    outOfMemory(bytes, what, freeBytes, totalBytes);
   }
+}
+
+void reportFailedAllocation(std::size_t bytes, const std::string& what)
+{
+  std::size_t freeBytes = 0, totalBytes = 0;
+  cudaMemGetInfo(&freeBytes, &totalBytes);
+  outOfMemory(bytes, what, freeBytes, totalBytes);
 }
 } // namespace cuda
 } // namespace parafluid::sph

@@ -11,6 +11,9 @@ namespace parafluid::sph::cuda
 {
 /// Throws std::runtime_error naming `bytes` and the GPU's free memory when `bytes` more do not fit.
 void requireDeviceMemory(std::size_t bytes, const std::string& what);
+/// Throws std::runtime_error naming `bytes` and the GPU's free memory after cudaMalloc could not
+/// get them (the free memory may lie in pieces smaller than that).
+[[noreturn]] void reportFailedAllocation(std::size_t bytes, const std::string& what);
 
 template<class T>
 class DeviceBuffer
@@ -40,7 +43,7 @@ public:
     if (status == cudaErrorMemoryAllocation)
     {
       cudaGetLastError(); // an allocation failure is not sticky; clear it for the next call
-      requireDeviceMemory(n * sizeof(T), "an array");
+      reportFailedAllocation(n * sizeof(T), "an array");
     }
     check(status, "cudaMalloc");
     this->Data = static_cast<T*>(p);
