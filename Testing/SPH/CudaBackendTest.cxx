@@ -306,6 +306,32 @@ TEST(CudaBackend, AkinciDropOscillatesAtRayleighsFrequencyAsOnTheCpu)
   EXPECT_LT(gpu.largestDensity, 1.05) << "no clumps";
 }
 
+TEST(CudaBackend, HydrostaticColumnAsOnTheCpu)
+{
+  // The CPU suite's column (SPHValidation.HydrostaticPressure, δ-SPH at 20 across) on the GPU: its
+  // smoothed pressure against rho g (H - z), the 1 %.
+  PARAFLUID_NEEDS_GPU();
+  const validation::Hydrostatic cpu = validation::hydrostatic(PressureSolverType::DeltaSPH, 20);
+  const validation::Hydrostatic gpu = validation::hydrostatic(PressureSolverType::DeltaSPH, 20, nullptr, Backend::CUDA);
+  std::cout << "hydrostatic column: relative L2 error " << cpu.error << " / " << gpu.error << " (CPU / GPU)\n";
+  EXPECT_LT(gpu.error, 0.01);
+  EXPECT_NEAR(gpu.error, cpu.error, 0.1 * cpu.error);
+}
+
+TEST(CudaBackend, StandingWaveFrequencyAsOnTheCpu)
+{
+  // The CPU suite's sloshing mode (SPHValidation.StandingWaveFrequency) on the GPU: within 1 % of
+  // omega^2 = g k tanh(k h).
+  PARAFLUID_NEEDS_GPU();
+  const validation::StandingWave cpu = validation::standingWave(PressureSolverType::DeltaSPH, 10);
+  const validation::StandingWave gpu =
+    validation::standingWave(PressureSolverType::DeltaSPH, 10, nullptr, Backend::CUDA);
+  std::cout << "standing wave: omega " << cpu.frequency << " / " << gpu.frequency << " (CPU / GPU), exact " << gpu.exact
+            << "\n";
+  EXPECT_LT(gpu.frequencyError, 0.01);
+  EXPECT_NEAR(gpu.frequency, cpu.frequency, 0.002 * cpu.frequency);
+}
+
 TEST(CudaBackend, MatchesTheCpuOnAMeshFloorWithAnObstacle)
 {
   // Ten fixed steps (the mesh wall's density and push on every particle of the bottom layers),
@@ -694,13 +720,13 @@ TEST(CudaBackend, RunningOutOfGpuMemoryIsAnErrorWithTheBytesAndLosesNothing)
 }
 #endif
 
-TEST(CudaBackend, TwoThousandStepsWithoutNaNOrLostParticles)
+TEST(CudaBackend, TenThousandStepsWithoutNaNOrLostParticles)
 {
   PARAFLUID_NEEDS_GPU();
   const SPHParameters p = tank();
   const ParticleState start = column();
   const auto gpu = makeSimulation(p, start, nullptr, Backend::CUDA);
-  while (gpu->stepCount() < 2000)
+  while (gpu->stepCount() < 10000)
   {
     gpu->advance(0.05);
   }

@@ -118,7 +118,7 @@ Poiseuille poiseuille(PressureSolverType solver, int across, std::ostream* curve
   return r;
 }
 
-StandingWave standingWave(PressureSolverType solver, int across, std::ostream* curves)
+StandingWave standingWave(PressureSolverType solver, int across, std::ostream* curves, sph::Backend backend)
 {
   const float L = 1.0f, h = 0.5f, A = 0.01f;
   const float d = h / static_cast<float>(across);
@@ -133,30 +133,31 @@ StandingWave standingWave(PressureSolverType solver, int across, std::ostream* c
     state.vx[i] = static_cast<float>(-A * omega * std::cosh(k * z) / std::sinh(k * h) * std::sin(k * x));
     state.vz[i] = static_cast<float>(A * omega * std::sinh(k * z) / std::sinh(k * h) * std::cos(k * x));
   }
-  SPHSolver s(water(solver, d, { 0.0f, L, 0.0f, 4 * d, 0.0f, 2.0f * h }), std::move(state));
+  const auto s =
+    sph::makeSimulation(water(solver, d, { 0.0f, L, 0.0f, 4 * d, 0.0f, 2.0f * h }), std::move(state), nullptr, backend);
   StandingWave r;
-  r.cost.particles = static_cast<long long>(s.state().size());
+  r.cost.particles = static_cast<long long>(s->hostState().size());
   r.exact = omega;
   auto centre = [&]()
   {
     double sum = 0.0;
-    for (float x : s.state().x)
+    for (float x : s->hostState().x)
     {
       sum += x;
     }
-    return sum / static_cast<double>(s.state().size()) - 0.5 * L;
+    return sum / static_cast<double>(s->hostState().size()) - 0.5 * L;
   };
   const SceneTimer timer;
   const double interval = 0.005, end = 2.5 * 2.0 * kPi / omega; // two and a half periods
   std::vector<double> times, centres;
-  while (s.time() < end - 1e-12)
+  while (s->time() < end - 1e-12)
   {
-    r.cost.steps += s.advance(interval);
-    times.push_back(s.time());
+    r.cost.steps += s->advance(interval);
+    times.push_back(s->time());
     centres.push_back(centre());
     if (curves)
     {
-      *curves << solverName(solver) << "," << across << "," << s.time() << "," << centres.back() << "\n";
+      *curves << solverName(solver) << "," << across << "," << s->time() << "," << centres.back() << "\n";
     }
   }
   // Zero crossings with hysteresis: a crossing counts only after the signal went beyond a third of

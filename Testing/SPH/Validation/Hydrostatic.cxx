@@ -19,15 +19,15 @@ namespace
 {
 /// Relative L2 error of the given per-id pressures against rho0 g (surface - z), split by depth
 /// layers one spacing thick (splitErrorByDepth).
-ErrorByDepth hydrostaticError(const SPHSolver& s, const std::vector<double>& pressureById, double surface,
+ErrorByDepth hydrostaticError(const ParticleState& s, const std::vector<double>& pressureById, double surface,
                               double spacing, std::ostream* profile, const char* solver, int across)
 {
-  const std::size_t n = s.state().size();
+  const std::size_t n = s.size();
   std::vector<double> z(n), value(n), reference(n);
   for (std::size_t i = 0; i < n; ++i)
   {
-    const auto id = static_cast<std::size_t>(s.state().id[i]);
-    z[i] = s.state().z[i];
+    const auto id = static_cast<std::size_t>(s.id[i]);
+    z[i] = s.z[i];
     value[i] = pressureById[id];
     reference[i] = kRho0 * kGravity * (surface - z[i]);
     if (profile)
@@ -81,30 +81,31 @@ ErrorByDepth splitErrorByDepth(const std::vector<double>& z, const std::vector<d
   return r;
 }
 
-Hydrostatic hydrostatic(PressureSolverType solver, int across, std::ostream* profile)
+Hydrostatic hydrostatic(PressureSolverType solver, int across, std::ostream* profile, sph::Backend backend)
 {
   const float width = 0.2f, height = 0.2f;
   const float d = width / static_cast<float>(across);
   const std::array<float, 6> domain = { 0.0f, width, 0.0f, 4 * d, 0.0f, 2.0f * height };
-  SPHSolver s(water(solver, d, domain), lattice({ 0, width, 0, 4 * d, 0, height }, d));
+  const auto s =
+    sph::makeSimulation(water(solver, d, domain), lattice({ 0, width, 0, 4 * d, 0, height }, d), nullptr, backend);
   Hydrostatic r;
-  r.cost.particles = static_cast<long long>(s.state().size());
+  r.cost.particles = static_cast<long long>(s->particleCount());
   const SceneTimer timer;
-  r.cost.steps += s.advance(0.4);
-  std::vector<double> sum(s.state().size(), 0.0); // by id: the state is reordered every step
+  r.cost.steps += s->advance(0.4);
+  std::vector<double> sum(s->particleCount(), 0.0); // by id: the state is reordered every step
   const int samples = 40;
   for (int k = 0; k < samples; ++k)
   {
-    r.cost.steps += s.advance(0.005);
-    r.compression += s.lastStep().meanCompression / samples;
-    const std::vector<float> pressure = s.smoothedPressure(); // what SPH Step outputs as "pressure"
+    r.cost.steps += s->advance(0.005);
+    r.compression += s->lastStep().meanCompression / samples;
+    const std::vector<float> pressure = s->smoothedPressure(); // what SPH Step outputs as "pressure"
     for (std::size_t i = 0; i < pressure.size(); ++i)
     {
-      sum[static_cast<std::size_t>(s.state().id[i])] += pressure[i] / samples;
+      sum[static_cast<std::size_t>(s->hostState().id[i])] += pressure[i] / samples;
     }
   }
   r.cost.seconds = timer.seconds();
-  const ErrorByDepth error = hydrostaticError(s, sum, height, d, profile, solverName(solver), across);
+  const ErrorByDepth error = hydrostaticError(s->hostState(), sum, height, d, profile, solverName(solver), across);
   r.error = error.total;
   r.layerMeanError = error.layerMean;
   r.withinLayerError = error.withinLayer;
@@ -160,7 +161,7 @@ StillWater stillWater(PressureSolverType solver, int across, double duration)
   {
     byId[static_cast<std::size_t>(st.id[i])] = pressure[i];
   }
-  r.pressureError = hydrostaticError(s, byId, depth, d, nullptr, solverName(solver), across).total;
+  r.pressureError = hydrostaticError(s.state(), byId, depth, d, nullptr, solverName(solver), across).total;
   return r;
 }
 } // namespace parafluid::validation

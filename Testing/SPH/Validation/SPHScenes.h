@@ -70,7 +70,8 @@ struct ErrorByDepth
 /// Layers are z / spacing rounded down; z, value and reference are per particle, of one length.
 ErrorByDepth splitErrorByDepth(const std::vector<double>& z, const std::vector<double>& value,
                                const std::vector<double>& reference, double spacing);
-Hydrostatic hydrostatic(sph::PressureSolverType solver, int across, std::ostream* profile = nullptr);
+Hydrostatic hydrostatic(sph::PressureSolverType solver, int across, std::ostream* profile = nullptr,
+                        sph::Backend backend = sph::Backend::CPU);
 
 /// A tank 0.5 m deep (and as long) left at rest for `duration` seconds.
 struct StillWater
@@ -153,7 +154,8 @@ struct StandingWave
   double frequency = 0.0, exact = 0.0;
   double frequencyError = 0.0; // relative
 };
-StandingWave standingWave(sph::PressureSolverType solver, int across, std::ostream* curves = nullptr);
+StandingWave standingWave(sph::PressureSolverType solver, int across, std::ostream* curves = nullptr,
+                          sph::Backend backend = sph::Backend::CPU);
 
 /// A weightless water drop of radius 2.5 mm, `across` particles over its radius, stretched by
 /// `stretch` along x (volume kept) and let go: the period of its l = 2 oscillation, from the zero
