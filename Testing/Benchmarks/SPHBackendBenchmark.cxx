@@ -40,10 +40,10 @@ std::shared_ptr<const TriangleBoundary> obstacle()
   return std::make_shared<TriangleBoundary>(std::move(points), std::move(triangles));
 }
 
-Row run(double spacing, Backend backend, int steps)
+Row run(PressureSolverType solver, double spacing, Backend backend, int steps)
 {
   SPHParameters p;
-  p.pressureSolver = PressureSolverType::DeltaSPH;
+  p.pressureSolver = solver;
   p.smoothingLength = defaultSmoothingLength(solverEntry(p.pressureSolver), spacing, 0.0);
   p.particleMass = latticeParticleMass(spacing, p.smoothingLength, p.restDensity, p.densityKernel());
   p.domainBounds = { 0, 3.22f, 0, 1.0f, 0, 1.0f };
@@ -73,9 +73,26 @@ Row run(double spacing, Backend backend, int steps)
 int main(int argc, char** argv)
 {
   std::vector<double> spacings;
+  std::vector<PressureSolverType> solvers;
   for (int a = 1; a < argc; ++a)
   {
+    const std::string argument = argv[a];
+    if (argument.rfind("--solver=", 0) == 0)
+    {
+      const SolverEntry* entry = findSolver(argument.substr(9));
+      if (!entry)
+      {
+        std::fprintf(stderr, "unknown solver %s (DeltaSPH, WCSPH, DFSPH)\n", argument.c_str());
+        return 2;
+      }
+      solvers.push_back(entry->type);
+      continue;
+    }
     spacings.push_back(std::atof(argv[a]));
+  }
+  if (solvers.empty())
+  {
+    solvers = { PressureSolverType::DeltaSPH };
   }
   if (spacings.empty())
   {
@@ -85,27 +102,29 @@ int main(int argc, char** argv)
   const bool gpu = cudaBackendUsable(&why);
   std::printf("# CPU threads: %u; GPU: %s\n", std::thread::hardware_concurrency(),
               gpu ? cudaDeviceName().c_str() : ("none (" + why + ")").c_str());
-  std::printf("backend,spacing_m,particles,steps_per_s,particle_steps_per_s,bytes_per_particle,simulated_s_per_hour\n");
-  for (double spacing : spacings)
-  {
-    for (Backend backend : { Backend::CPU, Backend::CUDA })
+  std::printf(
+    "solver,backend,spacing_m,particles,steps_per_s,particle_steps_per_s,bytes_per_particle,simulated_s_per_hour\n");
+  for (PressureSolverType solver : solvers)
+    for (double spacing : spacings)
     {
-      if (backend == Backend::CUDA && !gpu)
+      for (Backend backend : { Backend::CPU, Backend::CUDA })
       {
-        continue;
+        if (backend == Backend::CUDA && !gpu)
+        {
+          continue;
+        }
+        const bool large = 1.228 * 0.55 / (spacing * spacing * spacing) > 2.0e6;
+        if (backend == Backend::CPU && large)
+        {
+          continue;
+        }
+        const int steps = backend == Backend::CUDA ? 200 : (spacing < 0.01 ? 5 : 20);
+        const Row r = run(solver, spacing, backend, steps);
+        std::printf("%s,%s,%g,%zu,%.1f,%.4g,%.1f,%.1f\n", solverEntry(solver).key,
+                    backend == Backend::CUDA ? "CUDA" : "CPU", spacing, r.particles, r.stepsPerSecond,
+                    r.stepsPerSecond * static_cast<double>(r.particles), r.bytesPerParticle, r.simulatedSecondsPerHour);
+        std::fflush(stdout);
       }
-      const bool large = 1.228 * 0.55 / (spacing * spacing * spacing) > 2.0e6;
-      if (backend == Backend::CPU && large)
-      {
-        continue;
-      }
-      const int steps = backend == Backend::CUDA ? 200 : (spacing < 0.01 ? 5 : 20);
-      const Row r = run(spacing, backend, steps);
-      std::printf("%s,%g,%zu,%.1f,%.4g,%.1f,%.1f\n", backend == Backend::CUDA ? "CUDA" : "CPU", spacing, r.particles,
-                  r.stepsPerSecond, r.stepsPerSecond * static_cast<double>(r.particles), r.bytesPerParticle,
-                  r.simulatedSecondsPerHour);
-      std::fflush(stdout);
     }
-  }
   return 0;
 }

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Draws ParaFluidSPHBackendBenchmark's output: steps per second and particle-steps per second
-against the particle count, one line per backend (CPU, CUDA), on log axes.
+against the particle count, one line per solver and backend (CPU, CUDA), on log axes.
 Usage: plot_sph_backends.py <benchmark.csv> --png sph_backends.png (lines starting with # are skipped)"""
 import argparse
 import csv
@@ -26,7 +26,9 @@ def main():
             else:
                 lines.append(line)
     for row in csv.DictReader(lines):
-        runs.setdefault(row["backend"], []).append(
+        # One line per solver and backend (older files have no solver column: δ-SPH).
+        label = row["backend"] if "solver" not in row else row["solver"] + " " + row["backend"]
+        runs.setdefault(label, []).append(
             (int(row["particles"]), float(row["steps_per_s"]), float(row["particle_steps_per_s"])))
     fig, (steps, throughput) = plt.subplots(1, 2, figsize=(10, 4))
     for backend, points in sorted(runs.items()):

@@ -5,11 +5,11 @@ namespace parafluid::sph
 {
 std::string cudaBackendLacks(const SPHParameters& p)
 {
-  // δ-SPH runs with every option SPH Step offers it; the other solvers do not run yet.
-  if (p.pressureSolver == PressureSolverType::DeltaSPH)
+  // δ-SPH and WCSPH run with every option SPH Step offers them; DFSPH does not run yet.
+  if (p.pressureSolver == PressureSolverType::DFSPH)
   {
-    return {};
+    return "PressureSolver DFSPH";
   }
-  return std::string("PressureSolver ") + (p.pressureSolver == PressureSolverType::DFSPH ? "DFSPH" : "WCSPH");
+  return {};
 }
 } // namespace parafluid::sph

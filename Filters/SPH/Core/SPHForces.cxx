@@ -5,6 +5,7 @@
 
 #include "parafluid/common/Kernels.h"
 #include "parafluid/sph/WallMirrors.h"
+#include "private/MullerPairs.h"
 #include "private/NeighbourCandidates.h"
 
 #include <algorithm>
@@ -18,13 +19,6 @@ using detail::threadCount;
 
 namespace
 {
-struct PairConstants
-{
-  float h, h2, minDistance, pressureScale, viscosityScale;
-  float laminarScale; // 10 nu m x the spiky gradient's constant (0: no laminar term)
-  float eta2;         // keeps 1 / r^2 finite in the laminar term
-};
-
 struct PairSums
 {
   float force[3] = { 0, 0, 0 };   // pressure (+ viscosity), per unit of the query's density
@@ -54,7 +48,7 @@ enum Channel
 /// The viscous sum goes into `force` unless SeparateViscous (no-slip wall images map it back
 /// differently from the pressure sum).
 template<bool Pressure, bool Viscosity, bool Tension, bool SeparateViscous = false>
-PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float pi, const PairConstants& k,
+PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float pi, const detail::MullerConstants& k,
                   const float t[3])
 {
   const std::uint32_t count = c.findHits(q, k.h2);
@@ -76,8 +70,7 @@ PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float 
       const float w = k.h - dist;
       if constexpr (Pressure)
       {
-        // The particle itself (and any exact overlap) has dx = 0 and adds nothing.
-        const float pair = k.pressureScale * (pi + pp[j]) * pinv[j] * w * w / std::max(dist, k.minDistance);
+        const float pair = detail::mullerPressurePair(k, pi, pp[j], pinv[j], w, dist);
         fx += pair * dx;
         fy += pair * dy;
         fz += pair * dz;
@@ -86,12 +79,11 @@ PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float 
       {
         // The laminar term points along the pair, like pressure, and maps back like it.
         const float approach = t[0] * (v[0] - pvx[j]) * dx + t[1] * (v[1] - pvy[j]) * dy + t[2] * (v[2] - pvz[j]) * dz;
-        const float laminar =
-          k.laminarScale * pinv[j] * approach / (r2[j] + k.eta2) * w * w / std::max(dist, k.minDistance);
+        const float laminar = detail::mullerLaminarPair(k, approach, r2[j], pinv[j], w, dist);
         fx += laminar * dx;
         fy += laminar * dy;
         fz += laminar * dz;
-        const float pair = k.viscosityScale * pinv[j] * w;
+        const float pair = detail::mullerViscousPair(k, pinv[j], w);
         if constexpr (SeparateViscous)
         {
           gx += pair * (pvx[j] - v[0]);
@@ -134,35 +126,7 @@ template<bool Pressure, bool Viscosity, bool Tension>
 void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const float* inverseDensity,
                       float gradientCorrection, float laplacianCorrection)
 {
-  const float gradientCorrectionInverse = 1.0f / gradientCorrection;
-  const SpikyKernel spiky(p.smoothingLength);
-  const ViscosityKernel viscous(p.smoothingLength);
-  const Poly6Kernel poly6(p.smoothingLength);
-  PairConstants k;
-  k.h = p.smoothingLength;
-  k.h2 = k.h * k.h;
-  // Smallest distance divided by; pairs closer than this push along a direction of zero length.
-  k.minDistance = 1e-6f * k.h;
-  // a_i(pressure) = -sum_j m (p_i + p_j) / (rho_i rho_j) grad W_spiky, grad W = dW/dr r_ij / r,
-  // dW/dr = -3 c (h - r)^2, so the pair term is +3 c m (p_i + p_j)/(rho_i rho_j) (h - r)^2 r_ij / r.
-  // Müller's paper halves this ((p_i + p_j) / 2): for a linear pressure field that sum returns
-  // half the gradient, so the seed method held water up with twice the hydrostatic pressure.
-  // Divided by the lattice correction: the spiky gradient of a linear field on the rest lattice
-  // (h = 2 spacings) is 0.93 times the field's gradient.
-  k.pressureScale = 3.0f * spiky.coefficient * p.particleMass / gradientCorrectionInverse;
-  // a_i(viscosity) = mu / rho_i sum_j m (v_j - v_i) / rho_j lap W, lap W = lc (h - r).
-  k.viscosityScale = p.viscosity * p.particleMass * viscous.laplacianCoefficient;
-  // a_i(laminar) = 2 (d + 2) nu sum_j m / rho_j (v_ij . x_ij) / (r^2 + 0.01 (h/2)^2) grad W_ij;
-  // explicit here (Müller's WCSPH); DFSPH solves it implicitly (ImplicitViscosity.cxx).
-  // The pass divides every sum by rho_i, so the term carries mu = rho0 nu (Morris et al. 1997).
-  k.laminarScale = Pressure ? -3.0f * spiky.coefficient * 10.0f * p.kinematicViscosity * p.restDensity *
-                                p.particleMass * laplacianCorrection
-                            : 0.0f;
-  k.eta2 = 0.01f * 0.25f * k.h2;
-  // Colour field c = sum_j m / rho_j W_poly6: grad W = -6 c (h² - r²)² r_ij, lap W = -6 c (h² - r²)(3h² - 7r²).
-  const float colourScale = -6.0f * poly6.coefficient * p.particleMass;
-  const float threshold = p.surfaceThreshold / p.smoothingLength;
-  const float sigma = p.surfaceTension;
+  const detail::MullerConstants k = detail::mullerConstants(p, Pressure, gradientCorrection, laplacianCorrection);
 
   forEachParticleByCell(
     grid, s, k.h, detail::threadCount(p), { s.vx.data(), s.vy.data(), s.vz.data(), s.pressure.data(), inverseDensity },
@@ -205,17 +169,7 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
                      (sum.force[2] + sum.viscous[2]) * inv + p.gravity[2] };
       if constexpr (Tension)
       {
-        // Müller's surface force density -sigma lap(c) n / |n|, only where |n| marks a surface.
-        const float n[3] = { colourScale * sum.normal[0], colourScale * sum.normal[1], colourScale * sum.normal[2] };
-        const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        if (length > threshold)
-        {
-          const float scale = -sigma * colourScale * sum.laplacian / length * inv;
-          for (int d = 0; d < 3; ++d)
-          {
-            a[d] += scale * n[d];
-          }
-        }
+        detail::addColourFieldTension(k, sum.normal, sum.laplacian, inv, a);
       }
       s.ax[i] = a[0];
       s.ay[i] = a[1];

@@ -44,21 +44,7 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial,
   const SPHParameters& p = this->Parameters;
   this->ParticleSpacing = latticeSpacingForMass(p.particleMass, p.smoothingLength, p.restDensity, p.densityKernel());
   const SolverEntry& solver = solverEntry(p.pressureSolver);
-  switch (solver.viscousOperator)
-  {
-    case ViscousOperator::Morris:
-      this->LaplacianCorrection =
-        latticeMorrisLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, p.densityKernel());
-      break;
-    case ViscousOperator::MonaghanSpiky:
-      this->LaplacianCorrection =
-        latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, DensityKernel::Poly6, true);
-      break;
-    case ViscousOperator::Monaghan:
-      this->LaplacianCorrection =
-        latticeLaplacianCorrection(this->ParticleSpacing, p.smoothingLength, p.densityKernel(), false);
-      break;
-  }
+  this->LaplacianCorrection = latticeViscousCorrection(p, this->ParticleSpacing);
   this->SpikyGradientCorrection = latticeSpikyGradientCorrection(this->ParticleSpacing, p.smoothingLength);
   if (this->Boundary && this->Boundary->triangleCount() > 0 && p.meshWallDensity && solver.meshWallInSums)
   {

@@ -69,4 +69,18 @@ float defaultSmoothingLength(const SolverEntry& solver, double spacing, double i
   const double h = inputSmoothingLength > 0.0 ? inputSmoothingLength : solver.defaultSupport * spacing;
   return static_cast<float>(std::max(h, static_cast<double>(solver.minimumSupport) * spacing));
 }
+
+float latticeViscousCorrection(const SPHParameters& p, float spacing)
+{
+  switch (solverEntry(p.pressureSolver).viscousOperator)
+  {
+    case ViscousOperator::Morris:
+      return latticeMorrisLaplacianCorrection(spacing, p.smoothingLength, p.densityKernel());
+    case ViscousOperator::MonaghanSpiky:
+      return latticeLaplacianCorrection(spacing, p.smoothingLength, DensityKernel::Poly6, true);
+    case ViscousOperator::Monaghan:
+      break;
+  }
+  return latticeLaplacianCorrection(spacing, p.smoothingLength, p.densityKernel(), false);
+}
 } // namespace parafluid::sph

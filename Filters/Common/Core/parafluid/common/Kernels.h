@@ -19,7 +19,7 @@ struct Poly6Kernel
     , coefficient(315.0f / (64.0f * kPiF * std::pow(h, 9.0f)))
   {
   }
-  float valueFromSquared(float r2) const
+  PARAFLUID_HOST_DEVICE float valueFromSquared(float r2) const
   {
     if (r2 >= h2)
     {
@@ -29,7 +29,7 @@ struct Poly6Kernel
     return coefficient * d * d * d;
   }
   /// dW/dr / r: the gradient with respect to x_i is this times r_ij (no square root needed).
-  float gradientFactorFromSquared(float r2) const
+  PARAFLUID_HOST_DEVICE float gradientFactorFromSquared(float r2) const
   {
     if (r2 >= h2)
     {
@@ -39,7 +39,7 @@ struct Poly6Kernel
     return -6.0f * coefficient * d * d;
   }
   /// ∇²W = −6 c (h² − r²)(3h² − 7r²); negative near the centre, positive towards the rim.
-  float laplacianFromSquared(float r2) const
+  PARAFLUID_HOST_DEVICE float laplacianFromSquared(float r2) const
   {
     if (r2 >= h2)
     {
@@ -60,7 +60,7 @@ struct SpikyKernel
     , coefficient(15.0f / (kPiF * std::pow(h, 6.0f)))
   {
   }
-  float value(float r) const
+  PARAFLUID_HOST_DEVICE float value(float r) const
   {
     if (r >= h)
     {
@@ -70,7 +70,7 @@ struct SpikyKernel
     return coefficient * d * d * d;
   }
   /// dW/dr; the gradient with respect to x_i is (dW/dr) · r_ij / r.
-  float radialDerivative(float r) const
+  PARAFLUID_HOST_DEVICE float radialDerivative(float r) const
   {
     if (r >= h)
     {
@@ -93,7 +93,7 @@ struct ViscosityKernel
     , laplacianCoefficient(45.0f / (kPiF * std::pow(h, 6.0f)))
   {
   }
-  float value(float r) const
+  PARAFLUID_HOST_DEVICE float value(float r) const
   {
     if (r >= h || r <= 0.0f)
     {
@@ -102,7 +102,7 @@ struct ViscosityKernel
     const float q = r / h;
     return valueCoefficient * (-0.5f * q * q * q + q * q + 0.5f / q - 1.0f);
   }
-  float laplacian(float r) const { return r >= h ? 0.0f : laplacianCoefficient * (h - r); }
+  PARAFLUID_HOST_DEVICE float laplacian(float r) const { return r >= h ? 0.0f : laplacianCoefficient * (h - r); }
   float h;
   float valueCoefficient;
   float laplacianCoefficient;
@@ -123,7 +123,7 @@ struct CubicSplineKernel
     , coefficient(8.0f / (kPiF * h * h * h))
   {
   }
-  float value(float r) const
+  PARAFLUID_HOST_DEVICE float value(float r) const
   {
     const float q = r * inverseH;
     if (q >= 1.0f)
@@ -138,7 +138,7 @@ struct CubicSplineKernel
     return coefficient * 2.0f * d * d * d;
   }
   /// dW/dr.
-  float radialDerivative(float r) const
+  PARAFLUID_HOST_DEVICE float radialDerivative(float r) const
   {
     const float q = r * inverseH;
     if (q >= 1.0f)

@@ -62,4 +62,7 @@ const SolverEntry* solverForPropertyValue(int value);
 /// The support radius h [m] a solver runs with for particles of the given spacing [m]: the input's
 /// own smoothing length when it has one (> 0), else the solver's default, widened to its minimum.
 float defaultSmoothingLength(const SolverEntry& solver, double spacing, double inputSmoothingLength);
+/// The lattice correction of p's solver's viscous operator (its ViscousOperator) at this particle
+/// spacing [m], which every backend scales the laminar term and its time-step limit by.
+float latticeViscousCorrection(const SPHParameters& p, float spacing);
 } // namespace parafluid::sph

@@ -39,7 +39,7 @@ struct WallMirrors
   }
 
   /// Whether image k crosses a no-slip wall (its velocity is not simply mirrored).
-  bool noSlip(int k) const
+  PARAFLUID_HOST_DEVICE bool noSlip(int k) const
   {
     return velocityScale[k][0] != scale[k][0] || velocityScale[k][1] != scale[k][1] ||
            velocityScale[k][2] != scale[k][2];
