@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 
 namespace parafluid::vtk
@@ -99,26 +100,48 @@ vtkIdType firstNonFinite(vtkDataArray* values)
   return -1;
 }
 
-/// One part's rows within this piece: [first, first + count) of the part, at `at` of the output.
+/// Rows [first, first + count) of part `part`, at `at` of this piece's output (before the subset).
 struct Rows
 {
+  std::size_t part = 0;
   std::uint64_t first = 0, count = 0, at = 0;
 };
 
-std::vector<Rows> piecesOfParts(const parafluid::h5::ParticleBlock& block, int piece, int pieces)
+/// The rows this piece reads: of each part, its rows near the selection box (its spatial index's
+/// cells) or all of them, and of those together this piece's contiguous share.
+std::vector<Rows> rowsOfPiece(const parafluid::h5::ParticleBlock& block, const BlockReading& how,
+                              std::vector<std::string>& warnings)
 {
-  const std::uint64_t total = block.particles();
-  const auto p = static_cast<std::uint64_t>(std::max(piece, 0)), n = static_cast<std::uint64_t>(std::max(pieces, 1));
+  std::vector<Rows> candidates;
+  std::uint64_t total = 0;
+  for (std::size_t p = 0; p < block.parts.size(); ++p)
+  {
+    std::string warning;
+    const std::vector<parafluid::h5::RowRange> ranges =
+      how.useBox ? parafluid::h5::rowsNearBox(block.parts[p], how.box, warning)
+                 : std::vector<parafluid::h5::RowRange>{ { 0, block.parts[p].layout.particles } };
+    if (!warning.empty())
+    {
+      warnings.push_back(warning);
+    }
+    for (const auto& range : ranges)
+    {
+      candidates.push_back({ p, range.first, range.count, total });
+      total += range.count;
+    }
+  }
+  const auto p = static_cast<std::uint64_t>(std::max(how.piece, 0)),
+             n = static_cast<std::uint64_t>(std::max(how.pieces, 1));
   const std::uint64_t begin = total / n * p + std::min(p, total % n);
   const std::uint64_t end = begin + total / n + (p < total % n ? 1 : 0);
   std::vector<Rows> rows;
-  std::uint64_t start = 0;
-  for (const BlockPart& part : block.parts)
+  for (const Rows& r : candidates)
   {
-    const std::uint64_t stop = start + part.layout.particles;
-    const std::uint64_t low = std::max(begin, start), high = std::min(end, stop);
-    rows.push_back({ low - std::min(low, start), high > low ? high - low : 0, low > begin ? low - begin : 0 });
-    start = stop;
+    const std::uint64_t low = std::max(begin, r.at), high = std::min(end, r.at + r.count);
+    if (high > low)
+    {
+      rows.push_back({ r.part, r.first + (low - r.at), high - low, low - begin });
+    }
   }
   return rows;
 }
@@ -151,51 +174,55 @@ void applyScale(vtkDataArray* array, double scale)
 /// The name readSource knows the coordinates' offsets by ("" is the coordinates).
 constexpr const char* kOffset = "#offset";
 
-/// Reads `source` (found in every part) into `array` sized for this piece.
+/// Reads `source` (found in every part) into `array` sized for this piece's rows.
 bool readSource(const std::vector<BlockPart>& parts, const std::vector<Rows>& rows, const ArraySource& first,
                 const std::string& name, ValueType type, vtkDataArray* array, std::string& error)
 {
-  for (std::size_t p = 0; p < parts.size(); ++p)
+  std::size_t openPart = parts.size();
+  Handle file(-1, H5Fclose), group(-1, H5Gclose);
+  const ArraySource* source = nullptr;
+  for (const Rows& r : rows)
   {
-    if (rows[p].count == 0)
+    const BlockPart& part = parts[r.part];
+    if (r.part != openPart)
     {
-      continue;
-    }
-    const BlockPart& part = parts[p];
-    const ArraySource* source = &first;
-    if (p > 0)
-    {
-      const auto& arrays = part.layout.arrays;
-      const auto found =
-        std::find_if(arrays.begin(), arrays.end(), [&](const ArraySource& a) { return a.name == name; });
-      source = name.empty()      ? &part.layout.coordinates
-               : name == kOffset ? &part.layout.coordinateOffset
-                                 : (found == arrays.end() ? nullptr : &*found);
-      if (!source)
+      source = &first;
+      if (r.part > 0)
       {
-        error = "'" + part.file + "': " + part.group + " has no " + name + " as the snapshot's first file has";
+        const auto& arrays = part.layout.arrays;
+        const auto found =
+          std::find_if(arrays.begin(), arrays.end(), [&](const ArraySource& a) { return a.name == name; });
+        source = name.empty()      ? &part.layout.coordinates
+                 : name == kOffset ? &part.layout.coordinateOffset
+                                   : (found == arrays.end() ? nullptr : &*found);
+        if (!source)
+        {
+          error = "'" + part.file + "': " + part.group + " has no " + name + " as the snapshot's first file has";
+          return false;
+        }
+      }
+      std::string fileError;
+      group.reset();
+      file = Handle(parafluid::h5::openForReading(part.file, fileError), H5Fclose);
+      group = Handle(file.valid() ? H5Gopen2(file, part.group.c_str(), H5P_DEFAULT) : -1, H5Gclose);
+      if (!group.valid())
+      {
+        error = fileError.empty() ? "'" + part.file + "': cannot open " + part.group : fileError;
         return false;
       }
-    }
-    std::string fileError;
-    Handle file(parafluid::h5::openForReading(part.file, fileError), H5Fclose);
-    Handle group(file.valid() ? H5Gopen2(file, part.group.c_str(), H5P_DEFAULT) : -1, H5Gclose);
-    if (!group.valid())
-    {
-      error = fileError.empty() ? "'" + part.file + "': cannot open " + part.group : fileError;
-      return false;
+      openPart = r.part;
     }
     const std::size_t bytes = parafluid::h5::valueBytes(type) * static_cast<std::size_t>(source->components);
-    void* target = static_cast<char*>(array->GetVoidPointer(0)) + rows[p].at * bytes;
+    void* target = static_cast<char*>(array->GetVoidPointer(0)) + r.at * bytes;
     for (std::size_t c = 0; c < source->datasets.size(); ++c)
     {
       if (source->datasets[c].empty())
       {
         continue; // a component the layout gives as a constant (the array was zero-filled)
       }
-      if (!parafluid::h5::readSlice(group, source->datasets[c], type, part.layout.firstRow + rows[p].first,
-                                    rows[p].count, target, static_cast<std::uint64_t>(source->components),
-                                    source->datasets.size() > 1 ? c : 0, error, source->frame))
+      if (!parafluid::h5::readSlice(group, source->datasets[c], type, part.layout.firstRow + r.first, r.count, target,
+                                    static_cast<std::uint64_t>(source->components), source->datasets.size() > 1 ? c : 0,
+                                    error, source->frame))
       {
         error = "'" + part.file + "': " + part.group + ": " + error;
         return false;
@@ -204,6 +231,110 @@ bool readSource(const std::vector<BlockPart>& parts, const std::vector<Rows>& ro
   }
   return true;
 }
+
+/// Which of this piece's rows are returned: all, or those the selection box, the stride and the
+/// layout's real-particle tag keep.
+struct Subset
+{
+  std::vector<unsigned char> keep; // per row; empty when every row is kept
+  vtkIdType kept = 0;
+};
+
+/// SplitMix64's finaliser (Steele, Lea & Flood 2014): ids of any pattern (consecutive, even
+/// only, blocks per process) spread evenly over the residues the stride keeps.
+std::uint64_t mixed(std::uint64_t id)
+{
+  id += 0x9e3779b97f4a7c15ull;
+  id = (id ^ (id >> 30)) * 0xbf58476d1ce4e5b9ull;
+  id = (id ^ (id >> 27)) * 0x94d049bb133111ebull;
+  return id ^ (id >> 31);
+}
+
+/// Moves the kept tuples of `array` to its front, in order, and shortens it to them.
+void compact(vtkDataArray* array, const Subset& subset)
+{
+  if (subset.keep.empty())
+  {
+    return;
+  }
+  const std::size_t bytes = static_cast<std::size_t>(array->GetDataTypeSize()) * array->GetNumberOfComponents();
+  auto* data = static_cast<unsigned char*>(array->GetVoidPointer(0));
+  std::size_t to = 0;
+  for (std::size_t i = 0; i < subset.keep.size(); ++i)
+  {
+    if (subset.keep[i])
+    {
+      if (to != i)
+      {
+        std::memmove(data + to * bytes, data + i * bytes, bytes);
+      }
+      ++to;
+    }
+  }
+  array->SetNumberOfTuples(subset.kept);
+}
+
+/// The rows of this piece that are returned (`points` read, scaled and shifted; `ids` read).
+bool selectSubset(const parafluid::h5::ParticleBlock& block, const std::vector<Rows>& rows, const BlockReading& how,
+                  vtkDataArray* points, vtkTypeInt64Array* ids, Subset& subset, std::string& error)
+{
+  const vtkIdType n = points->GetNumberOfTuples();
+  subset.kept = n;
+  const std::string& tag = block.parts.front().layout.realTagDataset;
+  if (!how.useBox && how.stride <= 1 && tag.empty())
+  {
+    return true;
+  }
+  subset.keep.assign(static_cast<std::size_t>(n), 1);
+  if (!tag.empty())
+  {
+    vtkNew<vtkTypeInt64Array> tags;
+    if (!allocate(tags, 1, n) ||
+        !readSource(block.parts, rows, ArraySource{ tag, { tag }, 1 }, tag, ValueType::Int64, tags, error))
+    {
+      error = error.empty() ? "not enough memory for the tags of " + block.parts.front().group : error;
+      return false;
+    }
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      subset.keep[i] &= tags->GetValue(i) == 0 ? 1 : 0;
+    }
+  }
+  if (how.stride > 1)
+  {
+    const auto stride = static_cast<std::uint64_t>(how.stride);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      subset.keep[i] &= mixed(static_cast<std::uint64_t>(ids->GetValue(i))) % stride == 0 ? 1 : 0;
+    }
+  }
+  if (how.useBox)
+  {
+    auto inside = [&](const auto* x)
+    {
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        bool in = true;
+        for (int a = 0; a < 3; ++a)
+        {
+          in &= x[3 * i + a] >= how.box[2 * a] && x[3 * i + a] <= how.box[2 * a + 1];
+        }
+        subset.keep[i] &= in ? 1 : 0;
+      }
+    };
+    if (auto* f = vtkFloatArray::SafeDownCast(points))
+    {
+      inside(f->GetPointer(0));
+    }
+    else
+    {
+      inside(vtkDoubleArray::SafeDownCast(points)->GetPointer(0));
+    }
+  }
+  subset.kept = static_cast<vtkIdType>(std::count(subset.keep.begin(), subset.keep.end(), 1));
+  return true;
+}
+
 /// Adds the layout's offsets to the scaled coordinates: a read offset array and a constant per axis.
 bool shiftCoordinates(const parafluid::h5::ParticleBlock& block, const std::vector<Rows>& rows, vtkDataArray* points,
                       std::string& error)
@@ -279,7 +410,7 @@ bool readParticleBlock(const parafluid::h5::ParticleBlock& block, const BlockRea
     error = "block " + block.name + " has no rows";
     return false;
   }
-  const std::vector<Rows> rows = piecesOfParts(block, how.piece, how.pieces);
+  const std::vector<Rows> rows = rowsOfPiece(block, how, warnings);
   std::uint64_t count = 0;
   for (const Rows& r : rows)
   {
@@ -355,7 +486,6 @@ bool readParticleBlock(const parafluid::h5::ParticleBlock& block, const BlockRea
   vtkNew<vtkPoints> pointSet;
   pointSet->SetData(points);
   output->SetPoints(pointSet);
-  parafluid::vtk::setOneVertexPerPoint(output, n);
 
   vtkNew<vtkTypeInt64Array> ids;
   ids->SetName(parafluid::contract::Id);
@@ -364,20 +494,24 @@ bool readParticleBlock(const parafluid::h5::ParticleBlock& block, const BlockRea
     error = "not enough memory for the ids of " + head.group;
     return false;
   }
-  std::uint64_t start = 0;
+  std::vector<std::uint64_t> partStart(block.parts.size() + 1, 0); // the part's first row in the block
   for (std::size_t p = 0; p < block.parts.size(); ++p)
   {
-    const BlockPart& part = block.parts[p];
-    auto* target = reinterpret_cast<std::int64_t*>(ids->GetPointer(0)) + rows[p].at;
+    partStart[p + 1] = partStart[p] + block.parts[p].layout.particles;
+  }
+  for (const Rows& r : rows)
+  {
+    const BlockPart& part = block.parts[r.part];
+    auto* target = reinterpret_cast<std::int64_t*>(ids->GetPointer(0)) + r.at;
     std::string problem;
     bool read = false;
-    if (!part.layout.idDataset.empty() && rows[p].count > 0)
+    if (!part.layout.idDataset.empty())
     {
       Handle partFile(parafluid::h5::openForReading(part.file, problem), H5Fclose);
       Handle partGroup(partFile.valid() ? H5Gopen2(partFile, part.group.c_str(), H5P_DEFAULT) : -1, H5Gclose);
-      read = partGroup.valid() &&
-             parafluid::h5::readIds(partGroup, part.layout.idDataset, part.layout.firstRow + rows[p].first,
-                                    rows[p].count, target, problem, part.layout.idFrame);
+      read =
+        partGroup.valid() && parafluid::h5::readIds(partGroup, part.layout.idDataset, part.layout.firstRow + r.first,
+                                                    r.count, target, problem, part.layout.idFrame);
     }
     if (!read)
     {
@@ -385,10 +519,18 @@ bool readParticleBlock(const parafluid::h5::ParticleBlock& block, const BlockRea
       {
         warnings.push_back(part.group + ": " + problem + "; each particle's id is its index in the file instead");
       }
-      std::iota(target, target + rows[p].count, static_cast<std::int64_t>(start + rows[p].first));
+      std::iota(target, target + r.count, static_cast<std::int64_t>(partStart[r.part] + r.first));
     }
-    start += part.layout.particles;
   }
+  Subset subset;
+  if (!selectSubset(block, rows, how, points, ids, subset, error))
+  {
+    return false;
+  }
+  compact(points, subset);
+  compact(ids, subset);
+  output->GetPoints()->Modified();
+  parafluid::vtk::setOneVertexPerPoint(output, subset.kept);
   output->GetPointData()->AddArray(ids);
 
   for (std::size_t k = 0; k < head.layout.arrays.size(); ++k)
@@ -411,6 +553,7 @@ bool readParticleBlock(const parafluid::h5::ParticleBlock& block, const BlockRea
       error = error.empty() ? "not enough memory for array " + source.name + " of " + head.group : error;
       return false;
     }
+    compact(array, subset);
     applyScale(array, source.scale);
     if (!source.unit.empty())
     {
@@ -426,7 +569,7 @@ bool readParticleBlock(const parafluid::h5::ParticleBlock& block, const BlockRea
     }
     vtkNew<vtkDoubleArray> array;
     array->SetName(constant.name.c_str());
-    if (!allocate(array, 1, n))
+    if (!allocate(array, 1, subset.kept))
     {
       error = "not enough memory for array " + constant.name + " of " + head.group;
       return false;

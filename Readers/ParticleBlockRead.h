@@ -1,6 +1,8 @@
 #pragma once
 // One block of particles (parafluid::h5::ParticleBlock: N-row datasets over one or more files)
-// read into a vtkPolyData: this piece's contiguous share of the rows, the coordinates at the
+// read into a vtkPolyData: this piece's contiguous share of the rows (of the rows near the
+// selection box, where the file has a spatial index), less the particles the box, the stride and
+// the layout's real-particle tag leave out, the coordinates at the
 // file's precision, an int64 "id" (the file's, else the row), the selected arrays (scaled to SI
 // where the layout knows the factor, the unit in the array's information), the block's constants
 // as arrays. The memory a block declares is checked before anything is allocated.
@@ -20,6 +22,12 @@ struct BlockReading
 {
   vtkDataArraySelection* selection = nullptr; // every array when null
   int piece = 0, pieces = 1;
+  /// Keep about one particle in `stride`, chosen by a hash of its id (the same ones at every time).
+  int stride = 1;
+  /// Keep only the particles inside `box` (xmin, xmax, ymin, ymax, zmin, zmax; the output's
+  /// units), reading only the rows the file's spatial index puts near it.
+  bool useBox = false;
+  double box[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
   vtkAlgorithm* algorithm = nullptr; // for Abort, when set
 };
 

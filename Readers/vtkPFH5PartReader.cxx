@@ -262,7 +262,10 @@ bool vtkPFH5PartReader::ReadStep(vtkInformation* info, vtkPolyData* output, std:
     this->WarnOnce(warning);
   }
   // This piece's contiguous slice of the particles, read by the path every layout shares.
-  const parafluid::vtk::BlockReading how = parafluid::vtk::blockReadingFor(info, this->PointArraySelection, this);
+  parafluid::vtk::BlockReading how = parafluid::vtk::blockReadingFor(info, this->PointArraySelection, this);
+  how.stride = this->Stride;
+  how.useBox = this->UseBox;
+  std::copy(this->Box, this->Box + 6, how.box);
   const parafluid::h5::ParticleBlock block{ groupName, { { this->FileName, groupName, layout } }, {} };
   std::vector<std::string> blockWarnings;
   const bool read = parafluid::vtk::readParticleBlock(block, how, output, blockWarnings, error);
@@ -288,6 +291,17 @@ bool vtkPFH5PartReader::ReadStep(vtkInformation* info, vtkPolyData* output, std:
   output->GetFieldData()->AddArray(timeArray);
   output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
   return true;
+}
+
+void vtkPFH5PartReader::SetSubset(int stride, bool useBox, const double box[6])
+{
+  if (stride != this->Stride || useBox != this->UseBox || !std::equal(box, box + 6, this->Box))
+  {
+    this->Stride = std::max(stride, 1);
+    this->UseBox = useBox;
+    std::copy(box, box + 6, this->Box);
+    this->Modified();
+  }
 }
 
 void vtkPFH5PartReader::PrintSelf(ostream& os, vtkIndent indent)

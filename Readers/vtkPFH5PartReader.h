@@ -51,6 +51,11 @@ public:
 
   vtkMTimeType GetMTime() override;
 
+  /// Read about one particle in `stride` (by a hash of its id) and, with `useBox`, only those
+  /// inside `box` (xmin, xmax, ymin, ymax, zmin, zmax): ParaFluid HDF5 Particles' Stride and
+  /// SelectionBox for the H5Part files it reads through this class.
+  void SetSubset(int stride, bool useBox, const double box[6]);
+
 protected:
   vtkPFH5PartReader();
   ~vtkPFH5PartReader() override;
@@ -66,6 +71,9 @@ private:
   vtkNew<vtkDataArraySelection> PointArraySelection;
   std::vector<std::string> StepGroups;
   std::vector<double> StepTimes;
+  int Stride = 1;
+  bool UseBox = false;
+  double Box[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
   std::string InformationError; // why RequestInformation failed, repeated by RequestData
   std::set<std::string> Warned; // warnings given since the file was (re)opened: each is given once
 

@@ -27,7 +27,7 @@ if not args.plugin or not os.path.exists(args.plugin):
     sys.exit("demo: give --plugin (the built ParaFluid.so) or set PARAFLUID_PLUGIN")
 
 LoadPlugin(args.plugin, ns=globals())
-reader = ParaFluidH5PartReader(FileName=args.data)
+reader = ParaFluidHDF5Particles(FileName=args.data)
 sph = SPHStep(Input=reader, OutputInterval=args.interval, NumberOfOutputs=args.outputs,
               PressureSolver="DFSPH" if args.solver == "DFSPH" else "WCSPH (Müller)")
 final_time = sph.TimestepValues[-1] if args.outputs > 0 else sph.TimestepValues

@@ -263,7 +263,12 @@ ParticleFrame describeGadgetFrame(const ParticleFileInfo& info)
         }
       }
       frame.warnings.insert(frame.warnings.end(), layout.warnings.begin(), layout.warnings.end());
-      blocks[type].parts.push_back({ info.files[f], "/" + group, std::move(layout) });
+      const std::string cells = hasObject(file, "Cells", H5O_TYPE_GROUP) &&
+                                    (hasObject(file, "Cells/OffsetsInFile/" + group, H5O_TYPE_DATASET) ||
+                                     hasObject(file, "Cells/Offsets/" + group, H5O_TYPE_DATASET))
+                                  ? group
+                                  : "";
+      blocks[type].parts.push_back({ info.files[f], "/" + group, std::move(layout), cells, static_cast<int>(f) });
     }
   }
   for (int type = 0; type < 6; ++type)

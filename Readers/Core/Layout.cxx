@@ -320,7 +320,14 @@ hid_t openForReading(const std::string& fileName, std::string& error)
     error = "'" + fileName + "' is not an HDF5 file";
     return -1;
   }
-  const hid_t file = H5Fopen(fileName.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  // No sieve buffer: every read here is one block of rows, which HDF5's 64 KiB read-ahead only
+  // inflates (tenfold for the small cells of a spatial index's selection).
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (access.valid())
+  {
+    H5Pset_sieve_buf_size(access, 0);
+  }
+  const hid_t file = H5Fopen(fileName.c_str(), H5F_ACC_RDONLY, access.valid() ? access.get() : H5P_DEFAULT);
   if (file < 0)
   {
     error = "HDF5 could not open '" + fileName + "'";
@@ -523,6 +530,10 @@ StepLayout describeStep(hid_t file, const std::string& groupName, const DatasetN
   std::map<std::string, std::vector<std::uint64_t>> shapes;
   for (const std::string& name : childNames(group))
   {
+    if (names.skip.count(name))
+    {
+      continue;
+    }
     std::string why;
     auto shape = numericShape(group, name, why);
     if (!shape.empty())
@@ -618,16 +629,28 @@ StepLayout describeStep(hid_t file, const std::string& groupName, const DatasetN
                                 "); each particle's id is its index in the file");
     }
   }
-  // Component triples first, so vx/vy/vz do not also show up as three scalars.
-  for (const auto& [name, shape] : shapes)
+  // Component triples first, so vx/vy/vz do not also show up as three scalars: the layout's own
+  // named triples, then the ones found by name.
+  std::vector<std::pair<std::string, std::vector<std::string>>> triples = names.vectors;
+  for (const auto& entry : shapes)
   {
-    const std::string base = vectorBaseOfX(name);
-    if (base.empty() || used.count(name))
+    const std::string base = vectorBaseOfX(entry.first);
+    if (!base.empty())
+    {
+      triples.push_back({ base, { entry.first, componentName(entry.first, 'y'), componentName(entry.first, 'z') } });
+    }
+  }
+  for (const auto& [base, components] : triples)
+  {
+    const std::string& name = components[0];
+    const auto x = shapes.find(name);
+    if (x == shapes.end() || used.count(name))
     {
       continue;
     }
-    const std::string yName = componentName(name, 'y');
-    const std::string zName = componentName(name, 'z');
+    const auto& shape = x->second;
+    const std::string& yName = components[1];
+    const std::string& zName = components[2];
     const auto y = shapes.find(yName);
     const auto z = shapes.find(zName);
     if (y == shapes.end() || z == shapes.end() || shape != y->second || shape != z->second || shape.size() != 1)

@@ -96,6 +96,10 @@ ParticleLayout detectLayout(hid_t file)
   {
     return ParticleLayout::H5MD;
   }
+  if (detail::isPySphFile(file))
+  {
+    return ParticleLayout::PySPH;
+  }
   if (detail::hasObject(file, "Header", H5O_TYPE_GROUP))
   {
     for (const std::string& name : detail::linkNames(file))
@@ -130,12 +134,62 @@ const char* layoutName(ParticleLayout layout)
       return "openPMD";
     case ParticleLayout::VTKHDF:
       return "VTKHDF";
+    case ParticleLayout::PySPH:
+      return "PySPH output";
     default:
       return "unknown";
   }
 }
 
-ParticleFileInfo describeParticleFile(const std::string& fileName)
+namespace
+{
+/// Makes `info`, of a file of one time, the first of the numbered series its name is in: the
+/// members of the same layout and of one time each, with their times (members that are not are
+/// left out, with a warning).
+void gatherSeries(const std::string& fileName, ParticleFileInfo& info)
+{
+  const std::vector<std::string> members = detail::numberedSeries(fileName, info.files.size() > 1);
+  std::vector<std::string> kept;
+  std::vector<double> times;
+  std::vector<std::string> warnings;
+  for (const std::string& member : members)
+  {
+    const ParticleFileInfo other = member == fileName ? info : describeParticleFile(member, false);
+    const std::string why = !other.error.empty()          ? other.error
+                            : other.layout != info.layout ? std::string("it is ") + layoutName(other.layout)
+                            : other.times.size() != 1     ? std::to_string(other.times.size()) + " times"
+                                                          : "";
+    if (why.empty())
+    {
+      kept.push_back(member);
+      times.push_back(other.times.front());
+    }
+    else if (warnings.size() < 3)
+    {
+      warnings.push_back("'" + member + "' is left out of the series: " + why);
+    }
+  }
+  if (kept.size() < 2)
+  {
+    return;
+  }
+  if (std::adjacent_find(times.begin(), times.end(), [](double a, double b) { return !(a < b); }) != times.end())
+  {
+    warnings.push_back("the series' times do not increase with the files' numbers; each file's time is its "
+                       "position in the series");
+    for (std::size_t k = 0; k < times.size(); ++k)
+    {
+      times[k] = static_cast<double>(k);
+    }
+  }
+  info.seriesFiles = kept;
+  info.times = times;
+  info.description += ", series of " + std::to_string(kept.size()) + " files";
+  info.warnings.insert(info.warnings.end(), warnings.begin(), warnings.end());
+}
+} // namespace
+
+ParticleFileInfo describeParticleFile(const std::string& fileName, bool findSeries)
 {
   ParticleFileInfo info;
   std::string error;
@@ -161,6 +215,9 @@ ParticleFileInfo describeParticleFile(const std::string& fileName)
     case ParticleLayout::VTKHDF:
       detail::describeVtkHdfFile(file, info);
       break;
+    case ParticleLayout::PySPH:
+      detail::describePySphFile(file, info);
+      break;
     case ParticleLayout::H5Part:
       info.description = "H5Part";
       for (const StepEntry& step : listSteps(file, info.error, &info.warnings))
@@ -172,12 +229,16 @@ ParticleFileInfo describeParticleFile(const std::string& fileName)
       info.error = "'" + fileName +
                    "' is HDF5 but none of the particle layouts read here: looked for an /h5md group with "
                    "/particles (H5MD), /Header with /PartType<n> groups (Gadget, SWIFT, GIZMO, AREPO), the "
-                   "root attributes openPMD and basePath (openPMD), a /VTKHDF group (VTKHDF) and \"Step#<n>\" "
-                   "groups (H5Part)";
+                   "root attributes openPMD and basePath (openPMD), a /VTKHDF group (VTKHDF), /particles/<name>/arrays "
+                   "with /solver_data (PySPH) and \"Step#<n>\" groups (H5Part)";
   }
   if (info.error.empty() && info.times.empty())
   {
     info.error = "'" + fileName + "': the " + std::string(layoutName(info.layout)) + " file has no particles";
+  }
+  if (findSeries && info.error.empty() && info.times.size() == 1 && info.layout != ParticleLayout::OpenPMD)
+  {
+    gatherSeries(fileName, info);
   }
   return info;
 }
@@ -188,6 +249,18 @@ ParticleFrame describeFrame(const ParticleFileInfo& info, std::size_t timeIndex)
   if (!info.error.empty() || timeIndex >= info.times.size())
   {
     frame.error = info.error.empty() ? "no such time" : info.error;
+    return frame;
+  }
+  if (!info.seriesFiles.empty())
+  {
+    const ParticleFileInfo member = describeParticleFile(info.seriesFiles[timeIndex], false);
+    if (!member.error.empty())
+    {
+      frame.error = member.error;
+      return frame;
+    }
+    frame = describeFrame(member, 0);
+    frame.time = info.times[timeIndex];
     return frame;
   }
   if (info.layout == ParticleLayout::Gadget)
@@ -212,6 +285,10 @@ ParticleFrame describeFrame(const ParticleFileInfo& info, std::size_t timeIndex)
   if (info.layout == ParticleLayout::VTKHDF)
   {
     return detail::describeVtkHdfFrame(file, info, timeIndex);
+  }
+  if (info.layout == ParticleLayout::PySPH)
+  {
+    return detail::describePySphFrame(file, info);
   }
   // H5Part: one block, the step at this time.
   std::vector<std::string> ignored;

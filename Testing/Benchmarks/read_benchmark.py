@@ -60,7 +60,7 @@ def time_reader(make):
 
 rows = []
 for label, path in files.items():
-    ours = time_reader(lambda: ParaFluidH5PartReader(FileName=path))
+    ours = time_reader(lambda: ParaFluidHDF5Particles(FileName=path))
     builtin = time_reader(lambda: H5PartReader(FileName=path))
     rows.append((label, "ParaFluid H5Part Reader", *ours))
     rows.append((label, "ParaView H5PartReader", *builtin))

@@ -76,7 +76,7 @@ write_all_steps_fails(sph, missing, ["cannot create"])
 # And a good write after it, with every step.
 good = os.path.join(tempfile.mkdtemp(prefix="parafluid-mpi-"), "out.h5part")
 SaveData(good, proxy=sph, WriteAllTimeSteps=1)
-copy = ParaFluidH5PartReader(FileName=good)
+copy = ParaFluidHDF5Particles(FileName=good)
 pftest.check(len(copy.TimestepValues) == len(sph.TimestepValues), "the write after the error holds %d steps of %d" % (len(copy.TimestepValues), len(sph.TimestepValues)))
 
 # The writer, all time steps, of an input that fails after the first: a block that reaches outside

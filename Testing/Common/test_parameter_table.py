@@ -205,8 +205,8 @@ for k in range(3):
     g['y'] = np.zeros(4, dtype='f4')
     g['z'] = np.zeros(4, dtype='f4')
 """)
-TIME_AWARE = dict(MAKERS, ParaFluidH5PartReader=lambda: ParaFluidH5PartReader(FileName=steps_file))
-for xml_name in ("ParaFluidH5PartReader", "SPHStep", "GerstnerOcean", "Rain", "StableFluids"):
+TIME_AWARE = dict(MAKERS, ParaFluidHDF5Particles=lambda: ParaFluidHDF5Particles(FileName=steps_file))
+for xml_name in ("ParaFluidHDF5Particles", "SPHStep", "GerstnerOcean", "Rain", "StableFluids"):
     proxy = TIME_AWARE[xml_name]()
     proxy.UpdatePipelineInformation()
     times = list(proxy.TimestepValues)

@@ -4,7 +4,7 @@ from paraview import servermanager
 import pftest
 
 pftest.load(globals())
-for name in ("ParaFluidH5PartReader", "ParticleBlock", "SPHStep"):
+for name in ("ParaFluidHDF5Particles", "ParticleBlock", "SPHStep"):
     pftest.check(name in globals(), "%s is not available after LoadPlugin" % name)
 pftest.check(servermanager.ProxyManager().GetPrototypeProxy("writers", "ParaFluidH5PartWriter") is not None,
              "the H5Part writer is not registered")

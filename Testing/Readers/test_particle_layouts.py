@@ -72,7 +72,7 @@ q = s.create_group('position'); q['value'] = np.zeros((1, 4, 3)); q['time'] = np
 positions = np.random.default_rng(7).random((3, N, 3)) * 10  # what the file holds, made here again
 
 reader = OpenDataFile(h5md)
-pftest.check(reader.GetXMLName() == "H5ParticlesReader", "OpenDataFile picks %s for .h5md" % reader.GetXMLName())
+pftest.check(reader.GetXMLName() == "H5ParaFluidParticlesReader", "OpenDataFile picks %s for .h5md" % reader.GetXMLName())
 reader.UpdatePipelineInformation()
 layout = reader.GetProperty("DetectedLayout").GetElement(0)
 pftest.check(layout == "H5MD 1.1 (LAMMPS)", "DetectedLayout %r" % layout)
@@ -108,7 +108,7 @@ f.create_group('h5md').attrs['version'] = np.array([1, 0])
 g = f.create_group('particles/fluid')
 g['position'] = P; g['velocity'] = V; g['id'] = I
 """)
-a = pftest.fetch(ParaFluidH5PartReader(FileName=same_h5part))
+a = pftest.fetch(ParaFluidHDF5Particles(FileName=same_h5part))
 b = blocks(ParaFluidHDF5Particles(FileName=same_h5md))["fluid"]
 for name in ("velocity", "id"):
     pftest.check(np.array_equal(pftest.point_array(a, name), pftest.point_array(b, name)), "%s differs between layouts" % name)
@@ -148,7 +148,7 @@ g['ParticleIDs'] = np.arange(%(N)d, dtype='u8') + 1000
 d = f.create_group('PartType1'); d['Coordinates'] = np.zeros((4, 3)); d['ParticleIDs'] = np.arange(4, dtype='u8')
 """ % {"N": N, "L": MPC_CM, "M": MSUN10_G, "V": KM_CM})
 reader = OpenDataFile(swift)
-pftest.check(reader.GetXMLName() == "H5ParticlesReader", "OpenDataFile picks %s for .hdf5" % reader.GetXMLName())
+pftest.check(reader.GetXMLName() == "H5ParaFluidParticlesReader", "OpenDataFile picks %s for .hdf5" % reader.GetXMLName())
 reader.UpdatePipelineInformation()
 pftest.check(reader.GetProperty("DetectedLayout").GetElement(0) == "SWIFT snapshot",
              "DetectedLayout %r" % reader.GetProperty("DetectedLayout").GetElement(0))
@@ -250,7 +250,7 @@ iteration(f, 100, 10.0, 6, 0.0)
 iteration(f, 200, 20.0, 6, 1.0)
 """)
 reader = OpenDataFile(grouped)
-pftest.check(reader.GetXMLName() == "H5ParticlesReader", "OpenDataFile picks %s for openPMD .h5" % reader.GetXMLName())
+pftest.check(reader.GetXMLName() == "H5ParaFluidParticlesReader", "OpenDataFile picks %s for openPMD .h5" % reader.GetXMLName())
 reader.UpdatePipelineInformation()
 pftest.check(reader.GetProperty("DetectedLayout").GetElement(0) == "openPMD 1.1.0",
              "DetectedLayout %r" % reader.GetProperty("DetectedLayout").GetElement(0))

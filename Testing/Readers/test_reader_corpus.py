@@ -39,7 +39,7 @@ def start(entry):
             resource.setrlimit(resource.RLIMIT_AS, (ADDRESS_SPACE_BYTES, ADDRESS_SPACE_BYTES))
             resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
             signal.alarm(TIME_LIMIT_S)  # SIGALRM ends a hung child
-            reader = simple.ParaFluidHDF5Particles if entry.get("reader") == "particles" else simple.ParaFluidH5PartReader
+            reader = simple.ParaFluidHDF5Particles
             result = open_one.open_file(os.path.join(folder, entry["file"]), reader)
             with open(out, "w") as f:
                 json.dump(result, f)

@@ -8,7 +8,7 @@ out = pftest.scratch_dir()
 
 
 def expect_error(path, words):
-    reader = ParaFluidH5PartReader(FileName=path)
+    reader = ParaFluidHDF5Particles(FileName=path)
     catcher = pftest.ErrorCatcher(reader)
     reader.UpdatePipeline()
     text = catcher.text()
@@ -60,7 +60,7 @@ nan = os.path.join(out, "nan.h5part")
 pftest.write_h5(nan, """
 g = f.create_group('Step#0'); g['x'] = np.array([0.0, np.nan]); g['y'] = np.zeros(2); g['z'] = np.zeros(2)
 """)
-r = ParaFluidH5PartReader(FileName=nan)
+r = ParaFluidHDF5Particles(FileName=nan)
 pftest.check(pftest.fetch(r).GetNumberOfPoints() == 2, "NaN file should still load")
 # and the SPH filter refuses it with a clear message instead of computing garbage
 block = ParticleBlock()

@@ -16,7 +16,7 @@ pftest.check(len(times) == 5 and abs(times[1] - 0.005) < 1e-12, "SPH output time
 # All time steps into one file, then back.
 path = os.path.join(out, "all.h5part")
 SaveData(path, proxy=sph, WriteAllTimeSteps=1)
-reader = ParaFluidH5PartReader(FileName=path)
+reader = ParaFluidHDF5Particles(FileName=path)
 read_times = list(reader.TimestepValues)
 pftest.check(np.allclose(read_times, times), "times read back %s != written %s" % (read_times, times))
 for t in (times[0], times[-1]):
@@ -51,7 +51,7 @@ UpdatePipeline(times[2], sph)
 SaveData(single, proxy=sph)
 pftest.check(os.stat(single).st_ino != inode, "the second write did not go through a renamed temporary file")
 pftest.check(glob.glob(os.path.join(out, "*.tmp-*")) == [], "temporary files left behind")
-one = ParaFluidH5PartReader(FileName=single)
+one = ParaFluidHDF5Particles(FileName=single)
 pftest.check(len(one.TimestepValues) in (0, 1) or isinstance(one.TimestepValues, float), "single-step file has %s" % one.TimestepValues)
 
 # A write into a missing folder fails cleanly and does not touch the existing file.

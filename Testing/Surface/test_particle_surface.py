@@ -82,7 +82,7 @@ for s, (t, keep) in enumerate([(0.0, xs < 2.0), (0.1, xs < 0.5)]):
     g.attrs['TimeValue'] = t
     g['x'] = xs[keep]; g['y'] = ys[keep]; g['z'] = np.full(keep.sum(), 0.3)
 """)
-series = ParaFluidH5PartReader(FileName=path)
+series = ParaFluidHDF5Particles(FileName=path)
 falling = CarpetSurface(Input=series, Resolution=20)
 def heights(t):
     data = pftest.fetch(falling, t)

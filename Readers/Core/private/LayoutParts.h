@@ -13,8 +13,16 @@ void describeGadgetFile(hid_t file, const std::string& fileName, ParticleFileInf
 ParticleFrame describeGadgetFrame(const ParticleFileInfo& info);
 void describeOpenPmdFile(hid_t file, const std::string& fileName, ParticleFileInfo& info);
 ParticleFrame describeOpenPmdFrame(const ParticleFileInfo& info, std::size_t timeIndex);
+bool isPySphFile(hid_t file);
+void describePySphFile(hid_t file, ParticleFileInfo& info);
+ParticleFrame describePySphFrame(hid_t file, const ParticleFileInfo& info);
 void describeVtkHdfFile(hid_t file, ParticleFileInfo& info);
 ParticleFrame describeVtkHdfFrame(hid_t file, const ParticleFileInfo& info, std::size_t timeIndex);
+
+/// The files beside `fileName` that differ from it only in the number its name ends in (before the
+/// extension and, for a part of a multi-file snapshot, before the part's index), sorted by that
+/// number, `fileName` among them; empty when its name ends in no number or it has no such sibling.
+std::vector<std::string> numberedSeries(const std::string& fileName, bool multiFilePart);
 
 /// The names of the links in `group`, in name order.
 std::vector<std::string> linkNames(hid_t group);

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -45,7 +46,10 @@ struct StepLayout
   /// ("" where none) scaled by its own factor, and a constant per axis [SI].
   ArraySource coordinateOffset;
   double coordinateShift[3] = { 0.0, 0.0, 0.0 };
-  std::string idDataset;     // empty when the file has no usable "id" dataset
+  std::string idDataset; // empty when the file has no usable "id" dataset
+  /// A dataset whose rows other than 0 are not real particles (PySPH's remote and ghost tags),
+  /// left out by the readers; empty when every row is a particle.
+  std::string realTagDataset;
   std::int64_t idFrame = -1; // the frame of a time-dependent F x N id dataset
   std::vector<ArraySource> arrays;
   std::string error;                 // empty when the step is readable
@@ -72,6 +76,11 @@ struct DatasetNames
   std::vector<std::string> coordinates{ "position", "positions" };
   std::vector<std::string> ids{ "id" };
   std::map<std::string, std::string> arrays;
+  /// Vectors stored as three component datasets under names of the layout's own (PySPH's u, v,
+  /// w), besides vx/vy/vz and <name>_x/_y/_z: the vector's name and its x, y, z datasets.
+  std::vector<std::pair<std::string, std::vector<std::string>>> vectors;
+  /// Datasets that are not point arrays (PySPH's arrays it did not store, of no values).
+  std::set<std::string> skip;
 };
 
 /// The shape of a numeric dataset of rank 1 to 3 that holds what it declares; empty with `problem`
