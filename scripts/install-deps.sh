@@ -18,6 +18,8 @@ packages=(
   libxml2-dev libopenmpi-dev python3-dev python3-mpi4py libx11-dev libxt-dev libgl-dev
   # HDF5 in the flavour ParaView's VTK links (one libhdf5 per process) and Python access for tests
   libhdf5-openmpi-dev python3-h5py-mpi python3-numpy python3-matplotlib
+  # a real producer of PySPH output files for the reader tests
+  python3-pysph
   # rendering without a screen, MPI launcher
   xvfb xauth openmpi-bin
 )

@@ -11,12 +11,15 @@
  - a SelectionBox with min > max is an error naming it."""
 import glob
 import os
+import sys
 import subprocess
 
 import numpy as np
 from paraview.simple import *
 import pftest
-import cell_snapshot
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # pvbatch leaves the script's folder out
+import cell_snapshot  # noqa: E402
 
 pftest.load(globals())
 out = pftest.scratch_dir()
