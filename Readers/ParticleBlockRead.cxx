@@ -178,6 +178,7 @@ constexpr const char* kOffset = "#offset";
 bool readSource(const std::vector<BlockPart>& parts, const std::vector<Rows>& rows, const ArraySource& first,
                 const std::string& name, ValueType type, vtkDataArray* array, std::string& error)
 {
+  const bool scattered = rows.size() > parts.size(); // a spatial index's cells: many small blocks
   std::size_t openPart = parts.size();
   Handle file(-1, H5Fclose), group(-1, H5Gclose);
   const ArraySource* source = nullptr;
@@ -203,7 +204,7 @@ bool readSource(const std::vector<BlockPart>& parts, const std::vector<Rows>& ro
       }
       std::string fileError;
       group.reset();
-      file = Handle(parafluid::h5::openForReading(part.file, fileError), H5Fclose);
+      file = Handle(parafluid::h5::openForReading(part.file, fileError, scattered), H5Fclose);
       group = Handle(file.valid() ? H5Gopen2(file, part.group.c_str(), H5P_DEFAULT) : -1, H5Gclose);
       if (!group.valid())
       {
@@ -422,7 +423,9 @@ bool readParticleBlock(const parafluid::h5::ParticleBlock& block, const BlockRea
   { return !how.selection || how.selection->ArrayIsEnabled(name.c_str()); };
 
   std::string openError;
-  Handle file(parafluid::h5::openForReading(head.file, openError), H5Fclose);
+  // HDF5 shares one open file among its opens, with the first open's settings.
+  const bool scattered = rows.size() > block.parts.size();
+  Handle file(parafluid::h5::openForReading(head.file, openError, scattered), H5Fclose);
   Handle group(file.valid() ? H5Gopen2(file, head.group.c_str(), H5P_DEFAULT) : -1, H5Gclose);
   if (!group.valid())
   {
@@ -507,7 +510,7 @@ bool readParticleBlock(const parafluid::h5::ParticleBlock& block, const BlockRea
     bool read = false;
     if (!part.layout.idDataset.empty())
     {
-      Handle partFile(parafluid::h5::openForReading(part.file, problem), H5Fclose);
+      Handle partFile(parafluid::h5::openForReading(part.file, problem, scattered), H5Fclose);
       Handle partGroup(partFile.valid() ? H5Gopen2(partFile, part.group.c_str(), H5P_DEFAULT) : -1, H5Gclose);
       read =
         partGroup.valid() && parafluid::h5::readIds(partGroup, part.layout.idDataset, part.layout.firstRow + r.first,

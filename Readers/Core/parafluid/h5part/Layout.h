@@ -62,7 +62,8 @@ constexpr std::uint64_t kMaxComponents = 1024;
 
 /// Opens an HDF5 file for reading; -1 with `error` when it is missing, not a regular file (a
 /// named pipe would block HDF5 forever), not HDF5 or unreadable. Close with H5Fclose.
-hid_t openForReading(const std::string& fileName, std::string& error);
+/// `scatteredRows`: the reads will be many small row blocks (HDF5 reads no more than asked).
+hid_t openForReading(const std::string& fileName, std::string& error, bool scatteredRows = false);
 
 /// Steps sorted by index; steps whose time attribute is NaN/infinite or not increasing make every
 /// step's time its position in the list (with a warning). On failure returns nothing and sets error.
