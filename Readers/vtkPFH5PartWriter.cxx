@@ -1,5 +1,6 @@
 #include "vtkPFH5PartWriter.h"
 
+#include "H5mdFrameWriter.h"
 #include "ParticleArrays.h"
 #include "TemporaryFiles.h"
 #include "parafluid/h5part/Attributes.h"
@@ -38,6 +39,7 @@ struct vtkPFH5PartWriter::OpenFile
   std::string TemporaryName;
   parafluid::h5::TemporaryFileGuard Guard; // removes the temporary if a signal ends the process
   Handle File;
+  std::unique_ptr<parafluid::vtk::H5mdFrameWriter> H5md; // set when the file name ends in .h5md
 };
 
 namespace
@@ -283,11 +285,35 @@ bool vtkPFH5PartWriter::BeginFile()
     this->File.reset();
     return false;
   }
+  const std::size_t dot = this->FileName.rfind('.');
+  if (dot != std::string::npos && this->FileName.substr(dot) == ".h5md")
+  {
+    this->File->H5md = std::make_unique<parafluid::vtk::H5mdFrameWriter>(this->File->File, this->CompressionLevel);
+  }
   return true;
 }
 
 bool vtkPFH5PartWriter::WriteStep(vtkDataObject* input, int stepIndex, double time)
 {
+  if (this->File->H5md)
+  {
+    auto* particles = vtkPointSet::SafeDownCast(input);
+    std::vector<std::string> warnings;
+    std::string error = particles ? ""
+                                  : std::string("the input is a ") + (input ? input->GetClassName() : "null") +
+                                      ", not particles (a vtkPointSet)";
+    parafluid::h5::QuietErrors quiet;
+    const bool written = particles && this->File->H5md->write(particles, stepIndex, time, warnings, error);
+    for (const std::string& warning : warnings)
+    {
+      vtkWarningMacro("ParaFluid H5Part Writer: '" << this->FileName << "': " << warning);
+    }
+    if (!written)
+    {
+      vtkErrorMacro("ParaFluid H5Part Writer: '" << this->FileName << "': " << error << "; nothing was written");
+    }
+    return written;
+  }
   auto* points = vtkPointSet::SafeDownCast(input);
   if (!points)
   {

@@ -1,6 +1,10 @@
-"""ParticleBlock -> SPHStep -> H5Part writer -> reader keeps count, ids, arrays and times."""
+"""ParticleBlock -> SPHStep -> H5Part writer -> reader keeps count, ids, arrays and times; the
+same run written as H5MD (chosen by the .h5md extension) reads back identically, in H5MD's
+conventions (h5py: /h5md version, position/value frames x N x 3, step, time), and a run whose
+particle count changes between steps is refused for H5MD with the file left as it was."""
 import glob
 import os
+import subprocess
 import numpy as np
 from paraview.simple import *
 import pftest
@@ -61,4 +65,39 @@ catcher = pftest.ErrorCatcher(writer)
 writer.UpdatePipeline()
 pftest.check("cannot create" in catcher.text(), "no clear error for an unwritable path: %r" % catcher.text())
 pftest.check(open(single, "rb").read() == before, "existing file changed")
+# H5MD: the same run, every step a frame.
+h5md = os.path.join(out, "all.h5md")
+SaveData(h5md, proxy=sph, WriteAllTimeSteps=1)
+md = ParaFluidHDF5Particles(FileName=h5md)
+md.UpdatePipelineInformation()
+pftest.check(md.GetProperty("DetectedLayout").GetElement(0).startswith("H5MD 1.1"),
+             "DetectedLayout %r" % md.GetProperty("DetectedLayout").GetElement(0))
+pftest.check(np.allclose(list(md.TimestepValues), times), "H5MD times %s != %s" % (list(md.TimestepValues), times))
+for t in (times[0], times[-1]):
+    expected = pftest.fetch(sph, t)
+    got = pftest.fetch(md, t).GetBlock(0)
+    pftest.check(np.array_equal(pftest.points(expected), pftest.points(got)), "H5MD positions differ at t=%g" % t)
+    pftest.check(np.array_equal(pftest.point_array(expected, "id"), pftest.point_array(got, "id")), "H5MD ids at t=%g" % t)
+    for name in ("velocity", "density", "pressure", "mass"):
+        pftest.check(np.array_equal(pftest.point_array(expected, name), pftest.point_array(got, name)),
+                     "H5MD array %s differs at t=%g" % (name, t))
+shape = subprocess.run(["/usr/bin/python3", "-c", "import h5py; f = h5py.File(%r, 'r'); "
+                        "print(list(f['h5md'].attrs['version']), f['particles/all/position/value'].shape, "
+                        "len(f['particles/all/position/time']), f['particles/all/box'].attrs['dimension'])" % h5md],
+                       check=True, capture_output=True, text=True).stdout.split("\n")[0]
+n = pftest.fetch(sph, times[0]).GetNumberOfPoints()
+pftest.check(shape == "[1, 1] (5, %d, 3) 5 3" % n, "H5MD structure: %s" % shape)
+varying = os.path.join(out, "varying.h5part")
+pftest.write_h5(varying, """
+for k, n in enumerate((4, 6)):
+    g = f.create_group('Step#%d' % k); g.attrs['time'] = float(k)
+    g['x'] = np.arange(n, dtype='f4'); g['y'] = np.zeros(n, dtype='f4'); g['z'] = np.zeros(n, dtype='f4')
+""")
+before = open(h5md, "rb").read()
+writer = CreateWriter(h5md, ParaFluidHDF5Particles(FileName=varying))
+writer.WriteAllTimeSteps = 1
+catcher = pftest.ErrorCatcher(writer)
+writer.UpdatePipeline()
+pftest.check("same particles in every frame" in catcher.text(), "no clear error for a changing count: %r" % catcher.text())
+pftest.check(open(h5md, "rb").read() == before, "the refused H5MD write changed the existing file")
 print("round trip: ok")
