@@ -177,6 +177,9 @@ void DeltaSPHSolver::sumDensityRates(SimulationParts& sim)
     });
   // Written after the pass, which reads every neighbour's: the next step's diffusion uses these.
   std::swap(this->Fullness, this->NextFullness);
+  const std::size_t n = s.size();
+  sim.refreshGhosts({ this->Fullness.data(), this->Interior.data(), this->FullPush.data(), this->FullPush.data() + n,
+                      this->FullPush.data() + 2 * n });
   this->CorrectionFresh = true;
 }
 
@@ -211,5 +214,6 @@ void DeltaSPHSolver::advanceDensity(SimulationParts& sim, float dt)
     }
   }
   this->followSlowDeparture(sim, dt);
+  sim.refreshGhosts({ s.density.data(), this->SlowDeparture.data() });
 }
 } // namespace parafluid::sph

@@ -117,5 +117,6 @@ void DeltaSPHSolver::shiftParticles(SimulationParts& sim, float dt)
                                        0.01f * sim.particleSpacing());
     }
   }
+  sim.refreshGhosts({ s.x.data(), s.y.data(), s.z.data() });
 }
 } // namespace parafluid::sph

@@ -27,6 +27,7 @@ SolverEntry DeltaSPHSolver::registryEntry()
   e.particleShifting = true;
   e.holdsStrongCohesion = true;
   e.runoffCFLNumber = 0.1f; // at 0.2 its integrated density drifted up under a cloudburst
+  e.runsDistributed = true;
   e.create = [] { return std::unique_ptr<PressureSolver>(std::make_unique<DeltaSPHSolver>()); };
   e.stabilityAdvice = [](bool adaptive) -> std::string
   {

@@ -14,19 +14,16 @@ using namespace delta;
 
 double DeltaSPHSolver::automaticSoundSpeed(const SPHParameters& p, const ParticleState& s)
 {
+  return automaticSoundSpeed(p, fluidHeight(p, s), fastestSpeed(s));
+}
+
+double DeltaSPHSolver::automaticSoundSpeed(const SPHParameters& p, double height, double fastest)
+{
   if (p.soundSpeed > 0.0f)
   {
     return p.soundSpeed;
   }
   const double g = gravityMagnitude(p);
-  double fastest = 0.0;
-  for (std::size_t i = 0; i < s.size(); ++i)
-  {
-    fastest =
-      std::max(fastest, std::sqrt(static_cast<double>(s.vx[i]) * s.vx[i] + static_cast<double>(s.vy[i]) * s.vy[i] +
-                                  static_cast<double>(s.vz[i]) * s.vz[i]));
-  }
-  const double height = fluidHeight(p, s);
   double speed = std::max(std::sqrt(2.0 * g * height), fastest);
   if (p.surfaceTension > 0.0f)
   {
@@ -40,8 +37,12 @@ double DeltaSPHSolver::automaticSoundSpeed(const SPHParameters& p, const Particl
 void DeltaSPHSolver::start(SimulationParts& sim)
 {
   ParticleState& s = sim.state();
-  this->SoundSpeed = automaticSoundSpeed(sim.parameters(), s);
-  this->SlowDepartureTime = slowDepartureTime(sim.parameters(), s);
+  // Over every process of a distributed run (a ghost is some process's particle, so counting it
+  // changes no extreme): each takes the same sound speed.
+  const std::array<double, 2> range = heightRange(sim.parameters(), s);
+  const double height = fluidHeight(sim.parameters(), { -sim.globalMax(-range[0]), sim.globalMax(range[1]) });
+  this->SoundSpeed = automaticSoundSpeed(sim.parameters(), height, sim.globalMax(fastestSpeed(s)));
+  this->SlowDepartureTime = slowDepartureTime(sim.parameters(), height);
   this->PressureCorrection =
     latticeGradientCorrection(sim.particleSpacing(), sim.parameters().smoothingLength, DensityKernel::WendlandC2);
   // Density is state here: a given one (a prepared initial condition) is kept; otherwise the
@@ -63,6 +64,8 @@ void DeltaSPHSolver::start(SimulationParts& sim)
       this->WallSum[i] = sim.wall()->table.at(sim.wall()->contacts.distance[i]).sum;
     }
   }
+  // A ghost's column may reach past what this process holds: its owner's density counts.
+  sim.refreshGhosts({ s.density.data() });
   this->updatePressure(sim);
   this->computeAccelerations(sim);
 }
@@ -74,8 +77,13 @@ double DeltaSPHSolver::slowDepartureTime(const SPHParameters& p, const ParticleS
   // times the slowest acoustic period (4 H / c0), so acoustic noise stays in the fast part; a
   // departure held longer than that (a truncated kernel's at a free surface at rest) counts as slow.
   // Without gravity nothing holds the surface off hydrostatic, and the whole departure diffuses.
+  return slowDepartureTime(p, fluidHeight(p, s));
+}
+
+double DeltaSPHSolver::slowDepartureTime(const SPHParameters& p, double height)
+{
   const double g = gravityMagnitude(p);
-  return g > 0.0 ? std::sqrt(fluidHeight(p, s) / g) : 0.0;
+  return g > 0.0 ? std::sqrt(height / g) : 0.0;
 }
 
 void DeltaSPHSolver::hydrostaticDensity(const SPHParameters& p, double soundSpeed, float spacing, ParticleState& s)

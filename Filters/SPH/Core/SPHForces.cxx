@@ -198,6 +198,11 @@ void SPHSolver::computeAccelerations(bool withPressure)
   const bool tension = p.surfaceTension > 0.0f && p.surfaceTensionModel == SurfaceTensionModel::ColourField;
   const std::size_t n = s.size();
   const int threads = threadCount(p);
+  if (this->Ghosts)
+  {
+    // Each ghost's summed density is cut where this process's particles end: its owner's counts.
+    this->Ghosts->refresh({ s.density.data(), s.pressure.data() });
+  }
   if (!withPressure && !viscosity && !tension)
   {
     // Nothing between particles: gravity alone, no neighbour pass.

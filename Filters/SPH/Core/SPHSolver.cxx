@@ -26,7 +26,14 @@ using detail::threadCount;
 
 SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial,
                      std::shared_ptr<const TriangleBoundary> boundary)
-  : Parameters(parameters)
+  : SPHSolver(parameters, std::move(initial), std::move(boundary), nullptr)
+{
+}
+
+SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial,
+                     std::shared_ptr<const TriangleBoundary> boundary, GhostLayer* ghosts)
+  : Ghosts(ghosts)
+  , Parameters(parameters)
   , State(std::move(initial))
   , Boundary(std::move(boundary))
 {
@@ -37,7 +44,7 @@ SPHSolver::SPHSolver(const SPHParameters& parameters, ParticleState initial,
   }
   completeInitialState(this->State);
   checkCoincident(this->State);
-  this->SpeedLimit = sceneSpeedLimit(this->Parameters, this->State);
+  this->SpeedLimit = this->globalMax(sceneSpeedLimit(this->Parameters, this->State));
   // Particles that start outside the domain are reflected inside, as the walls would do.
   this->drift(0.0f);
   this->sortByCell();
@@ -68,36 +75,53 @@ std::int64_t SPHSolver::advance(double duration, const std::function<bool(double
 {
   checkAdvanceDuration(duration);
   const double begin = this->Time;
-  ParticleState& s = this->State;
-  const auto n = static_cast<std::int64_t>(s.size());
-  const int threads = threadCount(this->Parameters);
-  this->PressureImpulse.assign(s.size(), 0.0f);
+  this->beginPressureMean();
   const std::int64_t taken = advanceInSteps(
     this->Parameters, this->Time, duration,
     [&](double remaining)
     {
       const double dt = this->step(remaining);
-      const auto weight = static_cast<float>(dt);
-#pragma omp parallel for schedule(static) num_threads(threads)
-      for (std::int64_t i = 0; i < n; ++i)
-      {
-        this->PressureImpulse[i] += weight * s.pressure[i];
-      }
+      this->addToPressureMean(dt);
       return dt;
     },
     progress, [this] { return this->stabilityAdvice(); });
-  const double elapsed = this->Time - begin;
+  this->endPressureMean(this->Time - begin);
+  return taken;
+}
+
+void SPHSolver::beginPressureMean()
+{
+  this->PressureImpulse.assign(this->State.size(), 0.0f);
+  this->AveragingPressure = true;
+}
+
+void SPHSolver::addToPressureMean(double dt)
+{
+  ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
+  const auto weight = static_cast<float>(dt);
+#pragma omp parallel for schedule(static) num_threads(threadCount(this->Parameters))
+  for (std::int64_t i = 0; i < n; ++i)
+  {
+    this->PressureImpulse[i] += weight * s.pressure[i];
+  }
+}
+
+void SPHSolver::endPressureMean(double elapsed)
+{
+  ParticleState& s = this->State;
+  const auto n = static_cast<std::int64_t>(s.size());
   if (elapsed > 0.0)
   {
     const auto scale = static_cast<float>(1.0 / elapsed);
-#pragma omp parallel for schedule(static) num_threads(threads)
+#pragma omp parallel for schedule(static) num_threads(threadCount(this->Parameters))
     for (std::int64_t i = 0; i < n; ++i)
     {
       s.pressure[i] = scale * this->PressureImpulse[i];
     }
   }
   this->PressureImpulse.clear(); // step() on its own leaves each step's pressure
-  return taken;
+  this->AveragingPressure = false;
 }
 
 double SPHSolver::step(double maxStep)
@@ -123,24 +147,53 @@ double SPHSolver::step(double maxStep)
 void SPHSolver::addParticles(const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z,
                              const std::vector<float>& vx, const std::vector<float>& vy, const std::vector<float>& vz)
 {
-  ParticleState& s = this->State;
-  const std::size_t n = s.size();
-  const std::size_t added = appendParticles(s, x, y, z, vx, vy, vz, this->Parameters.restDensity);
-  if (added == 0)
+  if (this->appendParticles(x, y, z, vx, vy, vz) == 0)
   {
     return;
   }
-  if (!this->PressureImpulse.empty())
-  {
-    this->PressureImpulse.resize(n + added, 0.0f);
-  }
-  this->Pressure->resize(n + added);
-  this->drift(0.0f); // inside the walls
   this->sortByCell();
+  this->restartPressure();
+}
+
+std::size_t SPHSolver::appendParticles(const std::vector<float>& x, const std::vector<float>& y,
+                                       const std::vector<float>& z, const std::vector<float>& vx,
+                                       const std::vector<float>& vy, const std::vector<float>& vz)
+{
+  ParticleState& s = this->State;
+  const std::size_t n = s.size();
+  const std::size_t added = sph::appendParticles(s, x, y, z, vx, vy, vz, this->Parameters.restDensity);
+  if (added > 0)
   {
-    SimulationParts parts(*this);
-    this->Pressure->restart(parts);
+    if (this->AveragingPressure)
+    {
+      this->PressureImpulse.resize(n + added, 0.0f);
+    }
+    this->Pressure->resize(n + added);
+    this->drift(0.0f); // inside the walls
   }
+  return added;
+}
+
+void SPHSolver::numberParticles(std::size_t from, std::int64_t firstId, std::uint32_t firstIndex)
+{
+  ParticleState& s = this->State;
+  for (std::size_t i = from; i < s.size(); ++i)
+  {
+    s.id[i] = firstId + static_cast<std::int64_t>(i - from);
+    s.originalIndex[i] = firstIndex + static_cast<std::uint32_t>(i - from);
+  }
+}
+
+void SPHSolver::restartPressure()
+{
+  SimulationParts parts(*this);
+  this->Pressure->restart(parts);
+}
+
+void SPHSolver::startPressure()
+{
+  SimulationParts parts(*this);
+  this->Pressure->start(parts);
 }
 
 std::size_t SPHSolver::removeParticles(const std::vector<std::uint8_t>& remove)
@@ -188,24 +241,138 @@ std::size_t SPHSolver::removeParticles(const std::vector<std::uint8_t>& remove)
     this->PressureImpulse.resize(kept);
   }
   this->sortByCell();
-  {
-    SimulationParts parts(*this);
-    this->Pressure->start(parts);
-  }
+  this->startPressure();
   return n - kept;
+}
+
+void SPHSolver::sortState()
+{
+  // sortByCell leaves behind what the step recomputes after it (accelerations, WCSPH's density and
+  // pressure); between steps these are state, so they move with their particles here.
+  ParticleState& s = this->State;
+  std::vector<float>* kept[] = { &s.ax, &s.ay, &s.az, &s.density, &s.pressure };
+  std::vector<std::vector<float>> before;
+  for (std::vector<float>* column : kept)
+  {
+    before.push_back(*column);
+  }
+  this->sortByCell();
+  const std::vector<std::uint32_t>& order = this->Grid.sortedOrder();
+  for (std::size_t c = 0; c < before.size(); ++c)
+  {
+    std::vector<float>& column = *kept[c];
+    for (std::size_t k = 0; k < order.size(); ++k)
+    {
+      column[k] = before[c][order[k]];
+    }
+  }
+}
+
+std::size_t SPHSolver::ownCount() const
+{
+  const std::uint8_t* ghost = this->ghostFlags();
+  const std::size_t n = this->State.size();
+  return ghost ? n - static_cast<std::size_t>(std::count(ghost, ghost + n, std::uint8_t(1))) : n;
+}
+
+std::vector<std::vector<float>*> SPHSolver::carriedColumns()
+{
+  ParticleState& s = this->State;
+  std::vector<std::vector<float>*> columns = { &s.x,  &s.y,  &s.z,  &s.vx,      &s.vy,      &s.vz,
+                                               &s.ax, &s.ay, &s.az, &s.density, &s.pressure };
+  for (std::vector<float>* c : this->Pressure->carried())
+  {
+    columns.push_back(c);
+  }
+  if (this->AveragingPressure)
+  {
+    columns.push_back(&this->PressureImpulse);
+  }
+  return columns;
+}
+
+ParticleRows SPHSolver::takeRows(const std::vector<std::uint8_t>& take)
+{
+  ParticleState& s = this->State;
+  const std::size_t n = s.size();
+  if (take.size() != n)
+  {
+    throw std::invalid_argument("SPH: takeRows needs one flag per particle");
+  }
+  ParticleRows rows;
+  const std::vector<std::vector<float>*> columns = this->carriedColumns();
+  rows.columns.resize(columns.size());
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (take[i])
+    {
+      for (std::size_t c = 0; c < columns.size(); ++c)
+      {
+        rows.columns[c].push_back((*columns[c])[i]);
+      }
+      rows.id.push_back(s.id[i]);
+      rows.originalIndex.push_back(s.originalIndex[i]);
+      continue;
+    }
+    for (std::vector<float>* column : columns)
+    {
+      (*column)[kept] = (*column)[i];
+    }
+    s.id[kept] = s.id[i];
+    s.originalIndex[kept] = s.originalIndex[i];
+    ++kept;
+  }
+  for (std::vector<float>* column : columns)
+  {
+    column->resize(kept);
+  }
+  s.id.resize(kept);
+  s.originalIndex.resize(kept);
+  this->Pressure->resize(kept);
+  if (this->Wall)
+  {
+    this->Wall->contacts.triangle.clear(); // the next search starts without hints
+  }
+  return rows;
+}
+
+void SPHSolver::appendRows(const ParticleRows& rows)
+{
+  const std::vector<std::vector<float>*> columns = this->carriedColumns();
+  if (rows.columns.size() != columns.size())
+  {
+    throw std::invalid_argument("SPH: appendRows got " + std::to_string(rows.columns.size()) + " columns, not " +
+                                std::to_string(columns.size()));
+  }
+  ParticleState& s = this->State;
+  for (std::size_t c = 0; c < columns.size(); ++c)
+  {
+    columns[c]->insert(columns[c]->end(), rows.columns[c].begin(), rows.columns[c].end());
+  }
+  s.id.insert(s.id.end(), rows.id.begin(), rows.id.end());
+  s.originalIndex.insert(s.originalIndex.end(), rows.originalIndex.begin(), rows.originalIndex.end());
+  // The solver's other arrays are summed afresh in the next step.
+  this->Pressure->resize(s.size());
+  if (this->Wall)
+  {
+    this->Wall->contacts.triangle.clear();
+  }
 }
 
 double SPHSolver::largestLength(const std::vector<float>& x, const std::vector<float>& y,
                                 const std::vector<float>& z) const
 {
   const auto n = static_cast<std::int64_t>(x.size());
+  const std::uint8_t* ghost = this->ghostFlags();
   float l2 = 0.0f;
 #pragma omp parallel for schedule(static) reduction(max : l2) num_threads(threadCount(this->Parameters))
   for (std::int64_t i = 0; i < n; ++i)
   {
-    l2 = std::max(l2, x[i] * x[i] + y[i] * y[i] + z[i] * z[i]);
+    const float length2 = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
+    l2 = ghost && ghost[i] ? l2 : std::max(l2, length2);
   }
-  return std::sqrt(static_cast<double>(l2));
+  return this->globalMax(std::sqrt(static_cast<double>(l2)));
 }
 
 double SPHSolver::maxAcceleration() const
@@ -237,13 +404,14 @@ void SPHSolver::checkFinite() const
   const float* vx = this->State.vx.data();
   const float* vy = this->State.vy.data();
   const float* vz = this->State.vz.data();
+  const std::uint8_t* ghost = this->ghostFlags();
   double total = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : total) num_threads(threadCount(this->Parameters))
   for (std::int64_t i = 0; i < n; ++i)
   {
-    total += std::fabs(vx[i]) + std::fabs(vy[i]) + std::fabs(vz[i]);
+    total += ghost && ghost[i] ? 0.0 : std::fabs(vx[i]) + std::fabs(vy[i]) + std::fabs(vz[i]);
   }
-  if (!std::isfinite(total))
+  if (!std::isfinite(this->globalSum(total)))
   {
     throw std::runtime_error("SPH became unstable at step " + std::to_string(this->Steps) +
                              " (non-finite velocity): " + this->stabilityAdvice());
@@ -255,17 +423,21 @@ void SPHSolver::measureCompression()
   const auto n = static_cast<std::int64_t>(this->State.size());
   const float* rho = this->State.density.data();
   const float rho0 = this->Parameters.restDensity;
+  const std::uint8_t* ghost = this->ghostFlags();
   double total = 0.0;
   float highest = 0.0f;
 #pragma omp parallel for schedule(static) reduction(+ : total) reduction(max : highest)                          \
   num_threads(threadCount(this->Parameters))
   for (std::int64_t i = 0; i < n; ++i)
   {
-    total += std::max(rho[i] - rho0, 0.0f);
-    highest = std::max(highest, rho[i]);
+    const bool own = !(ghost && ghost[i]);
+    total += own ? std::max(rho[i] - rho0, 0.0f) : 0.0f;
+    highest = own ? std::max(highest, rho[i]) : highest;
   }
-  this->Last.meanCompression = n > 0 ? total / (static_cast<double>(n) * rho0) : 0.0;
-  this->Last.maxDensityRatio = static_cast<double>(highest) / rho0;
+  const double count = this->globalSum(static_cast<double>(this->ownCount()));
+  total = this->globalSum(total);
+  this->Last.meanCompression = count > 0.0 ? total / (count * rho0) : 0.0;
+  this->Last.maxDensityRatio = this->globalMax(static_cast<double>(highest)) / rho0;
 }
 
 std::string SPHSolver::stabilityAdvice() const
@@ -300,6 +472,19 @@ void SPHSolver::checkPhysical() const
 void SPHSolver::sortByCell()
 {
   ParticleState& s = this->State;
+  if (this->Ghosts)
+  {
+    // The grid refuses a non-finite position; every process refuses together, none is left waiting.
+    double bad = 0.0;
+    for (std::size_t i = 0; i < s.size(); ++i)
+    {
+      bad += std::isfinite(s.x[i] + s.y[i] + s.z[i]) ? 0.0 : 1.0;
+    }
+    if (this->globalSum(bad) > 0.0)
+    {
+      throw std::invalid_argument("SPH: non-finite positions");
+    }
+  }
   for (int a = 0; a < 3; ++a)
   {
     if (this->Parameters.periodic[a])
@@ -335,6 +520,10 @@ void SPHSolver::sortByCell()
   {
     // Each particle's last mesh triangle goes with it: the next search starts from it.
     permute(this->Wall->contacts.triangle, this->ScratchIndex, order, threads);
+  }
+  if (this->Ghosts)
+  {
+    this->Ghosts->permuted(order);
   }
   this->findMeshWalls();
   // Summed densities and every pressure are recomputed from the sorted positions next.
@@ -442,14 +631,16 @@ double SPHSolver::kineticEnergy() const
 {
   const ParticleState& s = this->State;
   const auto n = static_cast<std::int64_t>(s.size());
+  const std::uint8_t* ghost = this->ghostFlags();
   double sum = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : sum) num_threads(threadCount(this->Parameters))
   for (std::int64_t i = 0; i < n; ++i)
   {
-    sum += static_cast<double>(s.vx[i]) * s.vx[i] + static_cast<double>(s.vy[i]) * s.vy[i] +
-           static_cast<double>(s.vz[i]) * s.vz[i];
+    const double v2 = static_cast<double>(s.vx[i]) * s.vx[i] + static_cast<double>(s.vy[i]) * s.vy[i] +
+                      static_cast<double>(s.vz[i]) * s.vz[i];
+    sum += ghost && ghost[i] ? 0.0 : v2;
   }
-  return 0.5 * this->Parameters.particleMass * sum;
+  return 0.5 * this->Parameters.particleMass * this->globalSum(sum);
 }
 
 double SPHSolver::bytesPerParticle() const

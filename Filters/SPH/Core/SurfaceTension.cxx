@@ -180,6 +180,10 @@ void SPHSolver::computeSurfaceNormals()
     default:
       sum(Poly6Gradient{ Poly6Kernel(h) });
   }
+  if (this->Ghosts)
+  {
+    this->Ghosts->refresh({ normal[0], normal[1], normal[2] });
+  }
 }
 
 void SPHSolver::addSurfaceTension()

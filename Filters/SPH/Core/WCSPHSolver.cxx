@@ -32,6 +32,7 @@ SolverEntry WCSPHSolver::registryEntry()
   e.colourFieldSurfaceTension = true;
   e.holdsStrongCohesion = true;
   e.runoffCFLNumber = 0.1f;
+  e.runsDistributed = true;
   e.create = [] { return std::unique_ptr<PressureSolver>(std::make_unique<WCSPHSolver>()); };
   e.stabilityAdvice = [](bool adaptive) -> std::string
   {

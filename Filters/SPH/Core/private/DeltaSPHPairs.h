@@ -9,8 +9,10 @@
 #include "private/NeighbourCandidates.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace parafluid::sph::delta
 {
@@ -174,17 +176,42 @@ inline double gravityMagnitude(const SPHParameters& p)
                    static_cast<double>(p.gravity[2]) * p.gravity[2]);
 }
 
-/// The fluid's height along gravity [m], counting its top layer of particles (half a kernel radius).
-inline double fluidHeight(const SPHParameters& p, const ParticleState& s)
+/// The lowest and highest height against gravity over the particles [m] (+inf and -inf for none).
+inline std::array<double, 2> heightRange(const SPHParameters& p, const ParticleState& s)
 {
   const double g = gravityMagnitude(p);
-  double lowest = 0.0, highest = 0.0;
+  std::array<double, 2> range = { std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity() };
   for (std::size_t i = 0; i < s.size(); ++i)
   {
     const double along = g > 0.0 ? -(s.x[i] * p.gravity[0] + s.y[i] * p.gravity[1] + s.z[i] * p.gravity[2]) / g : 0.0;
-    lowest = i == 0 ? along : std::min(lowest, along);
-    highest = i == 0 ? along : std::max(highest, along);
+    range[0] = std::min(range[0], along);
+    range[1] = std::max(range[1], along);
   }
-  return highest - lowest + 0.5 * p.smoothingLength;
+  return range;
+}
+
+/// The fluid's height along gravity [m] over a height range, counting its top layer of particles
+/// (half a kernel radius).
+inline double fluidHeight(const SPHParameters& p, const std::array<double, 2>& range)
+{
+  return (range[1] >= range[0] ? range[1] - range[0] : 0.0) + 0.5 * p.smoothingLength;
+}
+
+inline double fluidHeight(const SPHParameters& p, const ParticleState& s)
+{
+  return fluidHeight(p, heightRange(p, s));
+}
+
+/// The fastest particle's speed [m/s] (0 for none).
+inline double fastestSpeed(const ParticleState& s)
+{
+  double fastest = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    fastest =
+      std::max(fastest, std::sqrt(static_cast<double>(s.vx[i]) * s.vx[i] + static_cast<double>(s.vy[i]) * s.vy[i] +
+                                  static_cast<double>(s.vz[i]) * s.vz[i]));
+  }
+  return fastest;
 }
 } // namespace parafluid::sph::delta

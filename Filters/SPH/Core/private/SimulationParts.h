@@ -42,6 +42,17 @@ public:
   void computeAccelerations(bool withPressure) { this->Sim.computeAccelerations(withPressure); }
   /// Akinci's surface tension added to the accelerations (SurfaceTension.cxx).
   void addSurfaceTension() { this->Sim.addSurfaceTension(); }
+  /// In a distributed run, the owners' values of these per-particle columns copied into the ghosts
+  /// (GhostLayer::refresh); nothing in a serial run.
+  void refreshGhosts(std::initializer_list<float*> columns)
+  {
+    if (this->Sim.Ghosts)
+    {
+      this->Sim.Ghosts->refresh(columns);
+    }
+  }
+  /// The largest value over the processes of a distributed run (the value in a serial run).
+  double globalMax(double value) const { return this->Sim.globalMax(value); }
   /// The largest |(x_i, y_i, z_i)| over the particles.
   double largestLength(const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z) const
   {

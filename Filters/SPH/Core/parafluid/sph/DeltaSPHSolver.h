@@ -49,6 +49,10 @@ public:
   void permute(SimulationParts& sim, const std::vector<std::uint32_t>& order, std::vector<float>& scratch,
                int threads) override;
   void resize(std::size_t n) override;
+  std::vector<std::vector<float>*> carried() override
+  {
+    return { &this->WallSum, &this->Fullness, &this->SlowDeparture };
+  }
   std::size_t bytes() const override
   {
     return (this->DensityRate.capacity() + this->Correction.capacity() + this->Fullness.capacity() +
@@ -61,6 +65,8 @@ public:
   /// fluid's height along gravity (Monaghan 1994: density then varies by about 1 %), at least ten
   /// times the fastest initial speed and (with surface tension) the speed of its cohesive pressure.
   static double automaticSoundSpeed(const SPHParameters& p, const ParticleState& s);
+  /// The same from the fluid's height along gravity [m] and its fastest initial speed [m/s].
+  static double automaticSoundSpeed(const SPHParameters& p, double height, double fastest);
 
   /// Density of hydrostatic equilibrium under gravity along an axis at sound speed c0 [m/s] (rest
   /// density otherwise), each particle's depth counted in columns one particle spacing [m] wide.
@@ -68,6 +74,7 @@ public:
   /// [s] the time over which the slow part of the density's departure follows it (SlowDeparture):
   /// sqrt(H / g) of the fluid's height H; 0 without gravity.
   static double slowDepartureTime(const SPHParameters& p, const ParticleState& s);
+  static double slowDepartureTime(const SPHParameters& p, double height);
 
 private:
   /// Pressure from density by the equation of state.

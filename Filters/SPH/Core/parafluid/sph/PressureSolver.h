@@ -39,6 +39,9 @@ public:
   /// After particles were added and the state sorted: what start() computes, keeping what the
   /// solver carries from step to step (DFSPH's warm starts). By default start() again.
   virtual void restart(SimulationParts& simulation) { this->start(simulation); }
+  /// The per-particle arrays (one float per particle, state order) this solver carries from one
+  /// step to the next, which a particle handed to another process of a distributed run takes along.
+  virtual std::vector<std::vector<float>*> carried() { return {}; }
   /// Bytes held by this solver's arrays.
   virtual std::size_t bytes() const = 0;
 };

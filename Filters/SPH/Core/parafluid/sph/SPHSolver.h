@@ -11,6 +11,7 @@
 // The state is kept sorted by grid cell so neighbour loops read memory contiguously.
 #include "parafluid/common/NeighbourGrid.h"
 #include "parafluid/common/ParticleState.h"
+#include "parafluid/sph/GhostLayer.h"
 #include "parafluid/sph/PressureSolver.h"
 #include "parafluid/sph/SPHParameters.h"
 #include "parafluid/sph/Simulation.h"
@@ -32,6 +33,16 @@ namespace detail
 struct MeshWall;
 }
 
+/// Whole particles as columns, to move between the processes of a distributed run: every float
+/// column SPHSolver::carriedColumns() lists, in that order, then the ids and original indices.
+struct ParticleRows
+{
+  std::vector<std::vector<float>> columns;
+  std::vector<std::int64_t> id;
+  std::vector<std::uint32_t> originalIndex;
+  std::size_t size() const { return id.size(); }
+};
+
 /// The CPU implementation of Simulation (OpenMP, SIMD pair loops).
 class SPHSolver final : public Simulation
 {
@@ -40,6 +51,10 @@ public:
   /// boundary mesh. Throws std::invalid_argument for bad parameters or non-finite input.
   SPHSolver(const SPHParameters& parameters, ParticleState initial,
             std::shared_ptr<const TriangleBoundary> boundary = nullptr);
+  /// One process's region of a distributed run: `initial` holds its own particles and, flagged by
+  /// `ghosts` (which outlives this), the ghosts; its reductions and refreshes are the layer's.
+  SPHSolver(const SPHParameters& parameters, ParticleState initial, std::shared_ptr<const TriangleBoundary> boundary,
+            GhostLayer* ghosts);
   ~SPHSolver();
   SPHSolver(SPHSolver&&) noexcept;
   SPHSolver& operator=(SPHSolver&&) noexcept;
@@ -66,6 +81,32 @@ public:
   std::size_t removeParticles(const std::vector<std::uint8_t>& remove) override;
   /// The step the time-step control would take now [s] (WCSPH; DFSPH adds non-pressure forces first).
   double proposedTimeStep() const override;
+
+  // What a distributed run moves particles with (DistributedSimulation): whole particles leave
+  // and join the state without the pressure solver restarting, so a particle handed to another
+  // process carries on as it would have here.
+  /// The per-particle float columns a particle carries from step to step, in a fixed order: the
+  /// state's, the pressure solver's, and the pressure mean's while an advance runs.
+  std::vector<std::vector<float>*> carriedColumns();
+  /// Takes out the particles whose flag is non-zero (state order) and returns them whole.
+  ParticleRows takeRows(const std::vector<std::uint8_t>& take);
+  /// Appends whole particles at the end of the state (unsorted until sortState()).
+  void appendRows(const ParticleRows& rows);
+  /// Sorts the state by grid cell after rows moved, every carried column with its particle (the
+  /// ghost layer is told the order).
+  void sortState();
+  /// Appends particles as addParticles() does, neither sorted nor started (restartPressure()).
+  std::size_t appendParticles(const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z,
+                              const std::vector<float>& vx, const std::vector<float>& vy, const std::vector<float>& vz);
+  /// Gives the particles from index `from` on consecutive ids and original indices.
+  void numberParticles(std::size_t from, std::int64_t firstId, std::uint32_t firstIndex);
+  /// The pressure solver's restart after particles were added, or its start after some were removed.
+  void restartPressure();
+  void startPressure();
+  /// The time-weighted mean pressure of advance(), for a caller that takes the steps itself.
+  void beginPressureMean();
+  void addToPressureMean(double dt);
+  void endPressureMean(double elapsed);
 
   const ParticleState& state() const { return this->State; }
   const ParticleState& hostState() const override { return this->State; }
@@ -106,7 +147,8 @@ private:
   void checkFinite() const;
   double chooseTimeStep(double remaining) const;
   double maxAcceleration() const;
-  /// The largest |(x_i, y_i, z_i)| over the particles (0 for none).
+  /// The largest |(x_i, y_i, z_i)| over the particles (0 for none); in a distributed run over every
+  /// process's own particles.
   double largestLength(const std::vector<float>& x, const std::vector<float>& y, const std::vector<float>& z) const;
   void kick(float dt);
   void drift(float dt);
@@ -129,6 +171,18 @@ private:
   // The pressure solvers advance the simulation through its shared parts (grid, walls, forces,
   // time-step control), which they reach only through SimulationParts, and keep their own arrays.
   friend class SimulationParts;
+
+  /// An advance is summing the time-weighted pressure (PressureImpulse).
+  bool AveragingPressure = false;
+  /// The other processes of a distributed run, or null.
+  GhostLayer* Ghosts = nullptr;
+  /// The value reduced over the processes (itself in a serial run).
+  double globalSum(double value) const { return this->Ghosts ? this->Ghosts->sum(value) : value; }
+  double globalMax(double value) const { return this->Ghosts ? this->Ghosts->max(value) : value; }
+  /// Null, or a flag per particle that is 1 for a ghost.
+  const std::uint8_t* ghostFlags() const { return this->Ghosts ? this->Ghosts->ghostFlags().data() : nullptr; }
+  /// Each process's own particles in the state.
+  std::size_t ownCount() const;
 
   SPHParameters Parameters;
   ParticleState State;

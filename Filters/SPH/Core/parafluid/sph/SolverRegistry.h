@@ -46,6 +46,8 @@ struct SolverEntry
   // (a resting drop holds); SPH Step warns where they are not.
   bool holdsStrongCohesion;
   float runoffCFLNumber; // the Rain filter's automatic CFL number for this solver
+  // Every pass that reads neighbours' values refreshes the ghosts they read (DistributedSimulation).
+  bool runsDistributed;
   std::unique_ptr<PressureSolver> (*create)();
   /// What to change when a run blows up, in SPH Step's property names.
   std::string (*stabilityAdvice)(bool adaptiveTimeStep);
