@@ -133,7 +133,8 @@ int vtkPFParticleAlgorithm::RequestData(vtkInformation*, vtkInformationVector** 
   // 0, which does the work (ghost exchange would let each process keep its own). Every process
   // takes part in every gather before any of them returns.
   bool holdsAll = true;
-  vtkSmartPointer<vtkDataObject> gathered = parafluid::vtk::gatherToFirstProcess(local, holdsAll);
+  const bool pieces = parafluid::vtk::processCount() > 1 && this->WorksOnPieces();
+  vtkSmartPointer<vtkDataObject> gathered = pieces ? local : parafluid::vtk::gatherToFirstProcess(local, holdsAll);
   vtkSmartPointer<vtkDataObject> gatheredExtra;
   vtkPointSet* localExtra =
     this->GatheredInputPort >= 0 && inputVector[this->GatheredInputPort]->GetNumberOfInformationObjects() > 0
@@ -152,6 +153,12 @@ int vtkPFParticleAlgorithm::RequestData(vtkInformation*, vtkInformationVector** 
   else
   {
     vtkSmartPointer<vtkPointSet> finite = this->ApplyNonFinitePolicy(vtkPointSet::SafeDownCast(gathered));
+    if (pieces && !parafluid::vtk::agreeOnAllProcesses(finite != nullptr))
+    {
+      // Every process works on its piece collectively: none starts when one refused its input.
+      output->Initialize();
+      return 0;
+    }
     Particles particles;
     particles.Gathered = finite;
     particles.Local = local;

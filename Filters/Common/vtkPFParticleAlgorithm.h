@@ -5,7 +5,8 @@
  *
  * RequestData checks that input 0 is a point set, gathers the pieces of all processes on process
  * 0 under MPI (as well as those of the extra ports named by SetGatheredInputPort), leaves the
- * output empty on the other processes, and hands the gathered particles to RequestParticles.
+ * output empty on the other processes, and hands the gathered particles to RequestParticles;
+ * a filter that WorksOnPieces gets each process's own piece on every process instead.
  * Errors are reported with the filter's GUI label in front, so the user knows which filter
  * speaks.
  */
@@ -38,7 +39,8 @@ protected:
     vtkPointSet* Local = nullptr;    ///< this process's own piece: its MTime and time say what changed
     vtkPointSet* Extra = nullptr;    ///< the gathered points of the extra port, or null
   };
-  /// The filter's work, called on the process that holds all the particles (process 0).
+  /// The filter's work, called on the process that holds all the particles (process 0), or on
+  /// every process with its piece (WorksOnPieces).
   virtual int RequestParticles(const Particles& particles, vtkInformationVector** inputVector, vtkInformation* outInfo,
                                vtkPolyData* output) = 0;
 
@@ -55,6 +57,11 @@ protected:
     this->NonFinitePolicy = policy;
     this->FiniteArrays = std::move(arrays);
   }
+
+  /// True when this update runs on every process with its own piece, the filter exchanging what
+  /// its particles need itself (a distributed SPH run): the pieces are not gathered, and
+  /// RequestParticles gets the local piece as Gathered on every process. Default: false.
+  virtual bool WorksOnPieces() const { return false; }
 
   /// An optional input port whose points are gathered too (seeds); -1: none.
   void SetGatheredInputPort(int port) { this->GatheredInputPort = port; }

@@ -1,5 +1,6 @@
 #include "vtkPFSPHStep.h"
 
+#include "DistributedStep.h"
 #include "EnumerationChoice.h"
 #include "GuardedRequest.h"
 #include "LongWork.h"
@@ -10,9 +11,11 @@
 #include "TriangleBoundaryFromSurface.h"
 
 #include "HeightImage.h"
+#include "ProcessCommunicator.h"
 #include "parafluid/common/MemoryBudget.h"
 #include "vtkImageData.h"
 
+#include "parafluid/sph/DistributedSimulation.h"
 #include "parafluid/sph/SPHParameterTable.h"
 #include "parafluid/sph/Simulation.h"
 #include "parafluid/sph/SolverRegistry.h"
@@ -222,17 +225,30 @@ int vtkPFSPHStep::RequestParticles(const Particles& particles, vtkInformationVec
   Cache& cache = *this->Cached;
   vtkDataObject* boundaryData = vtkDataObject::GetData(inputVector[1]);
   cache.follow({ particles.Local->GetMTime(), boundaryData ? boundaryData->GetMTime() : 0, this->GetMTime() });
-  if (const KeptOutputInfo* kept = cache.restore(target, { output }))
+  // A distributed run's processes restore, continue or restart together.
+  const bool distributed = this->WorksOnPieces() && parafluid::vtk::processCount() > 1;
+  auto together = [distributed](bool ok) { return distributed ? parafluid::vtk::agreeOnAllProcesses(ok) : ok; };
+  const KeptOutputInfo* kept = cache.restore(target, { output });
+  if (together(kept != nullptr))
   {
     this->MeanDensityError = kept->meanDensityError;
     output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(),
                                   this->StartTime + static_cast<double>(target) * this->OutputInterval);
     return 1;
   }
-  if (!cache.canContinueTo(target))
+  if (!together(cache.canContinueTo(target)))
   {
     vtkSmartPointer<vtkPolyData> boundary;
-    if (!this->ReadBoundary(boundaryData, boundary) || !this->StartSimulation(particles.Gathered, boundary))
+    if (distributed)
+    {
+      const vtkSmartPointer<vtkDataObject> whole = parafluid::vtk::boundaryOnEveryProcess(boundaryData);
+      const bool read = this->ReadBoundary(whole, boundary);
+      if (!this->StartDistributed(particles.Gathered, boundary, read))
+      {
+        return 0;
+      }
+    }
+    else if (!this->ReadBoundary(boundaryData, boundary) || !this->StartSimulation(particles.Gathered, boundary))
     {
       return 0;
     }
@@ -427,6 +443,77 @@ bool vtkPFSPHStep::StartSimulation(vtkPointSet* input, vtkPolyData* surface)
   return true;
 }
 
+bool vtkPFSPHStep::WorksOnPieces() const
+{
+  return parafluid::vtk::processCount() > 1 && this->Backend != static_cast<int>(parafluid::sph::Backend::CUDA) &&
+         parafluid::sph::distributedRunLacks(this->Parameters).empty();
+}
+
+bool vtkPFSPHStep::StartDistributed(vtkPointSet* piece, vtkPolyData* surface, bool boundaryRead)
+{
+  Cache& cache = *this->Cached;
+  cache.dropRun();
+  if (!this->Processes)
+  {
+    this->Processes = parafluid::vtk::makeProcessCommunicator();
+  }
+  parafluid::Communicator& processes = *this->Processes;
+  // The processes whose piece has particles resolve the automatic parameters from its field data
+  // (process 0 too when none has any); the lowest that did gives them to all.
+  const vtkIdType n = piece->GetNumberOfPoints();
+  const double anyParticles = processes.reduce(static_cast<double>(n), parafluid::Reduction::Max);
+  SPHParameters p = this->Parameters;
+  int resolved = -1;
+  if (n > 0 || (anyParticles == 0.0 && processes.rank() == 0))
+  {
+    resolved = this->ResolveParameters(piece->GetFieldData(), p) ? 1 : 0;
+  }
+  if (!parafluid::vtk::agreeOnParameters(p, resolved, processes))
+  {
+    return false;
+  }
+  if (processes.rank() == 0)
+  {
+    this->WarnOfUnvalidatedSurfaceTension(p);
+  }
+  // This process's share, the solver's and the ghosts' bytes (at most twice the share), checked
+  // before anything is allocated.
+  std::string problem = parafluid::checkMemoryBudget(400.0 * static_cast<double>(n),
+                                                     "simulating " + std::to_string(n) + " particles on process " +
+                                                       std::to_string(processes.rank()));
+  std::shared_ptr<const parafluid::TriangleBoundary> boundary;
+  if (problem.empty() && boundaryRead && surface)
+  {
+    boundary = parafluid::vtk::makeTriangleBoundary(surface, problem);
+  }
+  if (!problem.empty())
+  {
+    this->ReportError(problem);
+  }
+  if (!parafluid::vtk::agreeOnAllProcesses(boundaryRead && problem.empty()))
+  {
+    return false;
+  }
+  try
+  {
+    cache.start(parafluid::sph::makeDistributedSimulation(p, parafluid::vtk::readParticleState(piece),
+                                                          std::move(boundary), processes));
+  }
+  catch (const std::exception& e)
+  {
+    this->ReportError(parafluid::vtk::exceptionText(e)); // every process throws together
+    return false;
+  }
+  const std::string choice =
+    std::string(cache.simulation()->backendName()) + " over " + std::to_string(processes.size()) + " processes";
+  if (processes.rank() == 0 && choice != this->BackendUsed)
+  {
+    vtkOutputWindowDisplayText(("SPH Step runs on " + choice + "\n").c_str());
+  }
+  this->BackendUsed = choice;
+  return true;
+}
+
 int vtkPFSPHStep::AdvanceTo(long long target)
 {
   // One output interval at a time, so that the steps taken (and so the result) do not depend on
@@ -482,7 +569,13 @@ void vtkPFSPHStep::WriteOutput(vtkPointSet* input, long long target, vtkPolyData
 {
   // Output in the input's order and with the input's other arrays.
   const Simulation& solver = *this->Cached->simulation();
-  output->GetPointData()->ShallowCopy(input->GetPointData());
+  // A distributed run's process holds other particles than its input piece: only the simulated
+  // arrays go out, listed by id.
+  const bool distributed = this->Processes && this->WorksOnPieces();
+  if (!distributed)
+  {
+    output->GetPointData()->ShallowCopy(input->GetPointData());
+  }
   output->GetFieldData()->ShallowCopy(input->GetFieldData());
   std::vector<float> pressure;
   std::vector<std::uint32_t> neighbours;
@@ -498,7 +591,14 @@ void vtkPFSPHStep::WriteOutput(vtkPointSet* input, long long target, vtkPolyData
     neighbours = solver.neighbourCounts();
     extra.neighbourCount = &neighbours;
   }
-  parafluid::vtk::writeParticleState(solver.hostState(), extra, output);
+  if (distributed)
+  {
+    parafluid::vtk::writeParticleState(parafluid::vtk::ownParticlesInIdOrder(solver.hostState()), extra, output);
+  }
+  else
+  {
+    parafluid::vtk::writeParticleState(solver.hostState(), extra, output);
+  }
 
   const double time = this->StartTime + static_cast<double>(target) * this->OutputInterval;
   const SPHParameters& p = solver.parameters();

@@ -15,6 +15,11 @@
  * Zero-valued SmoothingLength / ParticleMass / DomainBounds mean "from the input's field data"
  * (smoothing_length, particle_spacing, domain_bounds, as the ParaFluid reader and the Particle
  * Block source provide).
+ *
+ * Under MPI (pvbatch, pvserver) with δ-SPH or WCSPH on the CPU, the run is distributed: each
+ * process steps the particles in its slab of the domain (DistributedSimulation.h) and outputs
+ * them, in id order, with the simulated arrays only. Other solvers and the CUDA backend gather
+ * the particles on process 0 and run there.
  */
 #pragma once
 
@@ -32,6 +37,11 @@
 class vtkAlgorithmOutput;
 class vtkFieldData;
 class vtkPointSet;
+
+namespace parafluid
+{
+class Communicator;
+}
 
 class PARAFLUIDSPHFILTERS_EXPORT vtkPFSPHStep : public vtkPFParticleAlgorithm
 {
@@ -177,6 +187,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// Under MPI, δ-SPH and WCSPH on the CPU run distributed: each process steps its own particles.
+  bool WorksOnPieces() const override;
   int RequestParticles(const Particles& particles, vtkInformationVector** inputVector, vtkInformation* outInfo,
                        vtkPolyData* output) override;
 
@@ -199,6 +211,9 @@ private:
   /// error. Null without one.
   bool ReadBoundary(vtkDataObject* boundaryData, vtkSmartPointer<vtkPolyData>& boundary);
   bool StartSimulation(vtkPointSet* input, vtkPolyData* boundary);
+  /// StartSimulation of a distributed run, on every process with its own piece; false on all when
+  /// one process could not start.
+  bool StartDistributed(vtkPointSet* piece, vtkPolyData* boundary, bool boundaryRead);
   /// Steps the cached simulation to output `target`, one output interval at a time: 1 when there,
   /// 0 after an error, -1 when the user aborted (the simulation is dropped either way).
   int AdvanceTo(long long target);
@@ -219,6 +234,8 @@ private:
   vtkIdType StepsTakenLastUpdate = 0;
   double MeanDensityError = 0.0;
 
+  // The processes of a distributed run; declared before the cache, whose run uses it to the end.
+  std::unique_ptr<parafluid::Communicator> Processes;
   struct Cache;
   std::unique_ptr<Cache> Cached;
 };

@@ -39,13 +39,15 @@ pftest.check(np.array_equal(pftest.point_array(copy, "id")[order_copy], np.arang
 pftest.check(np.array_equal(pftest.points(copy)[order_copy], pftest.points(original)[order_original]), "positions differ after the parallel write")
 pftest.check(np.array_equal(pftest.point_array(copy, "velocity")[order_copy], pftest.point_array(original, "velocity")[order_original]), "velocity differs after the parallel write")
 
-# SPH Step gathers the pieces: every particle is simulated once, with all its neighbours, on
-# process 0 (the output of the other process is empty).
-sph = SPHStep(Input=reader, OutputInterval=0.004, NumberOfOutputs=2)
-stepped = pftest.fetch(ProcessIdScalars(Input=sph), sph.TimestepValues[-1])
-pftest.check(stepped.GetNumberOfPoints() == n, "SPH output holds %d particles, not %d" % (stepped.GetNumberOfPoints(), n))
-pftest.check(np.array_equal(np.sort(pftest.point_array(stepped, "id")), np.arange(n)), "SPH output lost or repeated particles")
-pftest.check(set(pftest.point_array(stepped, "ProcessId")) == {0}, "SPH output should all be on process 0")
-moved = pftest.points(stepped)[np.argsort(pftest.point_array(stepped, "id"))] - pftest.points(original)[order_original]
-pftest.check(np.abs(moved).max() > 1e-4 and np.all(np.isfinite(moved)), "SPH under MPI did not step")
+# SPH Step: δ-SPH steps the particles where they are (each process its slab), DFSPH on process 0;
+# either way every particle is simulated once, with all its neighbours.
+for solver, where in (("δ-SPH", {0, 1}), ("DFSPH", {0})):
+    sph = SPHStep(Input=reader, PressureSolver=solver, OutputInterval=0.004, NumberOfOutputs=2)
+    stepped = pftest.fetch(ProcessIdScalars(Input=sph), sph.TimestepValues[-1])
+    pftest.check(stepped.GetNumberOfPoints() == n, "%s: SPH output holds %d particles, not %d" % (solver, stepped.GetNumberOfPoints(), n))
+    order = np.argsort(pftest.point_array(stepped, "id"))
+    pftest.check(np.array_equal(pftest.point_array(stepped, "id")[order], np.arange(n)), "%s: SPH output lost or repeated particles" % solver)
+    pftest.check(set(pftest.point_array(stepped, "ProcessId")) == where, "%s: SPH output on processes %s, not %s" % (solver, set(pftest.point_array(stepped, "ProcessId")), where))
+    moved = pftest.points(stepped)[order] - pftest.points(original)[order_original]
+    pftest.check(np.abs(moved).max() > 1e-4 and np.all(np.isfinite(moved)), "%s: SPH under MPI did not step" % solver)
 print("mpi pieces: ok")
