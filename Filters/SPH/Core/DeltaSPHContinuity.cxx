@@ -174,7 +174,8 @@ void DeltaSPHSolver::sumDensityRates(SimulationParts& sim)
       {
         this->FullPush[d * s.size() + i] = this->Interior[i] * push[d];
       }
-    });
+    },
+    sim.ghostFlags()); // a ghost's sums come from its owner (the refreshes below and after the density update)
   // Written after the pass, which reads every neighbour's: the next step's diffusion uses these.
   std::swap(this->Fullness, this->NextFullness);
   const std::size_t n = s.size();

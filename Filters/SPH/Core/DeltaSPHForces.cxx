@@ -139,7 +139,8 @@ ForceSums forceTerms(CandidateBuffer& c, const float q[3], const float vq[3], fl
 
 template<bool Laminar>
 void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const Constants& k,
-               const detail::MeshWall* wall, const float* correction, const float* push, const float* interior)
+               const detail::MeshWall* wall, const float* correction, const float* push, const float* interior,
+               const std::uint8_t* ghosts)
 {
   const std::size_t n = s.size();
   forEachParticleByCell(
@@ -214,7 +215,8 @@ void forcePass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters&
       s.ax[i] = a[0];
       s.ay[i] = a[1];
       s.az[i] = a[2];
-    });
+    },
+    ghosts);
 }
 } // namespace
 
@@ -229,15 +231,16 @@ void DeltaSPHSolver::computeAccelerations(SimulationParts& sim)
     this->sumDensityRates(sim);
   }
   const float* correction = k.correctGradient ? this->Correction.data() : nullptr;
+  // A ghost's acceleration is never read: it goes with the ghosts after the step.
   if (sim.parameters().kinematicViscosity > 0.0f || sim.parameters().viscosity > 0.0f)
   {
     forcePass<true>(sim.grid(), sim.state(), sim.parameters(), k, sim.wall(), correction, this->FullPush.data(),
-                    this->Interior.data());
+                    this->Interior.data(), sim.ghostFlags());
   }
   else
   {
     forcePass<false>(sim.grid(), sim.state(), sim.parameters(), k, sim.wall(), correction, this->FullPush.data(),
-                     this->Interior.data());
+                     this->Interior.data(), sim.ghostFlags());
   }
   this->CorrectionFresh = false;
   sim.addSurfaceTension();

@@ -166,7 +166,7 @@ public:
 
   // GhostLayer
   const std::vector<std::uint8_t>& ghostFlags() const override { return this->Flags; }
-  void refresh(std::initializer_list<float*> columns) override;
+  void refresh(std::initializer_list<float*> columns) override { this->refreshColumns(columns); }
   void permuted(const std::vector<std::uint32_t>& order) override;
   double sum(double value) override { return this->Comm.reduce(value, Reduction::Sum); }
   double min(double value) override { return this->Comm.reduce(value, Reduction::Min); }
@@ -187,13 +187,25 @@ private:
   /// The values of this process's own particles, in state order.
   template<typename T>
   std::vector<T> own(const std::vector<T>& all) const;
-  /// Throws on every process when the particles moved further in the step than the ghosts reach.
-  void checkReach(double dt);
+  /// The ghosts gathered afresh with every carried column (after the solver computed its own
+  /// particles' accelerations outside a step).
+  void regatherGhosts();
+  /// The ghosts' values of `columns` from their owners.
+  template<class Columns>
+  void refreshColumns(const Columns& columns);
+  /// How far the particles moved in the step of `dt` at most, over the processes [m]; throws on
+  /// every process when that is further than the ghosts reach.
+  double checkReach(double dt);
+  /// After a step: while the particles have moved less than the margin since the ghosts were
+  /// gathered, the ghosts keep their particles and take their owners' new state; else the
+  /// particles are handed over and the ghosts gathered afresh.
+  void afterStep(double moved);
 
   Communicator& Comm;
   SPHParameters Parameters;
   float Reach = 0.0f;  // [m] how far from its slab a particle is this process's ghost
-  float Margin = 0.0f; // [m] what the particles may move in a step: Reach less the support
+  float Margin = 0.0f; // [m] what the particles may move between gatherings: (Reach - support) / 2
+  double Moved = 0.0;  // [m] the most a particle has moved since the ghosts were gathered
   std::unique_ptr<detail::SlabDecomposition> Slabs;
   std::vector<std::uint8_t> Flags;
   // SendIndex[r]: this process's particles whose ghosts process r holds, in the order r keeps
@@ -294,6 +306,15 @@ DistributedSimulation::DistributedSimulation(const SPHParameters& parameters, Pa
   }
   refuseTogether(problem, this->max(problem.empty() ? 0.0 : 1.0) > 0.0);
   this->Solver = std::make_unique<SPHSolver>(parameters, std::move(state), std::move(boundary), this);
+  this->regatherGhosts();
+}
+
+void DistributedSimulation::regatherGhosts()
+{
+  // The force passes skip ghosts, so after a start (the first accelerations) the ghosts take their
+  // owners' accelerations for the next step's first kick.
+  this->dropGhosts();
+  this->redistribute();
 }
 
 ParticleRows DistributedSimulation::handOver(const ParticleRows& rows)
@@ -409,10 +430,12 @@ void DistributedSimulation::redistribute()
   this->Flags.assign(own, 0);
   this->Flags.resize(own + ghosts.size(), 1);
   this->Solver->sortState();
+  this->Moved = 0.0;
   this->OwnFresh = false;
 }
 
-void DistributedSimulation::refresh(std::initializer_list<float*> columns)
+template<class Columns>
+void DistributedSimulation::refreshColumns(const Columns& columns)
 {
   const auto size = static_cast<std::size_t>(this->Comm.size());
   std::vector<Bytes> sends(size);
@@ -475,7 +498,7 @@ void DistributedSimulation::permuted(const std::vector<std::uint32_t>& order)
   }
 }
 
-void DistributedSimulation::checkReach(double dt)
+double DistributedSimulation::checkReach(double dt)
 {
   const ParticleState& s = this->Solver->state();
   double fastest = 0.0;
@@ -498,6 +521,27 @@ void DistributedSimulation::checkReach(double dt)
                              " m the processes' ghost layers allow (a quarter of SmoothingLength); " +
                              this->Solver->stabilityAdvice());
   }
+  return moved;
+}
+
+void DistributedSimulation::afterStep(double moved)
+{
+  // A ghost layer gathered with a margin M each side stays complete while no particle has moved
+  // more than M: one not sent to a process was over h + 2M from its slab, whose particles have not
+  // left it by more than M. The next step is taken to move as far as this one, with a half more.
+  this->Moved += moved;
+  if (this->Moved + 1.5 * moved > this->Margin)
+  {
+    this->dropGhosts();
+    this->redistribute();
+    return;
+  }
+  std::vector<float*> columns;
+  for (std::vector<float>* column : this->Solver->carriedColumns())
+  {
+    columns.push_back(column->data());
+  }
+  this->refreshColumns(columns);
 }
 
 std::int64_t DistributedSimulation::advance(double duration, const std::function<bool(double)>& progress)
@@ -519,9 +563,7 @@ std::int64_t DistributedSimulation::advance(double duration, const std::function
       const double dt = this->Solver->step(remaining);
       this->Time = this->Solver->time(); // advanceInSteps lands it exactly on the end time
       this->Solver->addToPressureMean(dt);
-      this->checkReach(dt);
-      this->dropGhosts();
-      this->redistribute();
+      this->afterStep(this->checkReach(dt));
       return dt;
     },
     agreed, [this] { return this->Solver->stabilityAdvice(); });
@@ -574,6 +616,7 @@ void DistributedSimulation::addParticles(const std::vector<float>& x, const std:
                                 static_cast<std::uint32_t>(nextIndex + before));
   this->redistribute();
   this->Solver->restartPressure();
+  this->regatherGhosts();
 }
 
 std::size_t DistributedSimulation::removeParticles(const std::vector<std::uint8_t>& remove)
@@ -608,6 +651,7 @@ std::size_t DistributedSimulation::removeParticles(const std::vector<std::uint8_
   }
   this->redistribute();
   this->Solver->startPressure();
+  this->regatherGhosts();
   return removed;
 }
 

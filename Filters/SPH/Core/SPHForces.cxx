@@ -124,7 +124,7 @@ PairSums pairSums(CandidateBuffer& c, const float q[3], const float v[3], float 
 
 template<bool Pressure, bool Viscosity, bool Tension>
 void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHParameters& p, const float* inverseDensity,
-                      float gradientCorrection, float laplacianCorrection)
+                      float gradientCorrection, float laplacianCorrection, const std::uint8_t* ghosts)
 {
   const detail::MullerConstants k = detail::mullerConstants(p, Pressure, gradientCorrection, laplacianCorrection);
 
@@ -174,10 +174,12 @@ void accelerationPass(const NeighbourGrid& grid, ParticleState& s, const SPHPara
       s.ax[i] = a[0];
       s.ay[i] = a[1];
       s.az[i] = a[2];
-    });
+    },
+    ghosts);
 }
 
-using Pass = void (*)(const NeighbourGrid&, ParticleState&, const SPHParameters&, const float*, float, float);
+using Pass = void (*)(const NeighbourGrid&, ParticleState&, const SPHParameters&, const float*, float, float,
+                      const std::uint8_t*);
 template<bool Pressure>
 Pass choosePass(bool viscosity, bool tension)
 {
@@ -224,7 +226,8 @@ void SPHSolver::computeAccelerations(bool withPressure)
     inverseDensity[i] = 1.0f / s.density[i]; // density > 0: every particle counts itself
   }
   const Pass pass = withPressure ? choosePass<true>(viscosity, tension) : choosePass<false>(viscosity, tension);
-  pass(this->Grid, s, p, inverseDensity, this->SpikyGradientCorrection, this->LaplacianCorrection);
+  // A ghost's acceleration is never read: it goes with the ghosts after the step.
+  pass(this->Grid, s, p, inverseDensity, this->SpikyGradientCorrection, this->LaplacianCorrection, this->ghostFlags());
   this->addSurfaceTension();
 }
 } // namespace parafluid::sph

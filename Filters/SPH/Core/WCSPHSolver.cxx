@@ -80,20 +80,22 @@ void WCSPHSolver::computeDensityAndPressure(SimulationParts& sim)
   const float k = p.gasStiffness;
   const float rho0 = p.restDensity;
   const bool clamp = p.clampNegativePressure;
-  forEachParticleByCell(sim.grid(), s, p.smoothingLength, threadCount(p), {},
-                        [&](const CandidateBuffer& candidates, std::uint32_t i)
-                        {
-                          const float position[3] = { s.x[i], s.y[i], s.z[i] };
-                          // The particle itself (r = 0) and, near walls, its images: the mirrored fluid fills
-                          // the cut-off neighbourhood, |x_i - R x_j| = |R x_i - x_j|.
-                          float sum = 0.0f;
-                          detail::forEachWallImage(position, position, p,
-                                                   [&](const float* q, const float*, const float*, const float*, bool)
-                                                   { sum += candidates.poly6Sum(q, w.h2); });
-                          const float rho = densityScale * sum;
-                          s.density[i] = rho;
-                          const float pressure = k * (rho - rho0);
-                          s.pressure[i] = clamp ? std::max(pressure, 0.0f) : pressure;
-                        });
+  forEachParticleByCell(
+    sim.grid(), s, p.smoothingLength, threadCount(p), {},
+    [&](const CandidateBuffer& candidates, std::uint32_t i)
+    {
+      const float position[3] = { s.x[i], s.y[i], s.z[i] };
+      // The particle itself (r = 0) and, near walls, its images: the mirrored fluid fills
+      // the cut-off neighbourhood, |x_i - R x_j| = |R x_i - x_j|.
+      float sum = 0.0f;
+      detail::forEachWallImage(position, position, p,
+                               [&](const float* q, const float*, const float*, const float*, bool)
+                               { sum += candidates.poly6Sum(q, w.h2); });
+      const float rho = densityScale * sum;
+      s.density[i] = rho;
+      const float pressure = k * (rho - rho0);
+      s.pressure[i] = clamp ? std::max(pressure, 0.0f) : pressure;
+    },
+    sim.ghostFlags()); // a ghost's density and pressure come from its owner
 }
 } // namespace parafluid::sph

@@ -204,10 +204,12 @@ struct CandidateBuffer
 /// Runs body(candidates, i) for every particle i, cell by cell in parallel, after gathering into a
 /// thread-private buffer the candidates of that cell with the given per-particle channels. Each
 /// particle is handled by one thread in a fixed candidate order, so results do not depend on the
-/// thread count.
+/// thread count. Particles whose `skip` flag is set are not visited (a distributed run's ghosts in
+/// a pass whose results for them nothing reads), nor are the cells that hold only such particles.
 template<class Body>
 void forEachParticleByCell(const NeighbourGrid& grid, const ParticleState& s, float reach, int threads,
-                           std::initializer_list<const float*> channelSources, Body&& body)
+                           std::initializer_list<const float*> channelSources, Body&& body,
+                           const std::uint8_t* skip = nullptr)
 {
   std::array<const float*, kMaxChannels> sources{};
   int channels = 0;
@@ -225,7 +227,7 @@ void forEachParticleByCell(const NeighbourGrid& grid, const ParticleState& s, fl
     {
       const std::uint32_t begin = start[c];
       const std::uint32_t end = start[c + 1];
-      if (begin == end)
+      if (begin == end || (skip && std::all_of(skip + begin, skip + end, [](std::uint8_t f) { return f != 0; })))
       {
         continue;
       }
@@ -234,7 +236,10 @@ void forEachParticleByCell(const NeighbourGrid& grid, const ParticleState& s, fl
       candidates.gather(grid, ix, iy, iz, s, reach, sources, channels);
       for (std::uint32_t i = begin; i < end; ++i)
       {
-        body(candidates, i);
+        if (!skip || !skip[i])
+        {
+          body(candidates, i);
+        }
       }
     }
   }

@@ -51,6 +51,8 @@ public:
       this->Sim.Ghosts->refresh(columns);
     }
   }
+  /// A distributed run's ghost flag per particle (null in a serial run).
+  const std::uint8_t* ghostFlags() const { return this->Sim.ghostFlags(); }
   /// The largest value over the processes of a distributed run (the value in a serial run).
   double globalMax(double value) const { return this->Sim.globalMax(value); }
   /// The largest |(x_i, y_i, z_i)| over the particles.

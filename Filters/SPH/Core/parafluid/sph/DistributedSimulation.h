@@ -2,9 +2,10 @@
 // One process's part of an SPH run spread over processes (ParaView's MPI ranks, or threads): the
 // domain is cut into slabs along one axis, each process owns the particles in its slab and runs
 // them with the CPU simulation beside ghosts, read-only copies of the other processes' particles
-// within reach (a kernel support and what a step can move them), refreshed between the passes
-// that read them. After each step the particles that left a slab go to their new owner and the
-// ghosts are gathered afresh; the cuts move when one process holds over 20 % more than the mean.
+// within reach (a kernel support and a margin of a quarter support each side), refreshed between
+// the passes that read them and after each step. When a particle may have moved by the margin, the
+// particles that left a slab go to their new owner and the ghosts are gathered afresh; the cuts
+// move then when one process holds over 20 % more than the mean.
 // Every call is collective: each process makes it, with its own particles.
 #include "parafluid/common/Communicator.h"
 #include "parafluid/common/ParticleState.h"
