@@ -5,6 +5,8 @@
 #include "ParameterCheck.h"
 
 #include "ParticleArrays.h"
+#include "ProcessCommunicator.h"
+#include "ProcessGather.h"
 
 #include "parafluid/npr/FoamClassifier.h"
 
@@ -13,6 +15,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 vtkStandardNewMacro(vtkPFFoamParticles);
@@ -68,8 +71,23 @@ int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inpu
         output->Initialize();
         return 0;
       }
-      const double d = parafluid::vtk::particleSpacing(this->ParticleSpacing, input->GetFieldData());
-      if (n > 0 && !(d > 0.0))
+      // Under MPI every process keeps its piece as output, but process 0 scores all particles
+      // together (a particle's neighbours may be in another piece) and keeps the hysteresis of
+      // every id, so the flags do not depend on the number of processes or on who holds whom.
+      if (parafluid::vtk::processCount() > 1 && !this->Processes)
+      {
+        this->Processes = parafluid::vtk::makeProcessCommunicator();
+      }
+      parafluid::Communicator* processes = this->Processes.get();
+      const bool scoresHere = !processes || processes->rank() == 0;
+      double d = parafluid::vtk::particleSpacing(this->ParticleSpacing, input->GetFieldData());
+      double total = static_cast<double>(n);
+      if (processes)
+      {
+        d = processes->reduce(d, parafluid::Reduction::Max);
+        total = processes->reduce(total, parafluid::Reduction::Sum);
+      }
+      if (total > 0.0 && !(d > 0.0))
       {
         vtkErrorMacro("Foam Particles: " << parafluid::vtk::missingSpacing("ParticleSpacing"));
         return 0;
@@ -99,27 +117,49 @@ int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inpu
       {
         ids[static_cast<std::size_t>(i)] = idArray ? static_cast<std::int64_t>(idArray->GetComponent(i, 0)) : i;
       }
-
       std::vector<float> positionStorage;
       const float* xyz = n > 0 ? parafluid::vtk::positionsAsFloat(input, positionStorage) : nullptr;
+      std::vector<std::size_t> counts;
+      std::vector<float> allPositions;
+      if (processes)
+      {
+        std::vector<float> local(static_cast<std::size_t>(3 * n));
+        std::copy_n(xyz, local.size(), local.data());
+        allPositions = parafluid::vtk::gatherOnFirst(local, *processes, counts);
+        ids = parafluid::vtk::gatherOnFirst(ids, *processes, counts);
+        xyz = allPositions.data();
+      }
+      const std::size_t scored = scoresHere ? ids.size() : 0;
+
+      // The status every process ends with: 0 scored, 1 an error (said on process 0), 2 aborted.
+      int status = 0;
       parafluid::npr::FoamScores scores;
-      // Nominal cost on a 2-core machine: 1.2 us a particle (500 000 at the default settings).
-      parafluid::vtk::LongWork work(this, "Foam Particles",
-                                    { static_cast<double>(n), 1.2e-6, "particles", "the input's particle count" });
-      try
+      std::vector<std::uint8_t> foam;
+      if (scoresHere)
       {
-        scores = parafluid::npr::scoreFoam(xyz, static_cast<std::size_t>(n), p,
-                                           [&work, n](double fraction)
-                                           { return work.advance(0.9 * fraction * static_cast<double>(n)); });
+        // Nominal cost on a 2-core machine: 1.2 us a particle (500 000 at the default settings).
+        parafluid::vtk::LongWork work(
+          this, "Foam Particles", { static_cast<double>(scored), 1.2e-6, "particles", "the input's particle count" });
+        try
+        {
+          scores = parafluid::npr::scoreFoam(xyz, scored, p,
+                                             [&work, scored](double fraction)
+                                             { return work.advance(0.9 * fraction * static_cast<double>(scored)); });
+          status = work.aborted() ? 2 : 0;
+        }
+        catch (const std::exception& e)
+        {
+          vtkErrorMacro("Foam Particles: " << parafluid::vtk::exceptionText(e));
+          status = 1;
+        }
       }
-      catch (const std::exception& e)
+      if (processes)
       {
-        vtkErrorMacro("Foam Particles: " << parafluid::vtk::exceptionText(e));
-        return 0;
+        status = static_cast<int>(processes->reduce(static_cast<double>(status), parafluid::Reduction::Max));
       }
-      if (work.aborted())
+      if (status != 0)
       {
-        return 1; // the scores are incomplete: the executive empties the output
+        return status == 2 ? 1 : 0; // aborted: the scores are incomplete and the executive empties the output
       }
 
       // The hysteresis continues forward in time under unchanged settings; the same time again redoes
@@ -142,11 +182,19 @@ int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inpu
         this->State->reset();
         this->StateBefore->reset();
       }
-      std::vector<std::uint8_t> foam;
-      this->State->update(ids.data(), scores.candidate.data(), static_cast<std::size_t>(n), this->PersistFrames, foam);
+      if (scoresHere)
+      {
+        this->State->update(ids.data(), scores.candidate.data(), scored, this->PersistFrames, foam);
+      }
       this->HasState = true;
       this->LastTime = time;
       this->StateSettings = settings;
+      std::vector<float> score = std::move(scores.score);
+      if (processes)
+      {
+        foam = parafluid::vtk::scatterFromFirst(foam, counts, 1, *processes);
+        score = parafluid::vtk::scatterFromFirst(score, counts, 1, *processes);
+      }
 
       vtkNew<vtkUnsignedCharArray> foamArray;
       foamArray->SetName("foam");
@@ -156,7 +204,7 @@ int vtkPFFoamParticles::RequestData(vtkInformation*, vtkInformationVector** inpu
         foamArray->SetValue(i, foam[static_cast<std::size_t>(i)]);
       }
       output->GetPointData()->AddArray(foamArray);
-      output->GetPointData()->AddArray(parafluid::vtk::floatArray("foam_score", 1, scores.score));
+      output->GetPointData()->AddArray(parafluid::vtk::floatArray("foam_score", 1, score));
       this->UpdateProgress(1.0);
       return 1;
     });

@@ -9,8 +9,8 @@
  * a candidate for PersistFrames time steps in a row, and back after as many steps as a
  * non-candidate, so foam does not flicker. The state carries over as time moves forward; going
  * back in time, or changing a property, starts again. Output: the input with point arrays `foam`
- * (0/1) and `foam_score`. Under MPI each process scores its own piece (particles at a piece's
- * border see only that piece's neighbours).
+ * (0/1) and `foam_score`. Under MPI each process keeps its piece, and process 0 scores all the
+ * pieces' particles together, so the flags are those of a serial session.
  */
 #pragma once
 
@@ -25,6 +25,7 @@
 // (Nested namespace blocks: VTK's wrapper parser rejects `namespace a::b`.)
 namespace parafluid
 {
+class Communicator;
 namespace npr
 {
 class FoamHysteresis;
@@ -77,6 +78,8 @@ private:
   // The hysteresis state, and the state before the last step (to redo that step when the same
   // time is asked for again).
   std::unique_ptr<parafluid::npr::FoamHysteresis> State, StateBefore;
+  // The processes under MPI (null in a serial session).
+  std::unique_ptr<parafluid::Communicator> Processes;
   bool HasState = false;
   double LastTime = 0.0;
   vtkMTimeType StateSettings = 0;
