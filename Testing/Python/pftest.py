@@ -98,6 +98,20 @@ def points(data):
     return vtk_to_numpy(data.GetPoints().GetData())
 
 
+def triangle_area(data):
+    """The summed area of a triangle mesh's polygons (each a triangle) [m^2]."""
+    import numpy as np
+    p = points(data)
+    tri = vtk_to_numpy(data.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    return 0.5 * np.linalg.norm(np.cross(p[tri[:, 1]] - p[tri[:, 0]], p[tri[:, 2]] - p[tri[:, 0]]), axis=1).sum()
+
+
+def outside_mpi_environment():
+    """This process's environment without its MPI job's variables: for a child that starts its own
+    MPI job (a pvserver, a serial pvpython) from inside one, or from an MPI singleton."""
+    return {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_", "OPAL_", "PRTE_"))}
+
+
 def scratch_dir():
     return tempfile.mkdtemp(prefix="parafluid-test-")
 

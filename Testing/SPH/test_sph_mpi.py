@@ -14,7 +14,6 @@ import tempfile
 
 import numpy as np
 from paraview.simple import *
-from vtkmodules.util.numpy_support import vtk_to_numpy
 from paraview import servermanager
 import pftest
 
@@ -55,13 +54,6 @@ def mean_density_error(proxy):
     return proxy.GetPropertyValue("MeanDensityError")
 
 
-def surface_area(proxy):
-    data = pftest.fetch(proxy)
-    p = pftest.points(data)
-    tri = vtk_to_numpy(data.GetPolys().GetConnectivityArray()).reshape(-1, 3)
-    return 0.5 * np.linalg.norm(np.cross(p[tri[:, 1]] - p[tri[:, 0]], p[tri[:, 2]] - p[tri[:, 0]]), axis=1).sum()
-
-
 def run():
     """Runs every scene; returns name -> (ids, positions, mean density error), the surface area of
     the surge's particles and the surge's SPH Step."""
@@ -80,7 +72,7 @@ def run():
         scored = pftest.fetch(foam, t)
     order = np.argsort(pftest.point_array(scored, "id"))
     results["foam"] = (pftest.point_array(scored, "foam")[order], pftest.point_array(scored, "foam_score")[order], 0.0)
-    return results, surface_area(surface), surge
+    return results, pftest.triangle_area(pftest.fetch(surface)), surge
 
 
 if "--serial" in sys.argv:
@@ -95,9 +87,8 @@ pftest.check(ranks >= 2, "run with 2 or more MPI ranks (got %d)" % ranks)
 
 # The serial reference, by pvpython outside this MPI job.
 reference_file = os.path.join(tempfile.mkdtemp(prefix="parafluid-mpi-"), "serial.npz")
-environment = {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_", "OPAL_", "PRTE_"))}
 subprocess.run([shutil.which("pvpython"), "--force-offscreen-rendering", __file__, "--serial", reference_file],
-               env=environment, check=True, timeout=240)
+               env=pftest.outside_mpi_environment(), check=True, timeout=240)
 serial = np.load(reference_file)
 
 results, area, surge = run()

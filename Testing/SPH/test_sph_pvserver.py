@@ -12,7 +12,6 @@ import threading
 import numpy as np
 from paraview.simple import *
 from paraview import servermanager
-from vtkmodules.util.numpy_support import vtk_to_numpy
 import pftest
 
 folder = tempfile.mkdtemp(prefix="parafluid-pvserver-")
@@ -42,10 +41,7 @@ def pipeline(path, saved):
     surface = ParticleSurfaceMarchingCubes(Input=sph)
     surface.UpdatePipeline(0.004)
     SaveData(saved, proxy=sph)
-    mesh = pftest.fetch(surface, 0.004)
-    p = pftest.points(mesh)
-    tri = vtk_to_numpy(mesh.GetPolys().GetConnectivityArray()).reshape(-1, 3)
-    area = 0.5 * np.linalg.norm(np.cross(p[tri[:, 1]] - p[tri[:, 0]], p[tri[:, 2]] - p[tri[:, 0]]), axis=1).sum()
+    area = pftest.triangle_area(pftest.fetch(surface, 0.004))
     later = pftest.points(pftest.fetch(sph, 0.008))
     again = pftest.points(pftest.fetch(sph, 0.004))
     return ids[order], pftest.points(data)[order], area, again[np.argsort(pftest.point_array(pftest.fetch(sph, 0.004), "id"))], later
@@ -58,11 +54,10 @@ with socket.socket() as probe:
     probe.bind(("localhost", 0))
     port = probe.getsockname()[1]
 # The server's MPI job outside this process's own MPI (pvpython is an MPI singleton).
-environment = {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_", "OPAL_", "PRTE_"))}
 server = subprocess.Popen([shutil.which("mpirun"), "--allow-run-as-root", "--oversubscribe", "-np", "2",
                            "-x", "OMP_NUM_THREADS", "-x", "OMP_WAIT_POLICY", shutil.which("stdbuf"), "-oL",
                            shutil.which("pvserver"), "--server-port=%d" % port, "--force-offscreen-rendering"],
-                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=environment)
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=pftest.outside_mpi_environment())
 try:
     for line in server.stdout:
         if "Accepting connection" in line:

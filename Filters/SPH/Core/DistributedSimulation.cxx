@@ -187,9 +187,9 @@ private:
   /// The values of this process's own particles, in state order.
   template<typename T>
   std::vector<T> own(const std::vector<T>& all) const;
-  /// The ghosts gathered afresh with every carried column (after the solver computed its own
-  /// particles' accelerations outside a step).
-  void regatherGhosts();
+  /// Every carried column of the ghosts from their owners: after each step, and after a start,
+  /// whose accelerations the force passes compute for own particles only.
+  void refreshCarried();
   /// The ghosts' values of `columns` from their owners.
   template<class Columns>
   void refreshColumns(const Columns& columns);
@@ -306,15 +306,17 @@ DistributedSimulation::DistributedSimulation(const SPHParameters& parameters, Pa
   }
   refuseTogether(problem, this->max(problem.empty() ? 0.0 : 1.0) > 0.0);
   this->Solver = std::make_unique<SPHSolver>(parameters, std::move(state), std::move(boundary), this);
-  this->regatherGhosts();
+  this->refreshCarried();
 }
 
-void DistributedSimulation::regatherGhosts()
+void DistributedSimulation::refreshCarried()
 {
-  // The force passes skip ghosts, so after a start (the first accelerations) the ghosts take their
-  // owners' accelerations for the next step's first kick.
-  this->dropGhosts();
-  this->redistribute();
+  std::vector<float*> columns;
+  for (std::vector<float>* column : this->Solver->carriedColumns())
+  {
+    columns.push_back(column->data());
+  }
+  this->refreshColumns(columns);
 }
 
 ParticleRows DistributedSimulation::handOver(const ParticleRows& rows)
@@ -536,12 +538,7 @@ void DistributedSimulation::afterStep(double moved)
     this->redistribute();
     return;
   }
-  std::vector<float*> columns;
-  for (std::vector<float>* column : this->Solver->carriedColumns())
-  {
-    columns.push_back(column->data());
-  }
-  this->refreshColumns(columns);
+  this->refreshCarried();
 }
 
 std::int64_t DistributedSimulation::advance(double duration, const std::function<bool(double)>& progress)
@@ -616,7 +613,7 @@ void DistributedSimulation::addParticles(const std::vector<float>& x, const std:
                                 static_cast<std::uint32_t>(nextIndex + before));
   this->redistribute();
   this->Solver->restartPressure();
-  this->regatherGhosts();
+  this->refreshCarried();
 }
 
 std::size_t DistributedSimulation::removeParticles(const std::vector<std::uint8_t>& remove)
@@ -651,7 +648,7 @@ std::size_t DistributedSimulation::removeParticles(const std::vector<std::uint8_
   }
   this->redistribute();
   this->Solver->startPressure();
-  this->regatherGhosts();
+  this->refreshCarried();
   return removed;
 }
 
