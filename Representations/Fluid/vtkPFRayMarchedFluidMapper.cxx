@@ -2,6 +2,7 @@
 
 #include "FluidFrame.h"
 #include "FluidScreenTargets.h"
+#include "FluidSharedScene.h"
 #include "GuardedRequest.h"
 #include "RayMarchBoundsPass.h"
 #include "RayMarchBuffers.h"
@@ -123,9 +124,15 @@ double* vtkPFRayMarchedFluidMapper::GetBounds()
 void vtkPFRayMarchedFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
 {
   Internals& in = *this->March;
+  this->LastSpacing = 0.0;
+  parafluid::FluidSharedScene shared(this->GetSharedRendering(), renderer);
+  if (shared.Lends())
+  {
+    shared.Lend();
+    return;
+  }
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   auto* input = vtkPointSet::SafeDownCast(this->GetInputDataObject(0, 0));
-  this->LastSpacing = 0.0;
   if (!window || !input || input->GetNumberOfPoints() == 0)
   {
     return;
@@ -210,6 +217,7 @@ void vtkPFRayMarchedFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
       whole.RectMax[1] = frame.Size[1];
     }
     in.Targets.CopyOpaqueScene(whole, transparent);
+    shared.Composite(whole, in.Targets, transparent);
   }
   state->vtkglEnable(GL_SCISSOR_TEST);
   timePass(0);

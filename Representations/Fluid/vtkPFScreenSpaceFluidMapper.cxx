@@ -6,6 +6,7 @@
 #include "FluidParticleBuffers.h"
 #include "FluidScreenTargets.h"
 #include "FluidShadePass.h"
+#include "FluidSharedScene.h"
 #include "FluidSplatPass.h"
 #include "FluidThicknessBlurPass.h"
 
@@ -269,6 +270,12 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   this->LastUsedPointSprites = false;
   this->LastThicknessFactor = 0;
   std::fill(this->LastScreenRect, this->LastScreenRect + 4, 0);
+  parafluid::FluidSharedScene shared(this->Sharing, renderer);
+  if (shared.Lends())
+  {
+    shared.Lend();
+    return;
+  }
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   auto* input = vtkPointSet::SafeDownCast(this->GetInputDataObject(0, 0));
   if (!window || !input || input->GetNumberOfPoints() == 0)
@@ -319,6 +326,7 @@ void vtkPFScreenSpaceFluidMapper::Render(vtkRenderer* renderer, vtkActor* actor)
   frame.Framebuffer = in.Targets.Framebuffer;
   // The opaque scene drawn so far: its depth (occlusion) and, for refraction, its colour.
   in.Targets.CopyOpaqueScene(frame, refraction);
+  shared.Composite(frame, in.Targets, refraction);
 
   // The offscreen passes, over the fluid's rectangle.
   state->PushFramebufferBindings();

@@ -31,6 +31,7 @@
  */
 #pragma once
 
+#include "FluidSharedScene.h" // SharedRendering member
 #include "ParaFluidFluidRepresentationsModule.h"
 #include "SetParameterMacros.h"
 #include "vtkMapper.h"
@@ -148,6 +149,12 @@ public:
   void Render(vtkRenderer* renderer, vtkActor* actor) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
   double* GetBounds() override;
+
+  /// The processes that share this view's rendering (pvserver or pvbatch under MPI, composited by
+  /// IceT), or null when one process renders it. Shared, process 0 holds the particles and draws
+  /// the fluid over every process's opaque scene (parafluid::FluidSharedScene); the others draw no
+  /// fluid and lend their scene. Render is then collective. Set by the representation every render.
+  void SetSharedRendering(const parafluid::SharedRendering& sharing) { this->Sharing = sharing; }
   void GetBounds(double bounds[6]) override { this->vtkMapper::GetBounds(bounds); }
 
   //@{
@@ -193,6 +200,8 @@ protected:
   /// grown by `reach` [world units], plus `margin` pixels. False when it is not on screen.
   bool PlaceOnScreen(vtkRenderer* renderer, vtkActor* actor, parafluid::FluidFrame& frame, const double bounds[6],
                      double reach, int margin);
+  /// The processes sharing this frame's rendering (see SetSharedRendering), or null.
+  const parafluid::SharedRendering& GetSharedRendering() const { return this->Sharing; }
   /// The cube map set by SetEnvironmentTexture (null when none).
   vtkTexture* GetEnvironmentTexture() const;
   /// The fluid's colour mapped from the scalars (null when not colouring or not one per point).
@@ -206,6 +215,7 @@ private:
   std::unique_ptr<Internals> Internal;
 
   double ParticleRadius = 0.01;
+  parafluid::SharedRendering Sharing;
   std::string RadiusArray;
   // Render's parts. The particles to the GPU when they changed; false when none can be drawn.
   bool UploadParticles(vtkPointSet* input, vtkOpenGLRenderWindow* window);

@@ -1,6 +1,9 @@
 #include "vtkPFScreenSpaceFluidRepresentation.h"
 
+#include "FluidParticleGather.h"
 #include "ParticleArrays.h"
+#include "ProcessCommunicator.h"
+#include "parafluid/common/Communicator.h"
 #include "vtkPFScreenSpaceFluidActor.h"
 #include "vtkPFScreenSpaceFluidMapper.h"
 
@@ -29,6 +32,7 @@
 #include "vtkScalarsToColors.h"
 #include "vtkTexture.h"
 
+#include <algorithm>
 #include <cmath>
 
 vtkStandardNewMacro(vtkPFScreenSpaceFluidRepresentation);
@@ -148,6 +152,16 @@ int vtkPFScreenSpaceFluidRepresentation::RequestData(vtkInformation* request, vt
       this->Particles = particlesOf(vtkDataSet::SafeDownCast(input), hadCells);
     }
   }
+  if (!this->ProcessesAsked)
+  {
+    // Collective, and every process's representation reaches its first RequestData together.
+    this->Processes = parafluid::vtk::makeProcessCommunicator();
+    this->ProcessesAsked = true;
+  }
+  if (this->Processes)
+  {
+    this->Particles = parafluid::gatherParticlesOnFirst(this->Particles, *this->Processes);
+  }
   if (hadCells)
   {
     vtkWarningMacro("Screen-Space Fluid draws the points of its input as particles; the input's cells "
@@ -166,6 +180,11 @@ int vtkPFScreenSpaceFluidRepresentation::ProcessViewRequest(vtkInformationReques
   if (request == vtkPVView::REQUEST_UPDATE())
   {
     vtkPVRenderView::SetPiece(inInfo, this, this->Particles);
+    if (this->Processes)
+    {
+      // A shared render runs collectives in the mapper: IceT must render every process.
+      outInfo->Set(vtkPVRenderView::RENDER_EMPTY_IMAGES(), 1);
+    }
     double bounds[6];
     this->Particles->GetBounds(bounds);
     if (this->Particles->GetNumberOfPoints() > 0)
@@ -187,6 +206,26 @@ int vtkPFScreenSpaceFluidRepresentation::ProcessViewRequest(vtkInformationReques
   }
   else if (request == vtkPVView::REQUEST_RENDER())
   {
+    auto* view = vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
+    const bool lod = inInfo->Has(vtkPVRenderView::USE_LOD()) && inInfo->Get(vtkPVRenderView::USE_LOD()) != 0;
+    const bool shared =
+      this->Processes && view &&
+      (lod ? view->GetUseDistributedRenderingForLODRender() : view->GetUseDistributedRenderingForRender());
+    parafluid::SharedRendering sharing;
+    if (shared)
+    {
+      // The view's background, read before the render begins: while the processes render, ParaView
+      // sets their renderers' background to black (vtkSynchronizedRenderers' FixBackground).
+      vtkRenderer* renderer = view->GetRenderer();
+      sharing.Processes = this->Processes.get();
+      renderer->GetBackground(sharing.BackgroundBottom);
+      renderer->GetBackground2(sharing.BackgroundTop);
+      if (!renderer->GetGradientBackground())
+      {
+        std::copy(sharing.BackgroundBottom, sharing.BackgroundBottom + 3, sharing.BackgroundTop);
+      }
+    }
+    this->Mapper->SetSharedRendering(sharing);
     vtkPolyData* delivered = nullptr;
     if (vtkAlgorithmOutput* port = vtkPVRenderView::GetPieceProducer(inInfo, this, 0))
     {

@@ -2,11 +2,11 @@
  * @class vtkPFScreenSpaceFluidRepresentation
  * @brief ParaView's "Screen-Space Fluid" representation: particles drawn as a smooth liquid.
  *
- * Delivers the input's points (each rank its own piece; composite inputs merged; any dataset's
- * points, with a warning when it has cells other than vertices) to a
- * vtkPFScreenSpaceFluidMapper drawn by a vtkPFScreenSpaceFluidActor, and forwards the settings.
- * Under MPI every rank renders its particles and ParaView composites the images by depth: the
- * fluid writes the depth of its surface.
+ * Delivers the input's points (composite inputs merged; any dataset's points, with a warning when
+ * it has cells other than vertices) to a vtkPFScreenSpaceFluidMapper drawn by a
+ * vtkPFScreenSpaceFluidActor, and forwards the settings. Under MPI the pieces are gathered on
+ * process 0, which draws the fluid over the opaque scene of every process (FluidSharedScene);
+ * ParaView then composites the processes' images by depth.
  */
 #pragma once
 
@@ -14,12 +14,17 @@
 #include "vtkPVDataRepresentation.h"
 #include "vtkSmartPointer.h"
 
+#include <memory>
 #include <string>
 
 class vtkPFScreenSpaceFluidActor;
 class vtkPFScreenSpaceFluidMapper;
 class vtkPolyData;
 class vtkScalarsToColors;
+namespace parafluid
+{
+class Communicator;
+}
 
 class PARAFLUIDFLUIDREPRESENTATIONS_EXPORT vtkPFScreenSpaceFluidRepresentation : public vtkPVDataRepresentation
 {
@@ -105,4 +110,7 @@ private:
   double ParticleRadius = 0.0;
   std::string EnvironmentImages[6];
   bool EnvironmentChanged = false;
+  // The session's processes (null in a serial one): the particles are drawn on process 0.
+  std::unique_ptr<parafluid::Communicator> Processes;
+  bool ProcessesAsked = false;
 };

@@ -1,0 +1,194 @@
+#include "FluidSharedScene.h"
+
+#include "FluidScreenTargets.h"
+#include "parafluid/common/Communicator.h"
+
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderer.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+namespace parafluid
+{
+namespace
+{
+// A viewport rectangle as process 0 sends it: first pixel and size; an empty one means "nothing".
+using Rect = std::array<std::int32_t, 4>;
+
+std::vector<std::uint8_t> bytesOf(const void* data, std::size_t size)
+{
+  const auto* p = static_cast<const std::uint8_t*>(data);
+  return std::vector<std::uint8_t>(p, p + size);
+}
+
+/// The colour (RGBA, 8 bits) and window depth of the framebuffer being drawn inside `rect` of the
+/// viewport starting at `origin`, colours first.
+std::vector<std::uint8_t> readScene(vtkOpenGLState* state, const int origin[2], const Rect& rect)
+{
+  const std::size_t pixels = static_cast<std::size_t>(rect[2]) * static_cast<std::size_t>(rect[3]);
+  std::vector<std::uint8_t> scene(pixels * 8);
+  GLint drawFramebuffer = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
+  state->PushReadFramebufferBinding();
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawFramebuffer);
+  state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(origin[0] + rect[0], origin[1] + rect[1], rect[2], rect[3], GL_RGBA, GL_UNSIGNED_BYTE, scene.data());
+  glReadPixels(origin[0] + rect[0], origin[1] + rect[1], rect[2], rect[3], GL_DEPTH_COMPONENT, GL_FLOAT,
+               scene.data() + pixels * 4);
+  state->PopReadFramebufferBinding();
+  return scene;
+}
+
+/// The renderer's background at viewport row `y` of `height`, as 8-bit RGBA (VTK's gradient runs
+/// from Background at the bottom to Background2 at the top).
+std::array<std::uint8_t, 4> backgroundAt(vtkRenderer* renderer, int y, int height)
+{
+  const double* bottom = renderer->GetBackground();
+  const double* top = renderer->GetGradientBackground() ? renderer->GetBackground2() : bottom;
+  const double t = (static_cast<double>(y) + 0.5) / static_cast<double>(std::max(height, 1));
+  std::array<std::uint8_t, 4> c{ 0, 0, 0, 255 };
+  for (int k = 0; k < 3; ++k)
+  {
+    const double v = std::clamp(bottom[k] + t * (top[k] - bottom[k]), 0.0, 1.0);
+    c[static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(std::lround(255.0 * v));
+  }
+  return c;
+}
+} // namespace
+
+FluidSharedScene::FluidSharedScene(const SharedRendering& sharing, vtkRenderer* renderer)
+  : Processes(sharing.Processes && sharing.Processes->size() > 1 ? sharing.Processes : nullptr)
+{
+  this->Renderer = renderer;
+  if (this->Processes && this->Processes->rank() == 0 && renderer)
+  {
+    this->Restore = true;
+    renderer->GetBackground(this->Background[0]);
+    renderer->GetBackground2(this->Background[1]);
+    this->Gradient = renderer->GetGradientBackground();
+    renderer->SetBackground(const_cast<double*>(sharing.BackgroundBottom));
+    renderer->SetBackground2(const_cast<double*>(sharing.BackgroundTop));
+    renderer->SetGradientBackground(true);
+  }
+}
+
+FluidSharedScene::~FluidSharedScene()
+{
+  if (this->Restore)
+  {
+    this->Renderer->SetBackground(this->Background[0]);
+    this->Renderer->SetBackground2(this->Background[1]);
+    this->Renderer->SetGradientBackground(this->Gradient);
+  }
+  if (this->Processes && this->Processes->rank() == 0 && !this->Done)
+  {
+    std::vector<std::vector<std::uint8_t>> sends(static_cast<std::size_t>(this->Processes->size()));
+    const Rect nothing{ 0, 0, 0, 0 };
+    for (std::size_t r = 1; r < sends.size(); ++r)
+    {
+      sends[r] = bytesOf(nothing.data(), sizeof(nothing));
+    }
+    this->Processes->exchange(sends);
+  }
+}
+
+bool FluidSharedScene::Lends() const
+{
+  return this->Processes && this->Processes->rank() != 0;
+}
+
+void FluidSharedScene::Lend()
+{
+  const auto size = static_cast<std::size_t>(this->Processes->size());
+  const auto told = this->Processes->exchange(std::vector<std::vector<std::uint8_t>>(size));
+  Rect rect{ 0, 0, 0, 0 };
+  if (told[0].size() == sizeof(rect))
+  {
+    std::memcpy(rect.data(), told[0].data(), sizeof(rect));
+  }
+  if (rect[2] <= 0 || rect[3] <= 0)
+  {
+    return;
+  }
+  std::vector<std::vector<std::uint8_t>> sends(size);
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(this->Renderer ? this->Renderer->GetRenderWindow() : nullptr);
+  if (window)
+  {
+    int viewport[2], origin[2];
+    this->Renderer->GetTiledSizeAndOrigin(&viewport[0], &viewport[1], &origin[0], &origin[1]);
+    sends[0] = readScene(window->GetState(), origin, rect);
+  }
+  // A process without a window sends nothing and counts as drawing nothing there.
+  this->Processes->exchange(sends);
+}
+
+void FluidSharedScene::Composite(const FluidFrame& frame, FluidScreenTargets& targets, bool withColor)
+{
+  if (!this->Processes || this->Done)
+  {
+    return;
+  }
+  this->Done = true;
+  const Rect rect{ frame.RectMin[0], frame.RectMin[1], frame.RectWidth(), frame.RectHeight() };
+  const auto size = static_cast<std::size_t>(this->Processes->size());
+  std::vector<std::vector<std::uint8_t>> sends(size);
+  for (std::size_t r = 1; r < size; ++r)
+  {
+    sends[r] = bytesOf(rect.data(), sizeof(rect));
+  }
+  this->Processes->exchange(sends);
+  if (rect[2] <= 0 || rect[3] <= 0)
+  {
+    return;
+  }
+  auto received = this->Processes->exchange(std::vector<std::vector<std::uint8_t>>(size));
+  received[0] = readScene(frame.State, frame.Origin, rect);
+  const std::size_t pixels = static_cast<std::size_t>(rect[2]) * static_cast<std::size_t>(rect[3]);
+  std::vector<std::uint8_t> color(pixels * 4);
+  std::vector<float> depth(pixels, 1.0f);
+  for (std::size_t i = 0; i < pixels; ++i)
+  {
+    const std::uint8_t* nearest = nullptr;
+    for (const auto& scene : received)
+    {
+      if (scene.size() != pixels * 8)
+      {
+        continue;
+      }
+      float d;
+      std::memcpy(&d, scene.data() + pixels * 4 + i * 4, sizeof(d));
+      if (d < depth[i])
+      {
+        depth[i] = d;
+        nearest = scene.data() + i * 4;
+      }
+    }
+    if (nearest)
+    {
+      std::memcpy(color.data() + i * 4, nearest, 4);
+    }
+    else
+    {
+      const int y = rect[1] + static_cast<int>(i / static_cast<std::size_t>(rect[2]));
+      const auto sky = backgroundAt(frame.Renderer, y, frame.Size[1]); // the view's, set above
+      std::memcpy(color.data() + i * 4, sky.data(), 4);
+    }
+  }
+  frame.State->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  targets.OpaqueDepth->Bind();
+  glTexSubImage2D(GL_TEXTURE_2D, 0, rect[0], rect[1], rect[2], rect[3], GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  targets.OpaqueDepth->Deactivate();
+  if (withColor)
+  {
+    targets.OpaqueColor->Bind();
+    glTexSubImage2D(GL_TEXTURE_2D, 0, rect[0], rect[1], rect[2], rect[3], GL_RGBA, GL_UNSIGNED_BYTE, color.data());
+    targets.OpaqueColor->Deactivate();
+  }
+}
+} // namespace parafluid
