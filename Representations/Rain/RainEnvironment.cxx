@@ -80,7 +80,8 @@ bool RainEnvironment::ProjectImages()
   return true;
 }
 
-const std::array<float, 48>& RainEnvironment::Coefficients(vtkRenderer* renderer)
+const std::array<float, 48>& RainEnvironment::Coefficients(vtkRenderer* renderer, const double bottom[3],
+                                                           const double top[3])
 {
   if (this->FilesChanged)
   {
@@ -93,17 +94,9 @@ const std::array<float, 48>& RainEnvironment::Coefficients(vtkRenderer* renderer
     this->Current = this->Images;
     return this->Current;
   }
-  double bottom[3], top[3], up[3] = { 0.0, 0.0, 1.0 };
-  renderer->GetBackground(bottom);
-  renderer->GetBackground2(top);
-  const bool gradient = renderer->GetGradientBackground();
-  if (!gradient)
-  {
-    std::copy(bottom, bottom + 3, top);
-  }
+  double up[3] = { 0.0, 0.0, 1.0 };
   renderer->GetActiveCamera()->GetViewUp(up);
-  const std::array<double, 10> key = { bottom[0], bottom[1], bottom[2], top[0], top[1],
-                                       top[2],    up[0],     up[1],     up[2],  gradient ? 1.0 : 0.0 };
+  const std::array<double, 9> key = { bottom[0], bottom[1], bottom[2], top[0], top[1], top[2], up[0], up[1], up[2] };
   if (this->HaveBackground && key == this->BackgroundKey)
   {
     return this->Current;

@@ -17,8 +17,9 @@ class RainEnvironment
 public:
   /// Image file of cube-map face 0..5 (+X, -X, +Y, -Y, +Z, -Z); empty: none.
   void SetImage(int face, const std::string& file);
-  /// The coefficients for this frame, channel-major (16 red, 16 green, 16 blue).
-  const std::array<float, 48>& Coefficients(vtkRenderer* renderer);
+  /// The coefficients for this frame, channel-major (16 red, 16 green, 16 blue): the images', or
+  /// the view's background from `bottom` to `top` about the renderer's camera up.
+  const std::array<float, 48>& Coefficients(vtkRenderer* renderer, const double bottom[3], const double top[3]);
   /// The mean radiance (RGB) over the sphere.
   void Average(float rgb[3]) const;
 
@@ -30,7 +31,7 @@ private:
   bool HaveImages = false;
   std::array<float, 48> Images{};
   std::array<float, 48> Current{};
-  std::array<double, 10> BackgroundKey{}; // background colours, gradient flag and up vector last projected
+  std::array<double, 9> BackgroundKey{}; // background colours, gradient flag and up vector last projected
   bool HaveBackground = false;
 };
 } // namespace parafluid

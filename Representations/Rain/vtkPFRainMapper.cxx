@@ -198,7 +198,7 @@ void vtkPFRainMapper::Render(vtkRenderer* renderer, vtkActor*)
   {
     frame.Eye[k] = static_cast<float>(eye[k]);
   }
-  frame.Environment = in.Environment.Coefficients(renderer);
+  frame.Environment = in.Environment.Coefficients(renderer, this->ViewBackground[0], this->ViewBackground[1]);
   bool ok = true;
   if (this->Kind == Streaks)
   {

@@ -15,6 +15,7 @@
 #include "SetParameterMacros.h"
 #include "vtkMapper.h"
 
+#include <algorithm>
 #include <memory>
 #include <string>
 
@@ -54,6 +55,14 @@ public:
   /// Whether the last frame's streaks were drawn on the CPU.
   bool GetLastDrawnOnCpu() const;
   void SetEnvironmentImage(int face, const char* file);
+  /// The view's background, bottom and top (the same colour twice when not a gradient), that lights
+  /// the drops without environment images. Set by the representation before each render: while
+  /// ParaView's processes render for compositing, their renderers' background is black.
+  void SetViewBackground(const double bottom[3], const double top[3])
+  {
+    std::copy(bottom, bottom + 3, this->ViewBackground[0]);
+    std::copy(top, top + 3, this->ViewBackground[1]);
+  }
 
   void Render(vtkRenderer* renderer, vtkActor* actor) override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
@@ -66,6 +75,7 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
 private:
+  double ViewBackground[2][3] = { { 0.0, 0.0, 0.0 }, { 0.0, 0.0, 0.0 } };
   vtkPFRainMapper(const vtkPFRainMapper&) = delete;
   void operator=(const vtkPFRainMapper&) = delete;
 

@@ -153,6 +153,15 @@ int vtkPFRainRepresentation::ProcessViewRequest(vtkInformationRequestKey* reques
       delivered = parafluid::vtk::firstPolyData(port->GetProducer()->GetOutputDataObject(port->GetIndex()));
     }
     this->Mapper->SetInputDataObject(delivered ? delivered : vtkSmartPointer<vtkPolyData>::New().Get());
+    if (auto* view = vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW())))
+    {
+      // Read before the render begins, while the renderer still shows the view's background.
+      vtkRenderer* renderer = view->GetRenderer();
+      double bottom[3], top[3];
+      renderer->GetBackground(bottom);
+      renderer->GetBackground2(top);
+      this->Mapper->SetViewBackground(bottom, renderer->GetGradientBackground() ? top : bottom);
+    }
   }
   return 1;
 }

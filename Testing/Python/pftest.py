@@ -112,6 +112,65 @@ def outside_mpi_environment():
     return {k: v for k, v in os.environ.items() if not k.startswith(("OMPI_", "PMIX_", "OPAL_", "PRTE_"))}
 
 
+class pvserver:
+    """`with pvserver(ranks) as port:` a pvserver of `ranks` MPI processes (offscreen rendering) on a
+    free local port, in its own MPI job outside this process's (pvpython is an MPI singleton);
+    stopped on leaving. Its output is read away so that a full pipe never stops it."""
+
+    def __init__(self, ranks=2):
+        self.ranks = ranks
+
+    def __enter__(self):
+        import shutil
+        import socket
+        import threading
+        with socket.socket() as probe:
+            probe.bind(("localhost", 0))
+            port = probe.getsockname()[1]
+        self.server = subprocess.Popen(
+            [shutil.which("mpirun"), "--allow-run-as-root", "--oversubscribe", "-np", str(self.ranks),
+             "-x", "OMP_NUM_THREADS", "-x", "OMP_WAIT_POLICY", shutil.which("stdbuf"), "-oL",
+             shutil.which("pvserver"), "--server-port=%d" % port, "--force-offscreen-rendering"],
+            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=outside_mpi_environment())
+        for line in self.server.stdout:
+            if "Accepting connection" in line:
+                break
+        if self.server.poll() is not None:
+            self.__exit__(None, None, None)
+            check(False, "pvserver did not start")
+        threading.Thread(target=lambda: self.server.stdout.read(), daemon=True).start()
+        return port
+
+    def __exit__(self, *args):
+        self.server.terminate()
+        try:
+            self.server.wait(timeout=20)
+        except subprocess.TimeoutExpired:
+            self.server.kill()
+        return False
+
+
+def image_difference(png, reference):
+    """VTK's vtkImageDifference of two PNG files of one size: (thresholded error, the filter)."""
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.vtkImagingCore import vtkImageDifference
+
+    def read(path):
+        reader = vtkPNGReader()
+        reader.SetFileName(path)
+        reader.Update()
+        return reader.GetOutput()
+
+    test, base = read(png), read(reference)
+    check(test.GetDimensions() == base.GetDimensions(),
+          "%s: image size %s != %s" % (png, test.GetDimensions(), base.GetDimensions()))
+    diff = vtkImageDifference()
+    diff.SetInputData(test)
+    diff.SetImageData(base)
+    diff.Update()
+    return diff.GetThresholdedError(), diff
+
+
 def scratch_dir():
     return tempfile.mkdtemp(prefix="parafluid-test-")
 
@@ -215,8 +274,7 @@ def compare_with_baseline(png, name, threshold=10.0):
     render that differs on another processor; the image must match one of them.
     With PARAFLUID_UPDATE_BASELINE set, the image becomes the new baseline instead."""
     import shutil
-    from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
-    from vtkmodules.vtkImagingCore import vtkImageDifference
+    from vtkmodules.vtkIOImage import vtkPNGWriter
 
     # Baselines live with the concern's tests: Testing/<Concern>/Baselines beside the calling script.
     caller = sys._getframe(1).f_code.co_filename
@@ -229,24 +287,11 @@ def compare_with_baseline(png, name, threshold=10.0):
     while os.path.exists("%s_%d%s" % (stem, len(baselines), extension)):
         baselines.append("%s_%d%s" % (stem, len(baselines), extension))
 
-    def read(path):
-        reader = vtkPNGReader()
-        reader.SetFileName(path)
-        reader.Update()
-        return reader.GetOutput()
-
-    test = read(png)
     best = None
     for candidate in baselines:
-        base = read(candidate)
-        check(test.GetDimensions() == base.GetDimensions(),
-              "%s: image size %s != baseline %s" % (name, test.GetDimensions(), base.GetDimensions()))
-        diff = vtkImageDifference()
-        diff.SetInputData(test)
-        diff.SetImageData(base)
-        diff.Update()
-        if best is None or diff.GetThresholdedError() < best[0]:
-            best = (diff.GetThresholdedError(), diff, candidate)
+        error, diff = image_difference(png, candidate)
+        if best is None or error < best[0]:
+            best = (error, diff, candidate)
     error, diff, closest = best
     print("%s: thresholded error %.3f (threshold %.1f)%s" %
           (name, error, threshold, "" if closest == baseline else " against " + os.path.basename(closest)))

@@ -3,11 +3,7 @@ the server's processes) -> Particle Surface -> save gives what the builtin sessi
 ids, every particle within 1e-5 m after 20 fixed steps, the surface's area within 0.5 %), and
 going forward and back in time on the server gives the same outputs again."""
 import os
-import shutil
-import socket
-import subprocess
 import tempfile
-import threading
 
 import numpy as np
 from paraview.simple import *
@@ -50,21 +46,7 @@ def pipeline(path, saved):
 pftest.load(globals())
 builtin = pipeline(scene, os.path.join(folder, "builtin.h5part"))
 
-with socket.socket() as probe:
-    probe.bind(("localhost", 0))
-    port = probe.getsockname()[1]
-# The server's MPI job outside this process's own MPI (pvpython is an MPI singleton).
-server = subprocess.Popen([shutil.which("mpirun"), "--allow-run-as-root", "--oversubscribe", "-np", "2",
-                           "-x", "OMP_NUM_THREADS", "-x", "OMP_WAIT_POLICY", shutil.which("stdbuf"), "-oL",
-                           shutil.which("pvserver"), "--server-port=%d" % port, "--force-offscreen-rendering"],
-                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=pftest.outside_mpi_environment())
-try:
-    for line in server.stdout:
-        if "Accepting connection" in line:
-            break
-    pftest.check(server.poll() is None, "pvserver did not start")
-    # The rest of its output is read away, so that a full pipe never stops the server.
-    threading.Thread(target=lambda: server.stdout.read(), daemon=True).start()
+with pftest.pvserver(2) as port:
     Disconnect()
     Connect("localhost", port)
     pftest.check(servermanager.ActiveConnection.GetNumberOfDataPartitions() == 2, "the server has %d processes" %
@@ -80,12 +62,6 @@ try:
     pftest.check(np.array_equal(remote[3], remote[1]), "the server's output at 0.004 s changed when asked again")
     pftest.check(len(remote[4]) == len(builtin[4]), "the server lost particles going forward")
     Disconnect()
-finally:
-    server.terminate()
-    try:
-        server.wait(timeout=20)
-    except subprocess.TimeoutExpired:
-        server.kill()
 pftest.check(os.path.getsize(os.path.join(folder, "server.h5part")) > 0, "the server wrote no file")
 print("pvserver session: ok (%d particles, surface %.4f m^2, largest departure %.2g m)" %
       (len(builtin[0]), builtin[2], departure))
