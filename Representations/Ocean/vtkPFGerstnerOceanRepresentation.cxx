@@ -14,6 +14,7 @@
 #include "vtkAlgorithmOutput.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkCommand.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
@@ -455,6 +456,38 @@ void vtkPFGerstnerOceanRepresentation::UpdateShaders()
   shaders->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, "", false);
 }
 
+bool vtkPFGerstnerOceanRepresentation::AddToView(vtkView* view)
+{
+  if (auto* renderView = vtkPVRenderView::SafeDownCast(view))
+  {
+    // After ParaView's own StartEvent observers (priority 0), which give a server's processes the
+    // client's camera: ParaView asks for the render before that.
+    this->CameraObserver = renderView->GetRenderer()->AddObserver(
+      vtkCommand::StartEvent, this, &vtkPFGerstnerOceanRepresentation::UpdateViewToWorld, -1.0f);
+  }
+  return this->Superclass::AddToView(view);
+}
+
+bool vtkPFGerstnerOceanRepresentation::RemoveFromView(vtkView* view)
+{
+  if (auto* renderView = vtkPVRenderView::SafeDownCast(view))
+  {
+    renderView->GetRenderer()->RemoveObserver(this->CameraObserver);
+  }
+  return this->Superclass::RemoveFromView(view);
+}
+
+void vtkPFGerstnerOceanRepresentation::UpdateViewToWorld()
+{
+  vtkNew<vtkMatrix4x4> viewToWorld;
+  if (auto* view = vtkPVRenderView::SafeDownCast(this->GetView()))
+  {
+    vtkMatrix4x4::Invert(view->GetActiveCamera()->GetModelViewTransformMatrix(), viewToWorld);
+  }
+  viewToWorld->Transpose(); // vtkUniforms uploads row by row; GLSL reads columns
+  this->Actor->GetShaderProperty()->GetVertexCustomUniforms()->SetUniformMatrix("oceanVCWC", viewToWorld);
+}
+
 void vtkPFGerstnerOceanRepresentation::UpdateUniforms(double time)
 {
   const auto* model = this->Internal->Model.get();
@@ -527,14 +560,7 @@ void vtkPFGerstnerOceanRepresentation::UpdateUniforms(double time)
     }
   }
 
-  vtkNew<vtkMatrix4x4> viewToWorld;
-  if (auto* view = vtkPVRenderView::SafeDownCast(this->GetView()))
-  {
-    vtkMatrix4x4::Invert(view->GetActiveCamera()->GetModelViewTransformMatrix(), viewToWorld);
-  }
-  viewToWorld->Transpose(); // vtkUniforms uploads row by row; GLSL reads columns
-
-  this->Actor->GetShaderProperty()->GetVertexCustomUniforms()->SetUniformMatrix("oceanVCWC", viewToWorld);
+  this->UpdateViewToWorld();
   for (vtkUniforms* u : { this->Actor->GetShaderProperty()->GetVertexCustomUniforms(),
                           this->Actor->GetShaderProperty()->GetFragmentCustomUniforms() })
   {

@@ -110,6 +110,8 @@ public:
 protected:
   vtkPFGerstnerOceanRepresentation();
   ~vtkPFGerstnerOceanRepresentation() override;
+  bool AddToView(vtkView* view) override;
+  bool RemoveFromView(vtkView* view) override;
 
 private:
   vtkPFGerstnerOceanRepresentation(const vtkPFGerstnerOceanRepresentation&) = delete;
@@ -128,6 +130,10 @@ private:
   void UpdateModel(vtkDataObject* delivered);
   void UpdateShaders();
   void UpdateUniforms(double time);
+  /// The camera's view-to-world matrix for the wave shader, as the renderer starts drawing (the
+  /// camera of this render on every process).
+  void UpdateViewToWorld();
+  unsigned long CameraObserver = 0;
 
   /// Sets one field of the sea; a value that leaves the settings invalid (NaN, out of range) is
   /// ignored with a warning that names the property (SeaSettings::validate), as the source refuses it.
