@@ -1,8 +1,12 @@
 #include "vtkPFH5PartWriter.h"
 
+#include "H5PartColumns.h"
 #include "H5mdFrameWriter.h"
+#include "ParallelH5PartStep.h"
 #include "ParticleArrays.h"
+#include "ProcessCommunicator.h"
 #include "TemporaryFiles.h"
+#include "parafluid/common/Communicator.h"
 #include "parafluid/h5part/Attributes.h"
 #include "parafluid/h5part/Handle.h"
 
@@ -40,6 +44,8 @@ struct vtkPFH5PartWriter::OpenFile
   parafluid::h5::TemporaryFileGuard Guard; // removes the temporary if a signal ends the process
   Handle File;
   std::unique_ptr<parafluid::vtk::H5mdFrameWriter> H5md; // set when the file name ends in .h5md
+  // Under MPI with parallel HDF5: the processes that write this one file together.
+  std::unique_ptr<parafluid::Communicator> Processes;
 };
 
 namespace
@@ -100,37 +106,6 @@ bool writeDoubleAttribute(hid_t object, const char* name, const double* values, 
   return attribute.valid() && H5Awrite(attribute, H5T_NATIVE_DOUBLE, values) >= 0;
 }
 
-/// HDF5 memory/file type for a VTK array, or -1 for types H5Part does not hold.
-bool typesFor(vtkDataArray* array, hid_t& memoryType, hid_t& fileType)
-{
-  switch (array->GetDataType())
-  {
-    case VTK_FLOAT:
-      memoryType = H5T_NATIVE_FLOAT;
-      fileType = H5T_IEEE_F32LE;
-      return true;
-    case VTK_DOUBLE:
-      memoryType = H5T_NATIVE_DOUBLE;
-      fileType = H5T_IEEE_F64LE;
-      return true;
-    case VTK_INT:
-      memoryType = H5T_NATIVE_INT;
-      fileType = H5T_STD_I32LE;
-      return true;
-    case VTK_LONG_LONG:
-    case VTK_ID_TYPE:
-    case VTK_LONG:
-      if (array->GetDataTypeSize() == 8)
-      {
-        memoryType = H5T_NATIVE_INT64;
-        fileType = H5T_STD_I64LE;
-        return true;
-      }
-      return false;
-    default:
-      return false;
-  }
-}
 } // namespace
 
 vtkStandardNewMacro(vtkPFH5PartWriter);
@@ -208,21 +183,28 @@ bool vtkPFH5PartWriter::WriteSteps(vtkDataObject* first)
   const std::size_t steps = allSteps ? this->InputTimes.size() : 1;
   bool ok = true;
   bool writesHere = true;
+  // Under MPI every process holds a piece. With parallel HDF5 all processes write the one H5Part
+  // file together, each its particles; otherwise (and for H5MD) process 0 gathers the pieces and
+  // writes alone, so processes never write (and rename) over each other. Every verdict (the
+  // input's, the write's) is agreed by all processes before the next collective call, so a failure
+  // on one of them (a missing folder, a full disk, an input that fails) stops all at the same step.
+  const bool parallel =
+    parafluid::vtk::processCount() > 1 && parafluid::vtk::parallelHdf5Available() && !this->IsH5md();
   for (std::size_t k = 0; k < steps && ok; ++k)
   {
     vtkDataObject* local = k == 0 ? first : this->UpdateInputTo(this->InputTimes[k]);
-    // Under MPI every process holds a piece: process 0 gathers them and writes the one file, so
-    // processes never write (and rename) over each other. Every verdict (the input's, process 0's
-    // write) is agreed by all processes before the next collective call, so a failure on one of
-    // them (a missing folder, a full disk, an input that fails) stops all at the same step.
-    if (!parafluid::vtk::agreeOnAllProcesses(local != nullptr))
+    if (!parafluid::vtk::agreeOnAllProcesses(local != nullptr && (!parallel || vtkPointSet::SafeDownCast(local))))
     {
       vtkErrorMacro("ParaFluid H5Part Writer: the input failed at time " << this->InputTimes[k]
                                                                          << "; nothing was written");
       ok = false;
       break;
     }
-    vtkSmartPointer<vtkDataObject> input = parafluid::vtk::gatherToFirstProcess(local, writesHere);
+    vtkSmartPointer<vtkDataObject> input = local;
+    if (!parallel)
+    {
+      input = parafluid::vtk::gatherToFirstProcess(local, writesHere);
+    }
     if (writesHere)
     {
       double time = 0.0;
@@ -236,7 +218,7 @@ bool vtkPFH5PartWriter::WriteSteps(vtkDataObject* first)
       }
       try
       {
-        ok = (k > 0 || this->BeginFile()) && this->WriteStep(input, static_cast<int>(k), time);
+        ok = (k > 0 || this->BeginFile(parallel)) && this->WriteStep(input, static_cast<int>(k), time);
       }
       catch (const std::bad_alloc&)
       {
@@ -255,7 +237,13 @@ bool vtkPFH5PartWriter::WriteSteps(vtkDataObject* first)
   return parafluid::vtk::agreeOnAllProcesses(!writesHere || this->FinishFile());
 }
 
-bool vtkPFH5PartWriter::BeginFile()
+bool vtkPFH5PartWriter::IsH5md() const
+{
+  const std::size_t dot = this->FileName.rfind('.');
+  return dot != std::string::npos && this->FileName.substr(dot) == ".h5md";
+}
+
+bool vtkPFH5PartWriter::BeginFile(bool parallel)
 {
   this->AbandonFile();
   if (this->FileName.empty())
@@ -270,12 +258,24 @@ bool vtkPFH5PartWriter::BeginFile()
     return false;
   }
   parafluid::h5::QuietErrors quiet;
-  // Temporaries that killed writers left beside this target (SIGKILL cannot be caught).
-  parafluid::h5::removeStaleTemporaries(this->FileName);
-  this->File = std::make_unique<OpenFile>(parafluid::h5::temporaryNameFor(this->FileName));
+  std::unique_ptr<parafluid::Communicator> processes = parallel ? parafluid::vtk::makeProcessCommunicator() : nullptr;
+  std::string temporary;
+  if (!processes || processes->rank() == 0)
+  {
+    // Temporaries that killed writers left beside this target (SIGKILL cannot be caught).
+    parafluid::h5::removeStaleTemporaries(this->FileName);
+    temporary = parafluid::h5::temporaryNameFor(this->FileName);
+  }
+  if (processes)
+  {
+    temporary = parafluid::vtk::fromFirstProcess(temporary, *processes); // one file for all
+  }
+  this->File = std::make_unique<OpenFile>(temporary);
+  this->File->Processes = std::move(processes);
   // The 1.8 file format at least: attributes larger than 64 kB (long field-data arrays) go to
   // dense storage instead of failing.
-  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  Handle access =
+    this->File->Processes ? parafluid::vtk::parallelFileAccess() : Handle(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   H5Pset_libver_bounds(access, H5F_LIBVER_V18, H5F_LIBVER_LATEST);
   this->File->File = Handle(H5Fcreate(this->File->TemporaryName.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access), H5Fclose);
   if (!this->File->File.valid())
@@ -285,8 +285,7 @@ bool vtkPFH5PartWriter::BeginFile()
     this->File.reset();
     return false;
   }
-  const std::size_t dot = this->FileName.rfind('.');
-  if (dot != std::string::npos && this->FileName.substr(dot) == ".h5md")
+  if (this->IsH5md())
   {
     this->File->H5md = std::make_unique<parafluid::vtk::H5mdFrameWriter>(this->File->File, this->CompressionLevel);
   }
@@ -330,128 +329,100 @@ bool vtkPFH5PartWriter::WriteStep(vtkDataObject* input, int stepIndex, double ti
     vtkErrorMacro("ParaFluid H5Part Writer: cannot create " << groupName);
     return false;
   }
+  if (this->File->Processes)
+  {
+    std::vector<std::string> warnings;
+    std::string error;
+    const bool written =
+      parafluid::vtk::writeParallelStep(group, points, this->CompressionLevel, *this->File->Processes, warnings, error);
+    this->Warn(warnings);
+    if (!written)
+    {
+      vtkErrorMacro("ParaFluid H5Part Writer: " << error << " in " << groupName);
+    }
+    if (stepIndex == 0)
+    {
+      this->WriteFieldData(parafluid::vtk::agreedFieldData(points, *this->File->Processes));
+    }
+    return written;
+  }
   const auto n = static_cast<hsize_t>(points->GetNumberOfPoints());
-  const int level = this->CompressionLevel;
-
-  // Coordinates as separate x, y, z datasets (the H5Part convention), in the points' precision.
-  vtkDataArray* coordinates = points->GetPoints() ? points->GetPoints()->GetData() : nullptr;
-  const bool doublePrecision = coordinates && coordinates->GetDataType() == VTK_DOUBLE;
-  std::vector<double> component(n);
-  std::vector<float> componentFloat(n);
-  const char* axes[3] = { "x", "y", "z" };
-  for (int a = 0; a < 3; ++a)
+  std::vector<std::string> warnings;
+  const std::vector<parafluid::vtk::H5PartColumn> columns = parafluid::vtk::h5partColumns(points, warnings);
+  this->Warn(warnings);
+  for (const parafluid::vtk::H5PartColumn& column : columns)
   {
-    for (hsize_t i = 0; i < n; ++i)
+    if (!writeDataset(group, column.name, parafluid::vtk::h5partMemoryType(column.values),
+                      parafluid::vtk::h5partFileType(column.type), column.values->GetVoidPointer(0), n,
+                      static_cast<hsize_t>(column.components), this->CompressionLevel))
     {
-      component[i] = coordinates->GetComponent(static_cast<vtkIdType>(i), a);
-      componentFloat[i] = static_cast<float>(component[i]);
-    }
-    const bool ok =
-      doublePrecision
-        ? writeDataset(group, axes[a], H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, component.data(), n, 1, level)
-        : writeDataset(group, axes[a], H5T_NATIVE_FLOAT, H5T_IEEE_F32LE, componentFloat.data(), n, 1, level);
-    if (!ok)
-    {
-      vtkErrorMacro("ParaFluid H5Part Writer: failed writing coordinates of " << groupName);
+      vtkErrorMacro("ParaFluid H5Part Writer: failed writing '" << column.name << "' of " << groupName);
       return false;
     }
   }
-
-  vtkPointData* pointData = points->GetPointData();
-  for (int k = 0; k < pointData->GetNumberOfArrays(); ++k)
-  {
-    vtkDataArray* array = pointData->GetArray(k);
-    if (!array || !array->GetName() || std::string(array->GetName()).empty())
-    {
-      continue;
-    }
-    const std::string name = array->GetName();
-    if (name == "x" || name == "y" || name == "z")
-    {
-      vtkWarningMacro("ParaFluid H5Part Writer: point array '" << name
-                                                               << "' is not written: its name is a coordinate's");
-      continue;
-    }
-    std::string datasetName = name;
-    if (name == parafluid::contract::Id && array->GetNumberOfComponents() != 1)
-    {
-      // The H5Part id is one whole number per particle; a vector named id keeps its values under
-      // another name instead of making the file unreadable as H5Part.
-      datasetName = "id_components";
-      vtkWarningMacro("ParaFluid H5Part Writer: point array 'id' has " << array->GetNumberOfComponents()
-                                                                       << " components; written as 'id_components'");
-    }
-    hid_t memoryType, fileType;
-    vtkSmartPointer<vtkDataArray> source = array;
-    if (!typesFor(array, memoryType, fileType))
-    {
-      // Other numeric types (char, short, unsigned ...) are stored as double.
-      source = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(VTK_DOUBLE));
-      source->DeepCopy(array);
-      typesFor(source, memoryType, fileType);
-    }
-    if (name == parafluid::contract::Id && source->GetNumberOfComponents() == 1 && fileType != H5T_STD_I64LE)
-    {
-      auto ids = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(VTK_LONG_LONG));
-      ids->DeepCopy(source);
-      source = ids;
-      typesFor(source, memoryType, fileType);
-    }
-    if (!writeDataset(group, datasetName, memoryType, fileType, source->GetVoidPointer(0), n,
-                      static_cast<hsize_t>(source->GetNumberOfComponents()), level))
-    {
-      vtkErrorMacro("ParaFluid H5Part Writer: failed writing array '" << name << "' of " << groupName);
-      return false;
-    }
-  }
-
   if (stepIndex == 0)
   {
-    vtkFieldData* fieldData = input->GetFieldData();
-    for (int k = 0; fieldData && k < fieldData->GetNumberOfArrays(); ++k)
+    this->WriteFieldData(input->GetFieldData());
+  }
+  return true;
+}
+
+void vtkPFH5PartWriter::WriteFieldData(vtkFieldData* fieldData)
+{
+  const hid_t file = this->File->File;
+  for (int k = 0; fieldData && k < fieldData->GetNumberOfArrays(); ++k)
+  {
+    vtkAbstractArray* abstract = fieldData->GetAbstractArray(k);
+    if (!abstract || !abstract->GetName() || std::string(abstract->GetName()) == parafluid::contract::Time ||
+        abstract->GetNumberOfValues() == 0)
     {
-      vtkAbstractArray* abstract = fieldData->GetAbstractArray(k);
-      if (!abstract || !abstract->GetName() || std::string(abstract->GetName()) == parafluid::contract::Time ||
-          abstract->GetNumberOfValues() == 0)
-      {
-        continue;
-      }
-      const std::string name = abstract->GetName();
-      if (static_cast<std::size_t>(abstract->GetNumberOfValues()) > parafluid::h5::kMaxAttributeValues)
-      {
-        vtkWarningMacro("ParaFluid H5Part Writer: field data '"
-                        << name << "' (" << abstract->GetNumberOfValues()
-                        << " values) is not written: an H5Part root attribute holds at most "
-                        << parafluid::h5::kMaxAttributeValues << " values");
-        continue;
-      }
-      if (auto* strings = vtkStringArray::SafeDownCast(abstract))
-      {
-        if (!writeStringAttribute(file, name.c_str(), strings))
-        {
-          vtkWarningMacro("ParaFluid H5Part Writer: field data '" << name << "' could not be written");
-        }
-        continue;
-      }
-      vtkDataArray* array = vtkDataArray::SafeDownCast(abstract);
-      if (!array)
-      {
-        vtkWarningMacro("ParaFluid H5Part Writer: field data '" << name
-                                                                << "' is neither numbers nor text: not written");
-        continue;
-      }
-      std::vector<double> values(static_cast<std::size_t>(array->GetNumberOfValues()));
-      for (vtkIdType v = 0; v < array->GetNumberOfValues(); ++v)
-      {
-        values[static_cast<std::size_t>(v)] = array->GetVariantValue(v).ToDouble();
-      }
-      if (!writeDoubleAttribute(file, name.c_str(), values.data(), values.size()))
+      continue;
+    }
+    const std::string name = abstract->GetName();
+    if (static_cast<std::size_t>(abstract->GetNumberOfValues()) > parafluid::h5::kMaxAttributeValues)
+    {
+      vtkWarningMacro("ParaFluid H5Part Writer: field data '"
+                      << name << "' (" << abstract->GetNumberOfValues()
+                      << " values) is not written: an H5Part root attribute holds at most "
+                      << parafluid::h5::kMaxAttributeValues << " values");
+      continue;
+    }
+    if (auto* strings = vtkStringArray::SafeDownCast(abstract))
+    {
+      if (!writeStringAttribute(file, name.c_str(), strings))
       {
         vtkWarningMacro("ParaFluid H5Part Writer: field data '" << name << "' could not be written");
       }
+      continue;
+    }
+    vtkDataArray* array = vtkDataArray::SafeDownCast(abstract);
+    if (!array)
+    {
+      vtkWarningMacro("ParaFluid H5Part Writer: field data '" << name << "' is neither numbers nor text: not written");
+      continue;
+    }
+    std::vector<double> values(static_cast<std::size_t>(array->GetNumberOfValues()));
+    for (vtkIdType v = 0; v < array->GetNumberOfValues(); ++v)
+    {
+      values[static_cast<std::size_t>(v)] = array->GetVariantValue(v).ToDouble();
+    }
+    if (!writeDoubleAttribute(file, name.c_str(), values.data(), values.size()))
+    {
+      vtkWarningMacro("ParaFluid H5Part Writer: field data '" << name << "' could not be written");
     }
   }
-  return true;
+}
+
+void vtkPFH5PartWriter::Warn(const std::vector<std::string>& warnings)
+{
+  if (this->File && this->File->Processes && this->File->Processes->rank() != 0)
+  {
+    return; // every process has the same to say: process 0 says it
+  }
+  for (const std::string& warning : warnings)
+  {
+    vtkWarningMacro("ParaFluid H5Part Writer: '" << this->FileName << "': " << warning);
+  }
 }
 
 bool vtkPFH5PartWriter::FinishFile()
@@ -461,9 +432,10 @@ bool vtkPFH5PartWriter::FinishFile()
     return false;
   }
   const std::string temporary = this->File->TemporaryName;
-  this->File->File.reset(); // flush and close before the rename
+  const bool renames = !this->File->Processes || this->File->Processes->rank() == 0;
+  this->File->File.reset(); // flush and close before the rename (collective under MPI-IO)
   this->File.reset();
-  if (std::rename(temporary.c_str(), this->FileName.c_str()) != 0)
+  if (renames && std::rename(temporary.c_str(), this->FileName.c_str()) != 0)
   {
     std::remove(temporary.c_str());
     vtkErrorMacro("ParaFluid H5Part Writer: cannot replace '" << this->FileName << "'");
@@ -477,9 +449,13 @@ void vtkPFH5PartWriter::AbandonFile()
   if (this->File)
   {
     const std::string temporary = this->File->TemporaryName;
+    const bool removes = !this->File->Processes || this->File->Processes->rank() == 0;
     this->File->File.reset();
     this->File.reset();
-    std::remove(temporary.c_str());
+    if (removes)
+    {
+      std::remove(temporary.c_str());
+    }
   }
 }
 

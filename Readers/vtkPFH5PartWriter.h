@@ -7,12 +7,16 @@
  * (particle_spacing, smoothing_length, ...) become root attributes. Datasets are chunked and
  * deflate-compressed. Everything is written to a temporary file beside the target, which is renamed
  * over the target only once complete, so a failed write never destroys an existing file.
- * With WriteAllTimeSteps, every time step of the input goes into one file.
+ * With WriteAllTimeSteps, every time step of the input goes into one file. Under MPI the processes
+ * write the one file together with parallel HDF5, each its own particles as its slice of every
+ * dataset (H5MD files: gathered on process 0, which writes them).
  */
 #pragma once
 
 #include "ParaFluidReadersModule.h"
 #include "vtkWriter.h"
+
+class vtkFieldData;
 
 #include <memory>
 #include <string>
@@ -55,8 +59,13 @@ private:
   bool WriteSteps(vtkDataObject* first);
   /// The input brought to `time` (this process's piece); null when it fails.
   vtkDataObject* UpdateInputTo(double time);
-  bool BeginFile();
+  /// `parallel`: every process opens the one file with MPI-IO and writes its own particles.
+  bool BeginFile(bool parallel);
   bool WriteStep(vtkDataObject* input, int stepIndex, double time);
+  /// The field data's numbers and text as root attributes.
+  void WriteFieldData(vtkFieldData* fieldData);
+  void Warn(const std::vector<std::string>& warnings);
+  bool IsH5md() const;
   bool FinishFile();
   void AbandonFile();
 
