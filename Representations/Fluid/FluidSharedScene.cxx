@@ -3,9 +3,15 @@
 #include "FluidScreenTargets.h"
 #include "parafluid/common/Communicator.h"
 
+#include "vtkInformation.h"
+#include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkPVRenderView.h"
 #include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
@@ -61,6 +67,184 @@ std::array<std::uint8_t, 4> backgroundAt(vtkRenderer* renderer, int y, int heigh
   return c;
 }
 } // namespace
+
+SharedRendering sharedRenderingOf(vtkInformation* renderRequest, Communicator* processes)
+{
+  SharedRendering sharing;
+  auto* view = vtkPVRenderView::SafeDownCast(renderRequest->Get(vtkPVView::VIEW()));
+  if (!processes || !view)
+  {
+    return sharing;
+  }
+  const bool lod =
+    renderRequest->Has(vtkPVRenderView::USE_LOD()) && renderRequest->Get(vtkPVRenderView::USE_LOD()) != 0;
+  if (!(lod ? view->GetUseDistributedRenderingForLODRender() : view->GetUseDistributedRenderingForRender()))
+  {
+    return sharing;
+  }
+  // While the processes render, ParaView sets their renderers' background to black
+  // (vtkSynchronizedRenderers' FixBackground); before the render it is still the view's.
+  vtkRenderer* renderer = view->GetRenderer();
+  sharing.Processes = processes;
+  renderer->GetBackground(sharing.BackgroundBottom);
+  renderer->GetBackground2(sharing.BackgroundTop);
+  if (!renderer->GetGradientBackground())
+  {
+    std::copy(sharing.BackgroundBottom, sharing.BackgroundBottom + 3, sharing.BackgroundTop);
+  }
+  return sharing;
+}
+
+namespace
+{
+// Writes the composited scene (colour, and depth as a float texture) into the framebuffer.
+constexpr const char* kWriteSceneFS = R"(//VTK::System::Dec
+in vec2 texCoord;
+uniform sampler2D sceneColor;
+uniform sampler2D sceneDepth;
+//VTK::Output::Dec
+void main()
+{
+  gl_FragData[0] = texture(sceneColor, texCoord);
+  gl_FragDepth = texture(sceneDepth, texCoord).r;
+}
+)";
+/// The sky's depth on process 0 after a take-over: nearer than any other process's cleared 1, so
+/// its (transparent) sky pixels, where the streaks are, win the depth compositing.
+constexpr float kSkyDepth = 1.0f - 1.0e-6f;
+} // namespace
+
+SharedFrameTakeOver::SharedFrameTakeOver() = default;
+SharedFrameTakeOver::~SharedFrameTakeOver() = default;
+
+bool SharedFrameTakeOver::Run(const SharedRendering& sharing, vtkRenderer* renderer)
+{
+  Communicator* processes = sharing.Processes && sharing.Processes->size() > 1 ? sharing.Processes : nullptr;
+  if (!processes)
+  {
+    return true;
+  }
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+  Rect rect{ 0, 0, 0, 0 };
+  int origin[2] = { 0, 0 };
+  renderer->GetTiledSizeAndOrigin(&rect[2], &rect[3], &origin[0], &origin[1]);
+  const auto size = static_cast<std::size_t>(processes->size());
+  std::vector<std::vector<std::uint8_t>> sends(size);
+  vtkOpenGLState* state = window ? window->GetState() : nullptr;
+  if (processes->rank() != 0)
+  {
+    if (state && rect[2] > 0 && rect[3] > 0)
+    {
+      sends[0] = readScene(state, origin, rect);
+    }
+    processes->exchange(sends);
+    if (state)
+    {
+      // Process 0 now draws this process's part: nothing of it must win the compositing.
+      vtkOpenGLState::ScopedglColorMask savedColorMask(state);
+      vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+      vtkOpenGLState::ScopedglClearColor savedClearColor(state);
+      state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+      state->vtkglDepthMask(GL_TRUE);
+      state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+      state->vtkglClearDepth(1.0);
+      state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
+    return false;
+  }
+  auto received = processes->exchange(sends);
+  if (!state || rect[2] <= 0 || rect[3] <= 0)
+  {
+    return true;
+  }
+  received[0] = readScene(state, origin, rect);
+  const std::size_t pixels = static_cast<std::size_t>(rect[2]) * static_cast<std::size_t>(rect[3]);
+  std::vector<std::uint8_t> color(pixels * 4);
+  std::vector<float> depth(pixels);
+  for (std::size_t i = 0; i < pixels; ++i)
+  {
+    float nearest = 1.0f;
+    const std::uint8_t* chosen = received[0].data() + i * 4; // process 0's own sky: transparent
+    for (const auto& scene : received)
+    {
+      if (scene.size() != pixels * 8)
+      {
+        continue;
+      }
+      float d;
+      std::memcpy(&d, scene.data() + pixels * 4 + i * 4, sizeof(d));
+      if (d < nearest)
+      {
+        nearest = d;
+        chosen = scene.data() + i * 4;
+      }
+    }
+    std::memcpy(color.data() + i * 4, chosen, 4);
+    depth[i] = nearest < 1.0f ? nearest : kSkyDepth;
+  }
+  if (!this->Color)
+  {
+    this->Color = vtkSmartPointer<vtkTextureObject>::New();
+    this->Depth = vtkSmartPointer<vtkTextureObject>::New();
+  }
+  for (vtkTextureObject* t : { this->Color.Get(), this->Depth.Get() })
+  {
+    t->SetContext(window);
+    t->SetMinificationFilter(vtkTextureObject::Nearest);
+    t->SetMagnificationFilter(vtkTextureObject::Nearest);
+  }
+  state->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  this->Color->Create2DFromRaw(rect[2], rect[3], 4, VTK_UNSIGNED_CHAR, color.data());
+  this->Depth->Create2DFromRaw(rect[2], rect[3], 1, VTK_FLOAT, depth.data());
+  if (!this->Quad)
+  {
+    this->Quad.reset(new vtkOpenGLQuadHelper(window, nullptr, kWriteSceneFS, ""));
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+  }
+  if (!this->Quad->Program)
+  {
+    return true; // did not compile (the shader cache said why): the rain is drawn over process 0's part
+  }
+  vtkOpenGLState::ScopedglViewport savedViewport(state);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+  vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
+  vtkOpenGLState::ScopedglColorMask savedColorMask(state);
+  state->vtkglViewport(origin[0], origin[1], rect[2], rect[3]);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_ALWAYS);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  this->Color->Activate();
+  this->Depth->Activate();
+  this->Quad->Program->SetUniformi("sceneColor", this->Color->GetTextureUnit());
+  this->Quad->Program->SetUniformi("sceneDepth", this->Depth->GetTextureUnit());
+  this->Quad->Render();
+  this->Color->Deactivate();
+  this->Depth->Deactivate();
+  return true;
+}
+
+void SharedFrameTakeOver::Release(vtkWindow* window)
+{
+  if (this->Quad)
+  {
+    this->Quad->ReleaseGraphicsResources(window);
+    this->Quad.reset();
+  }
+  for (vtkTextureObject* t : { this->Color.Get(), this->Depth.Get() })
+  {
+    if (t)
+    {
+      t->ReleaseGraphicsResources(window);
+    }
+  }
+}
 
 FluidSharedScene::FluidSharedScene(const SharedRendering& sharing, vtkRenderer* renderer)
   : Processes(sharing.Processes && sharing.Processes->size() > 1 ? sharing.Processes : nullptr)

@@ -8,6 +8,15 @@
 // as usual: the fluid's pixels come from process 0, the rest from whoever is nearest.
 #include "FluidFrame.h"
 
+#include "vtkSmartPointer.h"
+
+#include <memory>
+
+class vtkInformation;
+class vtkOpenGLQuadHelper;
+class vtkTextureObject;
+class vtkWindow;
+
 namespace parafluid
 {
 class Communicator;
@@ -21,6 +30,31 @@ struct SharedRendering
   Communicator* Processes = nullptr;
   double BackgroundBottom[3] = { 0, 0, 0 };
   double BackgroundTop[3] = { 0, 0, 0 };
+};
+
+/// How the view of a representation's REQUEST_RENDER renders this frame: shared when `processes`
+/// (the session's, null in a serial one) all render it for compositing; the view's background read
+/// now, before the render begins.
+SharedRendering sharedRenderingOf(vtkInformation* renderRequest, Communicator* processes);
+
+/// For looks that blend into the framebuffer (rain streaks): each frame the other processes send
+/// process 0 their whole viewport's colour and depth and clear theirs, and process 0 writes the
+/// composite into its framebuffer, so that it holds the whole scene and its pixels win the
+/// compositing (the sky a hair nearer than the far plane, left transparent for ParaView's
+/// background). Process 0 then blends over the scene as a builtin session does.
+class SharedFrameTakeOver
+{
+public:
+  SharedFrameTakeOver();
+  ~SharedFrameTakeOver();
+  /// Collective in a shared render. Whether this process draws: process 0, or any process when the
+  /// render is not shared.
+  bool Run(const SharedRendering& sharing, vtkRenderer* renderer);
+  void Release(vtkWindow* window);
+
+private:
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  vtkSmartPointer<vtkTextureObject> Color, Depth;
 };
 
 /// One frame's sharing of the opaque scene. Every process of a shared render makes one, at the same

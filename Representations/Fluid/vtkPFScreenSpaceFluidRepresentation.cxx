@@ -32,7 +32,6 @@
 #include "vtkScalarsToColors.h"
 #include "vtkTexture.h"
 
-#include <algorithm>
 #include <cmath>
 
 vtkStandardNewMacro(vtkPFScreenSpaceFluidRepresentation);
@@ -206,25 +205,7 @@ int vtkPFScreenSpaceFluidRepresentation::ProcessViewRequest(vtkInformationReques
   }
   else if (request == vtkPVView::REQUEST_RENDER())
   {
-    auto* view = vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW()));
-    const bool lod = inInfo->Has(vtkPVRenderView::USE_LOD()) && inInfo->Get(vtkPVRenderView::USE_LOD()) != 0;
-    const bool shared =
-      this->Processes && view &&
-      (lod ? view->GetUseDistributedRenderingForLODRender() : view->GetUseDistributedRenderingForRender());
-    parafluid::SharedRendering sharing;
-    if (shared)
-    {
-      // The view's background, read before the render begins: while the processes render, ParaView
-      // sets their renderers' background to black (vtkSynchronizedRenderers' FixBackground).
-      vtkRenderer* renderer = view->GetRenderer();
-      sharing.Processes = this->Processes.get();
-      renderer->GetBackground(sharing.BackgroundBottom);
-      renderer->GetBackground2(sharing.BackgroundTop);
-      if (!renderer->GetGradientBackground())
-      {
-        std::copy(sharing.BackgroundBottom, sharing.BackgroundBottom + 3, sharing.BackgroundTop);
-      }
-    }
+    const parafluid::SharedRendering sharing = parafluid::sharedRenderingOf(inInfo, this->Processes.get());
     this->Mapper->SetSharedRendering(sharing);
     vtkPolyData* delivered = nullptr;
     if (vtkAlgorithmOutput* port = vtkPVRenderView::GetPieceProducer(inInfo, this, 0))

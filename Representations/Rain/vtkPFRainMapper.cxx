@@ -32,6 +32,7 @@ struct vtkPFRainMapper::Internals
   bool LastOnCpu = false;
   parafluid::RainSplashPass Splash;
   parafluid::RainEnvironment Environment;
+  parafluid::SharedFrameTakeOver TakeOver;
   std::vector<float> Packed;
   int PackedKind = -1;
   vtkMTimeType PackedKey = 0;
@@ -149,13 +150,17 @@ void packSplashes(vtkPolyData* input, std::vector<float>& packed)
 
 void vtkPFRainMapper::Render(vtkRenderer* renderer, vtkActor*)
 {
+  Internals& in = *this->Internal;
+  if (!in.TakeOver.Run(this->Sharing, renderer))
+  {
+    return; // process 0 draws this frame's rain over the whole scene
+  }
   auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
   if (!input || !window)
   {
     return;
   }
-  Internals& in = *this->Internal;
   const vtkMTimeType key = std::max(input->GetMTime(), this->GetMTime());
   // Packed and uploaded only when the data, a setting or the kind changed.
   if (in.PackedKind != this->Kind || key != in.PackedKey)
@@ -258,5 +263,6 @@ void vtkPFRainMapper::ReleaseGraphicsResources(vtkWindow* window)
   this->Internal->CpuStreak.Release(window);
   this->Internal->SoftwareRenderer = -1;
   this->Internal->Splash.Release(window);
+  this->Internal->TakeOver.Release(window);
   this->Internal->PackedKind = -1;
 }

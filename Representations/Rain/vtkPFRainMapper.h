@@ -11,6 +11,7 @@
  */
 #pragma once
 
+#include "FluidSharedScene.h" // SharedRendering member
 #include "ParaFluidRainRepresentationsModule.h"
 #include "SetParameterMacros.h"
 #include "vtkMapper.h"
@@ -58,6 +59,10 @@ public:
   /// The view's background, bottom and top (the same colour twice when not a gradient), that lights
   /// the drops without environment images. Set by the representation before each render: while
   /// ParaView's processes render for compositing, their renderers' background is black.
+  /// The processes sharing this frame's rendering (none: one process renders it). Shared, process 0
+  /// holds the drops and takes the whole frame over (parafluid::SharedFrameTakeOver) before it
+  /// draws; Render is then collective. Set by the representation every render.
+  void SetSharedRendering(const parafluid::SharedRendering& sharing) { this->Sharing = sharing; }
   void SetViewBackground(const double bottom[3], const double top[3])
   {
     std::copy(bottom, bottom + 3, this->ViewBackground[0]);
@@ -75,6 +80,7 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
 private:
+  parafluid::SharedRendering Sharing;
   double ViewBackground[2][3] = { { 0.0, 0.0, 0.0 }, { 0.0, 0.0, 0.0 } };
   vtkPFRainMapper(const vtkPFRainMapper&) = delete;
   void operator=(const vtkPFRainMapper&) = delete;

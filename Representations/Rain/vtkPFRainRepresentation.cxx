@@ -1,6 +1,9 @@
 #include "vtkPFRainRepresentation.h"
 
+#include "FluidParticleGather.h"
 #include "ParticleArrays.h"
+#include "ProcessCommunicator.h"
+#include "parafluid/common/Communicator.h"
 #include "vtkPFRainMapper.h"
 #include "vtkPFScreenSpaceFluidActor.h"
 
@@ -124,6 +127,16 @@ int vtkPFRainRepresentation::RequestData(vtkInformation* request, vtkInformation
     }
     this->Points->GetPointData()->ShallowCopy(data->GetPointData());
   }
+  if (!this->ProcessesAsked)
+  {
+    // Collective, and every process's representation reaches its first RequestData together.
+    this->Processes = parafluid::vtk::makeProcessCommunicator();
+    this->ProcessesAsked = true;
+  }
+  if (this->Processes)
+  {
+    this->Points = parafluid::gatherParticlesOnFirst(this->Points, *this->Processes);
+  }
   return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 
@@ -137,6 +150,11 @@ int vtkPFRainRepresentation::ProcessViewRequest(vtkInformationRequestKey* reques
   if (request == vtkPVView::REQUEST_UPDATE())
   {
     vtkPVRenderView::SetPiece(inInfo, this, this->Points);
+    if (this->Processes)
+    {
+      // A shared render runs collectives in the mapper: IceT must render every process.
+      outInfo->Set(vtkPVRenderView::RENDER_EMPTY_IMAGES(), 1);
+    }
     if (this->Points->GetNumberOfPoints() > 0)
     {
       double bounds[6];
@@ -153,6 +171,7 @@ int vtkPFRainRepresentation::ProcessViewRequest(vtkInformationRequestKey* reques
       delivered = parafluid::vtk::firstPolyData(port->GetProducer()->GetOutputDataObject(port->GetIndex()));
     }
     this->Mapper->SetInputDataObject(delivered ? delivered : vtkSmartPointer<vtkPolyData>::New().Get());
+    this->Mapper->SetSharedRendering(parafluid::sharedRenderingOf(inInfo, this->Processes.get()));
     if (auto* view = vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW())))
     {
       // Read before the render begins, while the renderer still shows the view's background.

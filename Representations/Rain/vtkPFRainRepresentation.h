@@ -13,9 +13,15 @@
 #include "vtkPVDataRepresentation.h"
 #include "vtkSmartPointer.h"
 
+#include <memory>
+
 class vtkPFRainMapper;
 class vtkPFScreenSpaceFluidActor;
 class vtkPolyData;
+namespace parafluid
+{
+class Communicator;
+}
 
 class PARAFLUIDRAINREPRESENTATIONS_EXPORT vtkPFRainRepresentation : public vtkPVDataRepresentation
 {
@@ -58,4 +64,7 @@ private:
   vtkSmartPointer<vtkPFRainMapper> Mapper;
   vtkSmartPointer<vtkPFScreenSpaceFluidActor> Actor;
   vtkSmartPointer<vtkPolyData> Points;
+  // The session's processes (null in a serial one): the drops are drawn on process 0.
+  std::unique_ptr<parafluid::Communicator> Processes;
+  bool ProcessesAsked = false;
 };
