@@ -30,8 +30,14 @@ public:
   int size() const override { return this->Controller->GetNumberOfProcesses(); }
   std::vector<std::vector<std::uint8_t>> exchange(const std::vector<std::vector<std::uint8_t>>& sends) override;
   void reduce(std::vector<double>& values, parafluid::Reduction op) override;
+  void abandon() override;
 
 private:
+  /// Every collective call begins with this all-gather of n counts a process (an exchange's
+  /// message sizes, a reduction's zeros); a process that abandons sends -1s, and every process
+  /// then throws ProcessFailure (with one exception: the one abandoning).
+  std::vector<vtkIdType> gatherHeader(const std::vector<vtkIdType>& mine, bool abandoning);
+
   vtkSmartPointer<vtkMultiProcessController> Controller;
   vtkMPICommunicator* Mpi;
 };
@@ -50,7 +56,7 @@ std::vector<std::vector<std::uint8_t>> ProcessCommunicator::exchange(
   {
     mine[static_cast<std::size_t>(r)] = static_cast<vtkIdType>(sends[static_cast<std::size_t>(r)].size());
   }
-  this->Controller->AllGather(mine.data(), all.data(), n);
+  all = this->gatherHeader(mine, false);
   std::vector<std::vector<std::uint8_t>> received(static_cast<std::size_t>(n));
   std::vector<vtkMPICommunicator::Request> requests;
   // Each message's chunks in order, receives posted before sends; a process's message to itself
@@ -102,8 +108,29 @@ std::vector<std::vector<std::uint8_t>> ProcessCommunicator::exchange(
   return received;
 }
 
+std::vector<vtkIdType> ProcessCommunicator::gatherHeader(const std::vector<vtkIdType>& mine, bool abandoning)
+{
+  const int n = this->size();
+  std::vector<vtkIdType> all(static_cast<std::size_t>(n) * n);
+  this->Controller->AllGather(mine.data(), all.data(), n);
+  for (int r = 0; r < n && !abandoning; ++r)
+  {
+    if (all[static_cast<std::size_t>(r) * n] < 0)
+    {
+      throw parafluid::ProcessFailure("process " + std::to_string(r) + " of " + std::to_string(n) + " failed");
+    }
+  }
+  return all;
+}
+
+void ProcessCommunicator::abandon()
+{
+  this->gatherHeader(std::vector<vtkIdType>(static_cast<std::size_t>(this->size()), -1), true);
+}
+
 void ProcessCommunicator::reduce(std::vector<double>& values, parafluid::Reduction op)
 {
+  this->gatherHeader(std::vector<vtkIdType>(static_cast<std::size_t>(this->size()), 0), false);
   const int operation = op == parafluid::Reduction::Sum   ? vtkCommunicator::SUM_OP
                         : op == parafluid::Reduction::Min ? vtkCommunicator::MIN_OP
                                                           : vtkCommunicator::MAX_OP;

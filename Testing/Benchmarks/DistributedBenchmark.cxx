@@ -53,6 +53,7 @@ public:
     this->Seconds += seconds(start);
     return received;
   }
+  void abandon() override { this->Inner.abandon(); }
   void reduce(std::vector<double>& values, Reduction op) override
   {
     const auto start = Clock::now();

@@ -16,6 +16,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -500,5 +501,78 @@ TEST(DistributedSimulation, RefusalsAndErrorsReachEveryProcess)
   EXPECT_EQ(steps[0], steps[1]);
   EXPECT_GT(steps[0], 0);
   EXPECT_LT(steps[0], 200);
+}
+
+/// A process's communicator that fails on its own at its `failAt`-th exchange, before taking part
+/// in it: as a failed allocation in a pass between two ghost refreshes would.
+class FailingCommunicator final : public Communicator
+{
+public:
+  FailingCommunicator(Communicator& inner, int failAt)
+    : Inner(inner)
+    , FailAt(failAt)
+  {
+  }
+  int rank() const override { return this->Inner.rank(); }
+  int size() const override { return this->Inner.size(); }
+  std::vector<std::vector<std::uint8_t>> exchange(const std::vector<std::vector<std::uint8_t>>& sends) override
+  {
+    if (this->Armed && ++this->Calls == this->FailAt)
+    {
+      throw std::bad_alloc();
+    }
+    return this->Inner.exchange(sends);
+  }
+  void reduce(std::vector<double>& values, Reduction op) override { this->Inner.reduce(values, op); }
+  void abandon() override { this->Inner.abandon(); }
+  bool Armed = false;
+
+private:
+  Communicator& Inner;
+  int FailAt;
+  int Calls = 0;
+};
+
+TEST(DistributedSimulation, AProcessFailingInTheMiddleOfAStepStopsEveryProcess)
+{
+  const SPHParameters p = tank(PressureSolverType::DeltaSPH);
+  const ParticleState initial = column(0.2);
+  // Failing at the first, a middle and a late exchange of the steps: every process ends with an
+  // error, none waits.
+  for (const int failAt : { 1, 4, 23 })
+  {
+    auto group = std::make_shared<ThreadGroup>(3);
+    std::vector<std::string> errors(3);
+    std::vector<std::thread> threads;
+    for (int r = 0; r < 3; ++r)
+    {
+      threads.emplace_back(
+        [&, r]
+        {
+          ThreadCommunicator threads(group, r);
+          FailingCommunicator communicator(threads, r == 1 ? failAt : -1);
+          try
+          {
+            auto simulation = makeDistributedSimulation(p, pieceOf(initial, r, 3), nullptr, communicator);
+            communicator.Armed = true;
+            simulation->advance(40 * p.timeStep);
+          }
+          catch (const std::exception& e)
+          {
+            errors[static_cast<std::size_t>(r)] = e.what();
+          }
+        });
+    }
+    for (std::thread& t : threads)
+    {
+      t.join();
+    }
+    EXPECT_NE(errors[1].find("bad_alloc"), std::string::npos) << "at exchange " << failAt << ": " << errors[1];
+    for (const int r : { 0, 2 })
+    {
+      EXPECT_NE(errors[static_cast<std::size_t>(r)].find("process 1 of 3 failed"), std::string::npos)
+        << "process " << r << " at exchange " << failAt << ": " << errors[static_cast<std::size_t>(r)];
+    }
+  }
 }
 } // namespace

@@ -15,6 +15,7 @@ ThreadGroup::ThreadGroup(int size)
   }
   this->Mailbox.resize(static_cast<std::size_t>(size) * static_cast<std::size_t>(size));
   this->Values.resize(static_cast<std::size_t>(size));
+  this->Abandoned.assign(static_cast<std::size_t>(size), 0);
 }
 
 void ThreadGroup::barrier()
@@ -41,6 +42,28 @@ ThreadCommunicator::ThreadCommunicator(std::shared_ptr<ThreadGroup> group, int r
   }
 }
 
+void ThreadCommunicator::checkNoneAbandoned(bool abandoning)
+{
+  ThreadGroup& g = *this->Group;
+  g.Abandoned[static_cast<std::size_t>(this->Rank)] = abandoning ? 1 : 0;
+  g.barrier();
+  int who = -1;
+  for (int r = 0; r < this->size(); ++r)
+  {
+    who = who < 0 && g.Abandoned[static_cast<std::size_t>(r)] ? r : who;
+  }
+  g.barrier(); // every process has read the flags before the next call writes them
+  if (who >= 0 && !abandoning)
+  {
+    throw ProcessFailure("process " + std::to_string(who) + " of " + std::to_string(this->size()) + " failed");
+  }
+}
+
+void ThreadCommunicator::abandon()
+{
+  this->checkNoneAbandoned(true);
+}
+
 std::vector<std::vector<std::uint8_t>> ThreadCommunicator::exchange(const std::vector<std::vector<std::uint8_t>>& sends)
 {
   const auto n = static_cast<std::size_t>(this->size());
@@ -48,6 +71,7 @@ std::vector<std::vector<std::uint8_t>> ThreadCommunicator::exchange(const std::v
   {
     throw std::invalid_argument("ThreadCommunicator::exchange needs one buffer per process");
   }
+  this->checkNoneAbandoned(false);
   ThreadGroup& g = *this->Group;
   const auto me = static_cast<std::size_t>(this->Rank);
   for (std::size_t to = 0; to < n; ++to)
@@ -66,6 +90,7 @@ std::vector<std::vector<std::uint8_t>> ThreadCommunicator::exchange(const std::v
 
 void ThreadCommunicator::reduce(std::vector<double>& values, Reduction op)
 {
+  this->checkNoneAbandoned(false);
   ThreadGroup& g = *this->Group;
   g.Values[static_cast<std::size_t>(this->Rank)] = values;
   g.barrier();

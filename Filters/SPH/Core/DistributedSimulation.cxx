@@ -557,11 +557,26 @@ std::int64_t DistributedSimulation::advance(double duration, const std::function
     this->Parameters, this->Time, duration,
     [&](double remaining)
     {
-      const double dt = this->Solver->step(remaining);
-      this->Time = this->Solver->time(); // advanceInSteps lands it exactly on the end time
-      this->Solver->addToPressureMean(dt);
-      this->afterStep(this->checkReach(dt));
-      return dt;
+      try
+      {
+        const double dt = this->Solver->step(remaining);
+        this->Time = this->Solver->time(); // advanceInSteps lands it exactly on the end time
+        this->Solver->addToPressureMean(dt);
+        this->afterStep(this->checkReach(dt));
+        return dt;
+      }
+      catch (const ProcessFailure& e)
+      {
+        throw std::runtime_error(std::string("SPH: the distributed step stopped: ") + e.what() +
+                                 " (its own error says why)");
+      }
+      catch (...)
+      {
+        // This process failed on its own (a failed allocation) between two collective calls: the
+        // others are waiting in the next one, which it makes as a failure, so that they stop too.
+        this->Comm.abandon();
+        throw;
+      }
     },
     agreed, [this] { return this->Solver->stabilityAdvice(); });
   this->Solver->endPressureMean(this->Time - begin);

@@ -30,6 +30,7 @@ private:
   // Mailbox[from * Size + to]: the bytes of the exchange in progress; Values[rank]: a reduction's.
   std::vector<std::vector<std::uint8_t>> Mailbox;
   std::vector<std::vector<double>> Values;
+  std::vector<char> Abandoned; // per rank, in the collective call in progress
 };
 
 class ThreadCommunicator final : public Communicator
@@ -40,9 +41,13 @@ public:
   int size() const override { return this->Group->size(); }
   std::vector<std::vector<std::uint8_t>> exchange(const std::vector<std::vector<std::uint8_t>>& sends) override;
   void reduce(std::vector<double>& values, Reduction op) override;
+  void abandon() override;
   using Communicator::reduce;
 
 private:
+  /// Every collective call begins here: throws ProcessFailure on all when one process abandons.
+  void checkNoneAbandoned(bool abandoning);
+
   std::shared_ptr<ThreadGroup> Group;
   int Rank;
 };
