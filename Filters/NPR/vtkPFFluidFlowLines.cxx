@@ -12,6 +12,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkTypeUInt32Array.h"
 
+#include <algorithm>
+#include <numeric>
 #include <stdexcept>
 
 vtkStandardNewMacro(vtkPFFluidFlowLines);
@@ -97,7 +99,23 @@ int vtkPFFluidFlowLines::RequestParticles(const Particles& particles, vtkInforma
   const std::vector<float> velocity = parafluid::vtk::tuplesAsFloat(velocityArray);
   const float* seedXYZ =
     seeds && seeds->GetNumberOfPoints() > 0 ? parafluid::vtk::positionsAsFloat(seeds, seedStorage) : nullptr;
-  const std::size_t seedCount = seedXYZ ? static_cast<std::size_t>(seeds->GetNumberOfPoints()) : 0;
+  std::size_t seedCount = seedXYZ ? static_cast<std::size_t>(seeds->GetNumberOfPoints()) : 0;
+  vtkDataArray* ids = input->GetPointData()->GetArray(parafluid::contract::Id);
+  if (!seedXYZ && ids && ids->GetNumberOfComponents() == 1)
+  {
+    // Every SeedStride-th particle in id order: the same seeds however the particles were
+    // ordered or spread over processes (the gathered pieces come in process order).
+    std::vector<vtkIdType> order(static_cast<std::size_t>(n));
+    std::iota(order.begin(), order.end(), vtkIdType(0));
+    std::stable_sort(order.begin(), order.end(),
+                     [ids](vtkIdType a, vtkIdType b) { return ids->GetTuple1(a) < ids->GetTuple1(b); });
+    for (std::size_t k = 0; k < order.size(); k += static_cast<std::size_t>(p.seedStride))
+    {
+      seedStorage.insert(seedStorage.end(), xyz + 3 * order[k], xyz + 3 * order[k] + 3);
+    }
+    seedXYZ = seedStorage.data();
+    seedCount = seedStorage.size() / 3;
+  }
 
   parafluid::npr::FlowLineSet lines;
   try

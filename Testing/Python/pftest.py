@@ -106,6 +106,20 @@ def triangle_area(data):
     return 0.5 * np.linalg.norm(np.cross(p[tri[:, 1]] - p[tri[:, 0]], p[tri[:, 2]] - p[tri[:, 0]]), axis=1).sum()
 
 
+def mesh_seams(data):
+    """A triangle mesh's open edges (used by one triangle) and duplicated triangles (the same three
+    points, welded by position to 1e-9 m): (open edges, duplicates)."""
+    import numpy as np
+    p = points(data)
+    tri = vtk_to_numpy(data.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    _, weld = np.unique(np.round(p / 1e-9).astype(np.int64), axis=0, return_inverse=True)
+    tri = np.sort(weld.reshape(-1)[tri], axis=1)
+    duplicates = len(tri) - len(np.unique(tri, axis=0))
+    edges = np.sort(np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [0, 2]]]), axis=1)
+    _, uses = np.unique(edges, axis=0, return_counts=True)
+    return int((uses == 1).sum()), int(duplicates)
+
+
 def outside_mpi_environment():
     """This process's environment without its MPI job's variables: for a child that starts its own
     MPI job (a pvserver, a serial pvpython) from inside one, or from an MPI singleton."""

@@ -2,8 +2,9 @@
 WCSPH give the particles of pvpython's serial run of the same pipeline (the same ids; after 20
 fixed steps each within 1e-5 m; after 0.3 s the surge front and the mean density error within
 1 %), every process steps a share of them, an output asked for again is the same, and the output
-feeds Particle Surface (the serial surface's area within 0.5 %), Foam Particles (the serial
-flags and scores on the same particles, over three outputs) and the writer.
+feeds Particle Surface (the serial surface's area within 0.5 %, as many open edges as the serial
+one and no duplicated triangle), Foam Particles (the serial flags and scores on the same
+particles, over three outputs), Fluid Flow Lines (the serial lines within 1e-4 m) and the writer.
 
 Run under mpirun with pvbatch; the serial reference is this script run by pvpython with --serial."""
 import os
@@ -72,7 +73,13 @@ def run():
         scored = pftest.fetch(foam, t)
     order = np.argsort(pftest.point_array(scored, "id"))
     results["foam"] = (pftest.point_array(scored, "foam")[order], pftest.point_array(scored, "foam_score")[order], 0.0)
-    return results, pftest.triangle_area(pftest.fetch(surface)), surge
+    # Flow lines of the same run: the lines' points, as a sorted list (their order is the seeds').
+    lines = pftest.points(pftest.fetch(FluidFlowLines(Input=runs["delta20"][0], SeedStride=5, PointsPerLine=8,
+                                                      LineDuration=0.004), 0.004))
+    results["lines"] = (np.zeros(1), lines[np.lexsort(lines.T)], 0.0)
+    mesh = pftest.fetch(surface)
+    results["seams"] = (np.zeros(1), np.array(pftest.mesh_seams(mesh), dtype=float), 0.0)
+    return results, pftest.triangle_area(mesh), surge
 
 
 if "--serial" in sys.argv:
@@ -92,6 +99,16 @@ subprocess.run([shutil.which("pvpython"), "--force-offscreen-rendering", __file_
 serial = np.load(reference_file)
 
 results, area, surge = run()
+lines = results.pop("lines")[1]
+serial_lines = serial["lines_positions"]
+pftest.check(lines.shape == serial_lines.shape and len(lines) > 0,
+             "flow lines: %d points on %d processes, %d serial" % (len(lines), ranks, len(serial_lines)))
+pftest.check(np.abs(lines - serial_lines).max() < 1e-4, "flow lines differ from the serial run's by %.3g m" %
+             np.abs(lines - serial_lines).max())
+seams = results.pop("seams")[1]
+pftest.check(seams[1] == 0, "the surface from %d processes has %d duplicated triangles" % (ranks, seams[1]))
+pftest.check(seams[0] == serial["seams_positions"][0], "the surface from %d processes has %d open edges, the serial %d" %
+             (ranks, seams[0], serial["seams_positions"][0]))
 flags, score = results.pop("foam")[:2]
 pftest.check(serial["foam_ids"].sum() > 0, "the serial run has no foam to compare")
 pftest.check(np.array_equal(flags, serial["foam_ids"]), "foam flags differ from the serial run's at %d particles" %
