@@ -51,6 +51,37 @@ std::vector<std::uint8_t> readScene(vtkOpenGLState* state, const int origin[2], 
   return scene;
 }
 
+/// Every pixel's nearest of the processes' `scenes` (readScene's colours then depths; a scene of
+/// another size counts as drawing nothing): its colour and window depth, ties to the lower rank;
+/// where none is nearer than the far plane, depth 1 and the first scene's own colour.
+void compositeByDepth(const std::vector<std::vector<std::uint8_t>>& scenes, std::size_t pixels,
+                      std::vector<std::uint8_t>& color, std::vector<float>& depth)
+{
+  color.assign(pixels * 4, 0);
+  depth.assign(pixels, 1.0f);
+  if (scenes[0].size() == pixels * 8)
+  {
+    std::memcpy(color.data(), scenes[0].data(), pixels * 4);
+  }
+  for (const auto& scene : scenes)
+  {
+    if (scene.size() != pixels * 8)
+    {
+      continue;
+    }
+    for (std::size_t i = 0; i < pixels; ++i)
+    {
+      float d;
+      std::memcpy(&d, scene.data() + pixels * 4 + i * 4, sizeof(d));
+      if (d < depth[i])
+      {
+        depth[i] = d;
+        std::memcpy(color.data() + i * 4, scene.data() + i * 4, 4);
+      }
+    }
+  }
+}
+
 /// The renderer's background at viewport row `y` of `height`, as 8-bit RGBA (VTK's gradient runs
 /// from Background at the bottom to Background2 at the top).
 std::array<std::uint8_t, 4> backgroundAt(vtkRenderer* renderer, int y, int height)
@@ -159,28 +190,12 @@ bool SharedFrameTakeOver::Run(const SharedRendering& sharing, vtkRenderer* rende
   }
   received[0] = readScene(state, origin, rect);
   const std::size_t pixels = static_cast<std::size_t>(rect[2]) * static_cast<std::size_t>(rect[3]);
-  std::vector<std::uint8_t> color(pixels * 4);
-  std::vector<float> depth(pixels);
-  for (std::size_t i = 0; i < pixels; ++i)
+  std::vector<std::uint8_t> color;
+  std::vector<float> depth;
+  compositeByDepth(received, pixels, color, depth); // process 0's own sky stays: transparent
+  for (float& d : depth)
   {
-    float nearest = 1.0f;
-    const std::uint8_t* chosen = received[0].data() + i * 4; // process 0's own sky: transparent
-    for (const auto& scene : received)
-    {
-      if (scene.size() != pixels * 8)
-      {
-        continue;
-      }
-      float d;
-      std::memcpy(&d, scene.data() + pixels * 4 + i * 4, sizeof(d));
-      if (d < nearest)
-      {
-        nearest = d;
-        chosen = scene.data() + i * 4;
-      }
-    }
-    std::memcpy(color.data() + i * 4, chosen, 4);
-    depth[i] = nearest < 1.0f ? nearest : kSkyDepth;
+    d = d < 1.0f ? d : kSkyDepth;
   }
   if (!this->Color)
   {
@@ -334,30 +349,12 @@ void FluidSharedScene::Composite(const FluidFrame& frame, FluidScreenTargets& ta
   auto received = this->Processes->exchange(std::vector<std::vector<std::uint8_t>>(size));
   received[0] = readScene(frame.State, frame.Origin, rect);
   const std::size_t pixels = static_cast<std::size_t>(rect[2]) * static_cast<std::size_t>(rect[3]);
-  std::vector<std::uint8_t> color(pixels * 4);
-  std::vector<float> depth(pixels, 1.0f);
+  std::vector<std::uint8_t> color;
+  std::vector<float> depth;
+  compositeByDepth(received, pixels, color, depth);
   for (std::size_t i = 0; i < pixels; ++i)
   {
-    const std::uint8_t* nearest = nullptr;
-    for (const auto& scene : received)
-    {
-      if (scene.size() != pixels * 8)
-      {
-        continue;
-      }
-      float d;
-      std::memcpy(&d, scene.data() + pixels * 4 + i * 4, sizeof(d));
-      if (d < depth[i])
-      {
-        depth[i] = d;
-        nearest = scene.data() + i * 4;
-      }
-    }
-    if (nearest)
-    {
-      std::memcpy(color.data() + i * 4, nearest, 4);
-    }
-    else
+    if (depth[i] >= 1.0f)
     {
       const int y = rect[1] + static_cast<int>(i / static_cast<std::size_t>(rect[2]));
       const auto sky = backgroundAt(frame.Renderer, y, frame.Size[1]); // the view's, set above

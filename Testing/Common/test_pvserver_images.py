@@ -87,13 +87,7 @@ if piece == pieces - 1:
 
 def ground(view):
     plane = ProgrammableSource(OutputDataSetType="vtkPolyData", Script=GROUND)
-    stripes = Calculator(Input=plane, ResultArrayName="stripes", Function="sin(12*coordsX)*cos(12*coordsY)")
-    display = Show(stripes, view)
-    ColorBy(display, ("POINTS", "stripes"))
-    lut = GetColorTransferFunction("stripes")
-    lut.ApplyPreset("Rainbow Uniform", True)
-    lut.RescaleTransferFunction(-1.0, 1.0)
-    display.SetScalarBarVisibility(view, False)
+    pftest.show_striped(plane, view)
 
 
 def particles(representation):

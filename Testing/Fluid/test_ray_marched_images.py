@@ -37,13 +37,7 @@ def fluid(view, script, mode):
 def ground(view):
     plane = Plane(Origin=[-0.6, -0.6, 0.0], Point1=[2.0, -0.6, 0.0], Point2=[-0.6, 1.4, 0.0], XResolution=52,
                   YResolution=40)
-    stripes = Calculator(Input=plane, ResultArrayName="stripes", Function="sin(12*coordsX)*cos(12*coordsY)")
-    display = Show(stripes, view)
-    ColorBy(display, ("POINTS", "stripes"))
-    lut = GetColorTransferFunction("stripes")
-    lut.ApplyPreset("Rainbow Uniform", True)
-    lut.RescaleTransferFunction(-1.0, 1.0)
-    display.SetScalarBarVisibility(view, False)
+    pftest.show_striped(plane, view)
 
 
 def box(view):

@@ -106,6 +106,20 @@ def triangle_area(data):
     return 0.5 * np.linalg.norm(np.cross(p[tri[:, 1]] - p[tri[:, 0]], p[tri[:, 2]] - p[tri[:, 0]]), axis=1).sum()
 
 
+def show_striped(surface, view):
+    """Shows `surface` in `view` coloured by sin(12 x) cos(12 y) with the Rainbow Uniform preset over
+    -1..1 and no scalar bar: the patterned ground the fluid image tests refract."""
+    from paraview.simple import Calculator, ColorBy, GetColorTransferFunction, Show
+    stripes = Calculator(Input=surface, ResultArrayName="stripes", Function="sin(12*coordsX)*cos(12*coordsY)")
+    display = Show(stripes, view)
+    ColorBy(display, ("POINTS", "stripes"))
+    lut = GetColorTransferFunction("stripes")
+    lut.ApplyPreset("Rainbow Uniform", True)
+    lut.RescaleTransferFunction(-1.0, 1.0)
+    display.SetScalarBarVisibility(view, False)
+    return display
+
+
 def mesh_seams(data):
     """A triangle mesh's open edges (used by one triangle) and duplicated triangles (the same three
     points, welded by position to 1e-9 m): (open edges, duplicates)."""
