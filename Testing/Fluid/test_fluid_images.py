@@ -44,14 +44,8 @@ def ground(view, coloured):
     plane = Plane(Origin=[-0.6, -0.6, 0.0], Point1=[2.0, -0.6, 0.0], Point2=[-0.6, 1.4, 0.0], XResolution=52, YResolution=40)
     display = Show(plane, view)
     if coloured:
-        stripes = Calculator(Input=plane, ResultArrayName="stripes", Function="sin(12*coordsX)*cos(12*coordsY)")
         Hide(plane, view)
-        display = Show(stripes, view)
-        ColorBy(display, ("POINTS", "stripes"))
-        lut = GetColorTransferFunction("stripes")
-        lut.ApplyPreset("Rainbow Uniform", True)
-        lut.RescaleTransferFunction(-1.0, 1.0)
-        display.SetScalarBarVisibility(view, False)
+        display = pftest.show_striped(plane, view)
     else:
         display.ColorArrayName = [None, ""]
         display.DiffuseColor = [0.55, 0.55, 0.5]
